@@ -1,0 +1,256 @@
+package org.kicnp.core;
+
+import static java.util.Objects.requireNonNull;
+
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+
+/**
+ * A frame: the items of the paper's Table 1 (name, type, A-kind-of, has-part, semantic links, slots). Descendants
+ * are derived by the {@link KnowledgeBase} from the A-kind-of items, never stored twice. Immutable; an edit is a
+ * new frame that replaces the old one. Slot order is kept as written.
+ */
+public final class Frame {
+    private static final java.util.regex.Pattern NAME = java.util.regex.Pattern.compile("[\\p{L}_][\\p{L}\\p{N}_\\-]*");
+    private final String name;
+    private final FrameKind kind;
+    private final String parent;
+    private final List<String> parts;
+    private final List<SemanticLink> linksTo;
+    private final List<SemanticLink> linksFrom;
+    private final List<Slot> slots;
+    private final Provenance provenance;
+    private final int priority;
+
+    private Frame(Builder b) {
+        this.name = b.name;
+        this.kind = b.kind;
+        this.parent = b.parent;
+        this.parts = List.copyOf(b.parts);
+        this.linksTo = List.copyOf(b.linksTo);
+        this.linksFrom = List.copyOf(b.linksFrom);
+        this.slots = List.copyOf(b.slots);
+        this.provenance = b.provenance;
+        this.priority = b.priority;
+    }
+
+    /** Starts a class frame. */
+    public static Builder classFrame(String name) {
+        return new Builder(name, FrameKind.CLASS);
+    }
+
+    /** Starts an instance frame of the given class. */
+    public static Builder instance(String name, String ofClass) {
+        return new Builder(name, FrameKind.INSTANCE).parent(ofClass);
+    }
+
+    public static Builder builder(String name, FrameKind kind) {
+        return new Builder(name, kind);
+    }
+
+    public Builder toBuilder() {
+        return new Builder(this);
+    }
+
+    public String name() {
+        return name;
+    }
+
+    public FrameKind kind() {
+        return kind;
+    }
+
+    public boolean isInstance() {
+        return kind == FrameKind.INSTANCE;
+    }
+
+    public boolean isClass() {
+        return kind == FrameKind.CLASS;
+    }
+
+    /** The A-kind-of item: the parent class, or empty for a root frame. */
+    public Optional<String> parent() {
+        return Optional.ofNullable(parent);
+    }
+
+    /** The has-part item: frames this frame is made of. */
+    public List<String> parts() {
+        return parts;
+    }
+
+    /** Semantic links this frame declares to other frames. */
+    public List<SemanticLink> linksTo() {
+        return linksTo;
+    }
+
+    /** Semantic links this frame declares from other frames. */
+    public List<SemanticLink> linksFrom() {
+        return linksFrom;
+    }
+
+    /** The slots declared on this frame itself, in written order; inherited slots are the knowledge base's. */
+    public List<Slot> slots() {
+        return slots;
+    }
+
+    /** The slot declared on this frame with that name, not looking up the IS-A chain. */
+    public Optional<Slot> ownSlot(String slotName) {
+        for (Slot s : slots) {
+            if (s.name().equals(slotName)) {
+                return Optional.of(s);
+            }
+        }
+        return Optional.empty();
+    }
+
+    public Provenance provenance() {
+        return provenance;
+    }
+
+    public boolean learned() {
+        return provenance == Provenance.LEARNED;
+    }
+
+    /** Explicit priority for conflict resolution in the inference engine; higher fires first. Default 0. */
+    public int priority() {
+        return priority;
+    }
+
+    /** A copy with one slot added or replaced (by name). */
+    public Frame withSlot(Slot slot) {
+        return toBuilder().slot(slot).build();
+    }
+
+    @Override public boolean equals(Object o) {
+        return o instanceof Frame f && name.equals(f.name) && kind == f.kind && java.util.Objects.equals(parent, f.parent)
+                && parts.equals(f.parts) && linksTo.equals(f.linksTo) && linksFrom.equals(f.linksFrom)
+                && slots.equals(f.slots) && provenance == f.provenance && priority == f.priority;
+    }
+
+    @Override public int hashCode() {
+        return name.hashCode() * 31 + slots.hashCode();
+    }
+
+    @Override public String toString() {
+        return (kind == FrameKind.CLASS ? "class " : "instance ") + name + (parent != null ? " : " + parent : "");
+    }
+
+    /** Builds a {@link Frame}, checking what can be checked without the rest of the knowledge base. */
+    public static final class Builder {
+        private final String name;
+        private FrameKind kind;
+        private String parent;
+        private final List<String> parts = new ArrayList<>();
+        private final List<SemanticLink> linksTo = new ArrayList<>();
+        private final List<SemanticLink> linksFrom = new ArrayList<>();
+        private final List<Slot> slots = new ArrayList<>();
+        private Provenance provenance = Provenance.DECLARED;
+        private int priority;
+
+        private Builder(String name, FrameKind kind) {
+            this.name = requireNonNull(name, "name").strip();
+            this.kind = requireNonNull(kind, "kind");
+        }
+
+        private Builder(Frame f) {
+            this(f.name, f.kind);
+            parent = f.parent;
+            parts.addAll(f.parts);
+            linksTo.addAll(f.linksTo);
+            linksFrom.addAll(f.linksFrom);
+            slots.addAll(f.slots);
+            provenance = f.provenance;
+            priority = f.priority;
+        }
+
+        public Builder kind(FrameKind k) {
+            this.kind = requireNonNull(k, "kind");
+            return this;
+        }
+
+        public Builder parent(String p) {
+            this.parent = requireNonNull(p, "parent");
+            return this;
+        }
+
+        public Builder root() {
+            this.parent = null;
+            return this;
+        }
+
+        public Builder part(String frame) {
+            parts.add(requireNonNull(frame, "frame"));
+            return this;
+        }
+
+        public Builder linkTo(Relation relation, String frame) {
+            linksTo.add(new SemanticLink(relation, frame));
+            return this;
+        }
+
+        public Builder linkFrom(Relation relation, String frame) {
+            linksFrom.add(new SemanticLink(relation, frame));
+            return this;
+        }
+
+        /** Adds a slot, replacing a slot of the same name if there is one. */
+        public Builder slot(Slot slot) {
+            requireNonNull(slot, "slot");
+            for (int i = 0; i < slots.size(); i++) {
+                if (slots.get(i).name().equals(slot.name())) {
+                    slots.set(i, slot);
+                    return this;
+                }
+            }
+            slots.add(slot);
+            return this;
+        }
+
+        public Builder removeSlot(String slotName) {
+            slots.removeIf(s -> s.name().equals(slotName));
+            return this;
+        }
+
+        public Builder provenance(Provenance p) {
+            this.provenance = requireNonNull(p, "provenance");
+            return this;
+        }
+
+        public Builder priority(int p) {
+            this.priority = p;
+            return this;
+        }
+
+        /**
+         * Builds the frame.
+         *
+         * @throws InvalidFrameException for a blank name, an instance without a class, a frame that is its own
+         *     parent, or two slots with one name
+         */
+        public Frame build() {
+            if (name.isEmpty()) {
+                throw new InvalidFrameException("A frame needs a name.");
+            }
+            if (!NAME.matcher(name).matches()) {
+                throw new InvalidFrameException("'" + name + "' is not a valid frame name: use letters, digits, "
+                        + "'_' and '-', starting with a letter or '_'.");
+            }
+            if (kind == FrameKind.INSTANCE && parent == null) {
+                throw new InvalidFrameException("Instance frame '" + name + "' needs a class in its A-kind-of (ISA).");
+            }
+            if (name.equals(parent)) {
+                throw new InvalidFrameException("Frame '" + name + "' cannot be a kind of itself.");
+            }
+            Set<String> seen = new HashSet<>();
+            for (Slot s : slots) {
+                if (!seen.add(s.name())) {
+                    throw new InvalidFrameException("Frame '" + name + "' has two slots named '" + s.name() + "'.");
+                }
+            }
+            return new Frame(this);
+        }
+    }
+}

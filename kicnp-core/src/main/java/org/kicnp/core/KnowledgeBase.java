@@ -1,0 +1,334 @@
+package org.kicnp.core;
+
+import static java.util.Objects.requireNonNull;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.locks.ReentrantLock;
+import java.util.concurrent.locks.ReentrantReadWriteLock;
+import java.util.function.Consumer;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The knowledge base (the paper's knowledge manager): every frame, the indexes derived from them, and the one
+ * door through which they change. Thread-safe: reads share a lock, a batch of changes takes it exclusively,
+ * is validated as a whole against the state it would produce, made durable by the {@link CommitLog}, applied,
+ * and then published to listeners in commit order.
+ *
+ * <p>"Frame by name" is a hash look-up; "all instances of a class, including its descendants' instances" reads a
+ * set kept per class, so it costs O(1) per result and never scans.
+ */
+public final class KnowledgeBase {
+    private static final Logger LOG = LoggerFactory.getLogger(KnowledgeBase.class);
+
+    private final ReentrantReadWriteLock lock = new ReentrantReadWriteLock();
+    private final Map<String, Node> nodes = new LinkedHashMap<>();
+    private final CommitLog commitLog;
+    private final List<KnowledgeListener> listeners = new CopyOnWriteArrayList<>();
+    private final ConcurrentLinkedQueue<ChangeSet> undelivered = new ConcurrentLinkedQueue<>();
+    private final ReentrantLock delivery = new ReentrantLock();
+    private long version;
+
+    private KnowledgeBase(CommitLog commitLog) {
+        this.commitLog = requireNonNull(commitLog, "commitLog");
+    }
+
+    /** An empty knowledge base kept in memory only. */
+    public static KnowledgeBase create() {
+        return new KnowledgeBase(CommitLog.NONE);
+    }
+
+    /** An empty knowledge base that makes every durable change durable through {@code commitLog} first. */
+    public static KnowledgeBase create(CommitLog commitLog) {
+        return new KnowledgeBase(commitLog);
+    }
+
+    // ---- reads ----
+
+    public Optional<Frame> frame(String name) {
+        return read(() -> Optional.ofNullable(nodes.get(name)).map(n -> n.frame));
+    }
+
+    /** The frame of that name, or {@link UnknownFrameException}. */
+    public Frame require(String name) {
+        return frame(name).orElseThrow(() -> new UnknownFrameException(name));
+    }
+
+    public boolean contains(String name) {
+        return read(() -> nodes.containsKey(name));
+    }
+
+    public int size() {
+        return read(nodes::size);
+    }
+
+    /** Every frame, in the order frames were first added (a replace keeps the place). */
+    public List<Frame> frames() {
+        return read(() -> nodes.values().stream().map(n -> n.frame).toList());
+    }
+
+    /** Class frames that have no parent. */
+    public List<Frame> roots() {
+        return read(() -> nodes.values().stream().filter(n -> n.parent == null && n.frame.isClass())
+                .map(n -> n.frame).toList());
+    }
+
+    /** The descendants item of Table 1: direct sub-frames, classes and instances alike. */
+    public List<Frame> children(String name) {
+        return read(() -> {
+            Node n = node(name);
+            return n.children == null ? List.of() : n.children.stream().map(c -> c.frame).toList();
+        });
+    }
+
+    /** Every instance of the class or of any class below it, in the order they were added. */
+    public List<Frame> instancesOf(String className) {
+        return read(() -> {
+            Node n = node(className);
+            if (n.instances == null) {
+                return List.of();
+            }
+            List<Frame> out = new ArrayList<>(n.instances.size());
+            for (Node i : n.instances) {
+                out.add(i.frame);
+            }
+            return out;
+        });
+    }
+
+    /** Number of instances of the class or of any class below it. */
+    public int countInstancesOf(String className) {
+        return read(() -> {
+            Node n = node(className);
+            return n.instances == null ? 0 : n.instances.size();
+        });
+    }
+
+    /**
+     * Visits every instance of the class or of any class below it without copying, under the read lock.
+     * The visitor must not change the knowledge base.
+     */
+    public void forEachInstanceOf(String className, Consumer<Frame> visitor) {
+        read(() -> {
+            Node n = node(className);
+            if (n.instances != null) {
+                for (Node i : n.instances) {
+                    visitor.accept(i.frame);
+                }
+            }
+            return null;
+        });
+    }
+
+    /** Whether {@code frame} is {@code ancestor} or lies below it in the IS-A hierarchy. */
+    public boolean isA(String frame, String ancestor) {
+        return read(() -> {
+            for (Node n = nodes.get(frame); n != null; n = n.parent) {
+                if (n.name().equals(ancestor)) {
+                    return true;
+                }
+            }
+            return false;
+        });
+    }
+
+    /** The A-kind-of chain above the frame, nearest first. */
+    public List<String> ancestors(String name) {
+        return read(() -> {
+            List<String> out = new ArrayList<>();
+            for (Node n = node(name).parent; n != null; n = n.parent) {
+                out.add(n.name());
+            }
+            return out;
+        });
+    }
+
+    /** The slot as the frame sees it, looked up on the frame and then up the IS-A chain. */
+    public Optional<EffectiveSlot> slot(String frame, String slotName) {
+        return read(() -> Inheritance.slot(this::frameOrNull, node(frame).frame, slotName));
+    }
+
+    /** Every slot the frame has, inherited ones included, topmost declarations first. */
+    public List<EffectiveSlot> slots(String frame) {
+        return read(() -> Inheritance.slots(this::frameOrNull, node(frame).frame));
+    }
+
+    /** The slot's value after inheritance: the nearest value or default. */
+    public Optional<Value> value(String frame, String slotName) {
+        return slot(frame, slotName).flatMap(e -> e.slot().effectiveValue());
+    }
+
+    /** Semantic links into the frame: those it declares "from" and those other frames declare "to" it. */
+    public List<SemanticLink> linksInto(String name) {
+        return read(() -> {
+            Node n = node(name);
+            List<SemanticLink> out = new ArrayList<>(n.frame.linksFrom());
+            if (n.referrers != null) {
+                for (String r : n.referrers) {
+                    for (SemanticLink l : nodes.get(r).frame.linksTo()) {
+                        if (l.frame().equals(name)) {
+                            out.add(new SemanticLink(l.relation(), r));
+                        }
+                    }
+                }
+            }
+            return out;
+        });
+    }
+
+    /** Semantic links out of the frame: those it declares "to" and those other frames declare "from" it. */
+    public List<SemanticLink> linksOutOf(String name) {
+        return read(() -> {
+            Node n = node(name);
+            List<SemanticLink> out = new ArrayList<>(n.frame.linksTo());
+            if (n.referrers != null) {
+                for (String r : n.referrers) {
+                    for (SemanticLink l : nodes.get(r).frame.linksFrom()) {
+                        if (l.frame().equals(name)) {
+                            out.add(new SemanticLink(l.relation(), r));
+                        }
+                    }
+                }
+            }
+            return out;
+        });
+    }
+
+    /** The version of the knowledge base when the frame last changed: the editor's check against lost updates. */
+    public long revision(String name) {
+        return read(() -> node(name).revision);
+    }
+
+    /** The number of batches committed so far. */
+    public long version() {
+        return read(() -> version);
+    }
+
+    // ---- changes ----
+
+    public ChangeSet add(Frame frame) {
+        return apply(List.of(new Change.Add(frame)));
+    }
+
+    public ChangeSet replace(Frame frame) {
+        return apply(List.of(new Change.Replace(frame)));
+    }
+
+    public ChangeSet put(Frame frame) {
+        return apply(List.of(new Change.Put(frame)));
+    }
+
+    public ChangeSet remove(String name) {
+        return apply(List.of(new Change.Remove(name)));
+    }
+
+    /**
+     * Applies a batch: all of it, or (on any problem) none of it.
+     *
+     * @throws BatchRejectedException listing every problem, when the batch breaks a rule of the frame model
+     * @throws StaleRevisionException when a replace expected a revision the frame no longer has
+     * @throws KnowledgeException when the commit log cannot make the batch durable
+     */
+    public ChangeSet apply(List<? extends Change> changes) {
+        requireNonNull(changes, "changes");
+        ChangeSet committed;
+        lock.writeLock().lock();
+        try {
+            committed = commit(changes);
+        } finally {
+            lock.writeLock().unlock();
+        }
+        if (!committed.isEmpty()) {
+            deliver();
+        }
+        return committed;
+    }
+
+    public void addListener(KnowledgeListener listener) {
+        listeners.add(requireNonNull(listener, "listener"));
+    }
+
+    public void removeListener(KnowledgeListener listener) {
+        listeners.remove(listener);
+    }
+
+    private ChangeSet commit(List<? extends Change> changes) {
+        Batch batch = Batch.stage(changes, nodes);
+        List<Problem> problems = new Validator(batch.staged(), nodes).validate(batch.stagedChildren());
+        if (!problems.isEmpty()) {
+            throw new BatchRejectedException(problems);
+        }
+        List<FrameEvent> events = batch.events(nodes);
+        if (events.isEmpty()) {
+            return new ChangeSet(version, events);
+        }
+        List<FrameEvent> durable = events.stream().filter(KnowledgeBase::isDurable).toList();
+        if (!durable.isEmpty()) {
+            try {
+                commitLog.append(version + 1, durable);
+            } catch (RuntimeException e) {
+                throw new KnowledgeException("The change could not be made durable, so it was not applied: "
+                        + e.getMessage(), e);
+            }
+        }
+        version++;
+        Indexer.apply(nodes, events, version);
+        ChangeSet cs = new ChangeSet(version, events);
+        undelivered.add(cs);
+        return cs;
+    }
+
+    private static boolean isDurable(FrameEvent e) {
+        return e.frame().provenance().durable() || e.before().map(b -> b.provenance().durable()).orElse(false);
+    }
+
+    /** Delivers committed batches in order; a change made by a listener is delivered by the outer loop. */
+    private void deliver() {
+        if (delivery.isHeldByCurrentThread()) {
+            return;
+        }
+        delivery.lock();
+        try {
+            ChangeSet cs;
+            while ((cs = undelivered.poll()) != null) {
+                for (KnowledgeListener l : listeners) {
+                    try {
+                        l.changed(cs);
+                    } catch (RuntimeException e) {
+                        LOG.error("Knowledge listener {} failed on version {}", l, cs.version(), e);
+                    }
+                }
+            }
+        } finally {
+            delivery.unlock();
+        }
+    }
+
+    private Node node(String name) {
+        Node n = nodes.get(name);
+        if (n == null) {
+            throw new UnknownFrameException(name);
+        }
+        return n;
+    }
+
+    private Frame frameOrNull(String name) {
+        Node n = nodes.get(name);
+        return n == null ? null : n.frame;
+    }
+
+    private <T> T read(java.util.function.Supplier<T> body) {
+        lock.readLock().lock();
+        try {
+            return body.get();
+        } finally {
+            lock.readLock().unlock();
+        }
+    }
+}

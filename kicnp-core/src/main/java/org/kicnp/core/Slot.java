@@ -1,0 +1,324 @@
+package org.kicnp.core;
+
+import static java.util.Objects.requireNonNull;
+
+import java.util.List;
+import java.util.Objects;
+import java.util.Optional;
+
+/**
+ * A slot with every facet of the paper's Table 2, plus FRL-style demons ({@code onNeeded}, {@code onAdded},
+ * {@code onRemoved}) and a reactive flag. Immutable; build one with {@link #builder(String, DataType)} and change
+ * one with {@link #toBuilder()}. A slot may hold a value or a default, never both.
+ */
+public final class Slot {
+    private static final java.util.regex.Pattern NAME = java.util.regex.Pattern.compile("[\\p{L}_$][\\p{L}\\p{N}_$]*");
+    private static final int REQUIRED = 1;
+    private static final int SHARED = 2;
+    private static final int UNIQUE = 4;
+    private static final int REACTIVE = 8;
+
+    private final String name;
+    private final DataType type;
+    private final int flags;
+    private final Value value;
+    private final Value defaultValue;
+    private final Condition condition;
+    private final String argument;
+    private final String role;
+    private final String from;
+    private final String frameRelated;
+    private final List<String> frameListRelated;
+    private final Demons demons;
+
+    private Slot(Builder b) {
+        this.name = b.name;
+        this.type = b.type;
+        this.flags = b.flags;
+        this.value = b.value;
+        this.defaultValue = b.defaultValue;
+        this.condition = b.condition;
+        this.argument = b.argument;
+        this.role = b.role;
+        this.from = b.from;
+        this.frameRelated = b.frameRelated;
+        this.frameListRelated = b.frameListRelated;
+        this.demons = b.demons;
+    }
+
+    /** Starts a slot with the paper's defaults: not required, shared, not unique, reactive, condition ANY. */
+    public static Builder builder(String name, DataType type) {
+        return new Builder(name, type);
+    }
+
+    /** A slot that only carries a value, as instance frames usually hold them. */
+    public static Slot ofValue(String name, DataType type, Value value) {
+        return builder(name, type).value(value).build();
+    }
+
+    public Builder toBuilder() {
+        return new Builder(this);
+    }
+
+    public String name() {
+        return name;
+    }
+
+    public DataType type() {
+        return type;
+    }
+
+    public Optional<Value> value() {
+        return Optional.ofNullable(value);
+    }
+
+    public Optional<Value> defaultValue() {
+        return Optional.ofNullable(defaultValue);
+    }
+
+    /** The value if there is one, else the default. */
+    public Optional<Value> effectiveValue() {
+        return Optional.ofNullable(value != null ? value : defaultValue);
+    }
+
+    public Condition condition() {
+        return condition;
+    }
+
+    /** For an instance slot, the class its value must be an instance of; for a list, the item type or class. */
+    public Optional<String> argument() {
+        return Optional.ofNullable(argument);
+    }
+
+    public Optional<String> role() {
+        return Optional.ofNullable(role);
+    }
+
+    /** Table 2's "from": the source of the slot's value (a sensor, an agent, a frame). */
+    public Optional<String> from() {
+        return Optional.ofNullable(from);
+    }
+
+    public Optional<String> frameRelated() {
+        return Optional.ofNullable(frameRelated);
+    }
+
+    public List<String> frameListRelated() {
+        return frameListRelated;
+    }
+
+    public boolean required() {
+        return (flags & REQUIRED) != 0;
+    }
+
+    public boolean shared() {
+        return (flags & SHARED) != 0;
+    }
+
+    public boolean unique() {
+        return (flags & UNIQUE) != 0;
+    }
+
+    /** Whether writes to this slot re-trigger matching; demons write to non-reactive slots to avoid loops. */
+    public boolean reactive() {
+        return (flags & REACTIVE) != 0;
+    }
+
+    public Optional<String> onNeeded() {
+        return Optional.ofNullable(demons == null ? null : demons.onNeeded);
+    }
+
+    public Optional<String> onAdded() {
+        return Optional.ofNullable(demons == null ? null : demons.onAdded);
+    }
+
+    public Optional<String> onRemoved() {
+        return Optional.ofNullable(demons == null ? null : demons.onRemoved);
+    }
+
+    @Override public boolean equals(Object o) {
+        return o instanceof Slot s && flags == s.flags && name.equals(s.name) && type == s.type
+                && Objects.equals(value, s.value) && Objects.equals(defaultValue, s.defaultValue)
+                && condition.equals(s.condition) && Objects.equals(argument, s.argument)
+                && Objects.equals(role, s.role) && Objects.equals(from, s.from)
+                && Objects.equals(frameRelated, s.frameRelated) && frameListRelated.equals(s.frameListRelated)
+                && Objects.equals(demons, s.demons);
+    }
+
+    @Override public int hashCode() {
+        return Objects.hash(name, type, flags, value, defaultValue, condition, argument);
+    }
+
+    @Override public String toString() {
+        return "Slot[" + name + ": " + type.xmlName() + (value != null ? " = " + value.text() : "")
+                + (defaultValue != null ? " default " + defaultValue.text() : "") + "]";
+    }
+
+    private record Demons(String onNeeded, String onAdded, String onRemoved) {
+    }
+
+    /** Builds a {@link Slot}. Facet checks that need no other frame happen in {@link #build()}. */
+    public static final class Builder {
+        private final String name;
+        private DataType type;
+        private int flags = SHARED | REACTIVE;
+        private Value value;
+        private Value defaultValue;
+        private Condition condition = Condition.ANY;
+        private String argument;
+        private String role;
+        private String from;
+        private String frameRelated;
+        private List<String> frameListRelated = List.of();
+        private Demons demons;
+
+        private Builder(String name, DataType type) {
+            this.name = requireNonNull(name, "name");
+            this.type = requireNonNull(type, "type");
+        }
+
+        private Builder(Slot s) {
+            this(s.name, s.type);
+            flags = s.flags;
+            value = s.value;
+            defaultValue = s.defaultValue;
+            condition = s.condition;
+            argument = s.argument;
+            role = s.role;
+            from = s.from;
+            frameRelated = s.frameRelated;
+            frameListRelated = s.frameListRelated;
+            demons = s.demons;
+        }
+
+        public Builder type(DataType t) {
+            this.type = requireNonNull(t, "type");
+            return this;
+        }
+
+        public Builder value(Value v) {
+            this.value = requireNonNull(v, "value");
+            return this;
+        }
+
+        public Builder clearValue() {
+            this.value = null;
+            return this;
+        }
+
+        public Builder defaultValue(Value v) {
+            this.defaultValue = requireNonNull(v, "defaultValue");
+            return this;
+        }
+
+        public Builder clearDefault() {
+            this.defaultValue = null;
+            return this;
+        }
+
+        public Builder condition(Condition c) {
+            this.condition = requireNonNull(c, "condition");
+            return this;
+        }
+
+        public Builder argument(String a) {
+            this.argument = requireNonNull(a, "argument");
+            return this;
+        }
+
+        public Builder role(String r) {
+            this.role = requireNonNull(r, "role");
+            return this;
+        }
+
+        public Builder from(String f) {
+            this.from = requireNonNull(f, "from");
+            return this;
+        }
+
+        public Builder frameRelated(String f) {
+            this.frameRelated = requireNonNull(f, "frameRelated");
+            return this;
+        }
+
+        public Builder frameListRelated(List<String> frames) {
+            this.frameListRelated = List.copyOf(frames);
+            return this;
+        }
+
+        public Builder required(boolean on) {
+            return flag(REQUIRED, on);
+        }
+
+        public Builder shared(boolean on) {
+            return flag(SHARED, on);
+        }
+
+        public Builder unique(boolean on) {
+            return flag(UNIQUE, on);
+        }
+
+        public Builder reactive(boolean on) {
+            return flag(REACTIVE, on);
+        }
+
+        public Builder onNeeded(String script) {
+            return demons(script, demons == null ? null : demons.onAdded, demons == null ? null : demons.onRemoved);
+        }
+
+        public Builder onAdded(String script) {
+            return demons(demons == null ? null : demons.onNeeded, script, demons == null ? null : demons.onRemoved);
+        }
+
+        public Builder onRemoved(String script) {
+            return demons(demons == null ? null : demons.onNeeded, demons == null ? null : demons.onAdded, script);
+        }
+
+        private Builder demons(String needed, String added, String removed) {
+            demons = needed == null && added == null && removed == null ? null : new Demons(needed, added, removed);
+            return this;
+        }
+
+        private Builder flag(int bit, boolean on) {
+            flags = on ? flags | bit : flags & ~bit;
+            return this;
+        }
+
+        /**
+         * Builds the slot.
+         *
+         * @throws InvalidFrameException when a value and a default are both given, or a value does not fit the type
+         */
+        public Slot build() {
+            if (!NAME.matcher(name).matches()) {
+                throw new InvalidFrameException("'" + name + "' is not a valid slot name: scripts read slots as "
+                        + "s.name, so use letters, digits, '_' and '$', starting with a letter, '_' or '$'.");
+            }
+            if (value != null && defaultValue != null) {
+                throw new InvalidFrameException("Slot '" + name + "' has both a value and a default; "
+                        + "the paper allows one or the other (Table 2).");
+            }
+            checkFits(value, "value");
+            checkFits(defaultValue, "default");
+            return new Slot(this);
+        }
+
+        private void checkFits(Value v, String what) {
+            if (v == null) {
+                return;
+            }
+            boolean fits = switch (type) {
+                case INSTANCE, FRAME -> v instanceof Value.Ref;
+                case STRING -> v instanceof Value.Str;
+                case INTEGER -> v instanceof Value.Int;
+                case FLOAT -> v instanceof Value.Real || v instanceof Value.Int;
+                case BOOLEAN -> v instanceof Value.Bool;
+                case LIST -> v instanceof Value.Lst;
+            };
+            if (!fits) {
+                throw new InvalidFrameException("The " + what + " '" + v.text() + "' of slot '" + name
+                        + "' is not of its type " + type.xmlName() + ".");
+            }
+        }
+    }
+}
