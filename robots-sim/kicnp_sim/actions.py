@@ -153,7 +153,7 @@ class Motion(Action):
 
     def start(self, world: "World") -> Optional[str]:
         self.progress = Progress(self.args["stall_s"])
-        return self.robot.can_move()
+        return self.robot.begin_motion()
 
     def stop(self, world: "World") -> None:
         self.robot.cmd_v = self.robot.cmd_w = 0.0

@@ -33,7 +33,7 @@ class Aibo(Robot):
         self.posture_target: Optional[str] = None
         self.lights = ["off"] * N_LIGHTS
 
-    def can_move(self) -> Optional[str]:
+    def begin_motion(self) -> Optional[str]:
         return None if self.posture == "stand" else f"posture is {self.posture}: set_posture stand first"
 
     def extra_state(self, world: "World") -> dict[str, Any]:

@@ -90,8 +90,8 @@ class Robot:
         self.body.velocity = (0.0, 0.0)
         self.body.angular_velocity = 0.0
 
-    def can_move(self) -> Optional[str]:
-        """None when locomotion is possible, else the reason it is not."""
+    def begin_motion(self) -> Optional[str]:
+        """Called when a locomotion action starts: None when it may go, else the reason it may not."""
         return None
 
     def running(self) -> list[Action]:

@@ -1,7 +1,8 @@
 """PINO: a small biped humanoid; slow stable walking, arm motion, hand shaking.
 
-Walking is speed-limited (0.25 m/s). Any collision while walking makes PINO stumble: the walk
-fails with reason "stumbled" and PINO is down (``fallen``) until a stand_up action.
+Walking is speed-limited (0.25 m/s). A collision while walking makes PINO stumble: the walk
+fails with reason "stumbled" and PINO is down (``fallen``) until a stand_up action. Things
+PINO already touched when the walk started do not count, so it can walk away from them.
 """
 
 from __future__ import annotations
@@ -34,14 +35,18 @@ class Pino(Robot):
         super().__init__(*a, **kw)
         self.arms = {"left": "down", "right": "down"}
         self.fallen = False
+        self.touching: set[str] = set()
 
-    def can_move(self) -> Optional[str]:
-        return "fallen: stand_up first" if self.fallen else None
+    def begin_motion(self) -> Optional[str]:
+        if self.fallen:
+            return "fallen: stand_up first"
+        self.touching = {label for label, _ in self.contacts()}  # walking away from these is fine
+        return None
 
     def sense(self, world: "World") -> None:
         if not self.walking():
             return
-        hit = self.contacts()
+        hit = [c for c in self.contacts() if c[0] not in self.touching]
         if hit:
             self.halt()
             self.fallen = True
