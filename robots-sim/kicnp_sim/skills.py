@@ -1,14 +1,13 @@
 """Timed skills: actions that take a known time once their preconditions hold.
 
-Speaking, arm and head motion, shaking hands, picking up and handing over a cup, AIBO's
-postures and lights, Scout's raw wheel drive and PINO standing up. Each one checks its
+This module has the Timed base and the humanoid skills: speaking, arm and head motion, shaking
+hands, PINO standing up (Scout's are in skills_scout.py, AIBO's in skills_aibo.py). Each one checks its
 preconditions against the world when it starts (failing with a reason when they do not hold),
 may fail while running (the user walked away), and applies its effect when its time is up.
 """
 
 from __future__ import annotations
 
-import re
 from typing import TYPE_CHECKING, Any, Optional
 
 from .actions import Action, Arg, Outcome
@@ -22,15 +21,6 @@ CUP_REACH_M = 0.4  # gap between the robot's body and a cup on the counter
 SAY_S_PER_CHAR = 0.06
 SAY_MIN_S = 0.5
 ARM_POSES = ("down", "up", "wave", "shake")
-POSTURES = ("stand", "sit", "lie_down")
-POSTURE_S = {
-    frozenset(("stand", "sit")): 1.0,
-    frozenset(("sit", "lie_down")): 1.2,
-    frozenset(("stand", "lie_down")): 1.5,
-}
-COLOURS = ("off", "red", "green", "blue", "white", "yellow", "orange", "pink", "purple")
-HEX = re.compile(r"^#[0-9a-fA-F]{6}$")
-N_LIGHTS = 19
 
 
 def user_gap(world: "World", robot: Any, name: str) -> Optional[float]:
@@ -180,177 +170,6 @@ class ShakeHands(Timed):
 
     def finish(self, world: "World") -> dict[str, Any]:
         return {"user": self.args["user"]}
-
-
-class PickUp(Timed):
-    """Pick up a cup ('tea', 'coffee' or a cup id) from the counter; needs to be near it; 1.5 s."""
-
-    ARGS = (Arg("cup", "string", doc="'tea', 'coffee' or a cup id"),)
-
-    def begin(self, world: "World") -> Optional[str]:
-        if self.robot.carrying:
-            return f"already carrying {self.robot.carrying}"
-        want = self.args["cup"]
-        free = [c for c in world.cups.values() if c.holder is None and want in (c.kind, c.id)]
-        if not free:
-            return f"no {want} cup on the counter"
-        cup = min(free, key=lambda c: dist(self.robot.pos, (c.x, c.y)))
-        gap = dist(self.robot.pos, (cup.x, cup.y)) - self.robot.radius
-        if gap > CUP_REACH_M:
-            return f"not near the counter: cup {cup.id} is {gap:.2f} m away (needs <= {CUP_REACH_M} m)"
-        self.cup = cup
-        return None
-
-    def duration(self, world: "World") -> float:
-        return 1.5
-
-    def during(self, world: "World") -> Optional[str]:
-        return None if self.cup.holder is None else f"cup {self.cup.id} was taken"
-
-    def finish(self, world: "World") -> dict[str, Any]:
-        self.cup.holder = f"robot:{self.robot.name}"
-        self.robot.carrying = self.cup.id
-        return {"cup": self.cup.id, "kind": self.cup.kind}
-
-
-class HandOver(Timed):
-    """Hand the carried cup to a user within 0.6 m (body gap); 1.5 s."""
-
-    ARGS = (Arg("user", "string"),)
-
-    def begin(self, world: "World") -> Optional[str]:
-        if not self.robot.carrying:
-            return "not carrying a cup"
-        gap = user_gap(world, self.robot, self.args["user"])
-        if gap is None:
-            return f"no user named {self.args['user']!r}"
-        if gap > HAND_REACH_M:
-            return f"user {self.args['user']!r} is {gap:.2f} m away (needs <= {HAND_REACH_M} m)"
-        return None
-
-    def duration(self, world: "World") -> float:
-        return 1.5
-
-    def during(self, world: "World") -> Optional[str]:
-        gap = user_gap(world, self.robot, self.args["user"])
-        if gap is None or gap > HAND_REACH_M + 0.2:
-            return f"user {self.args['user']!r} walked away"
-        return None
-
-    def finish(self, world: "World") -> dict[str, Any]:
-        cup = world.cups[self.robot.carrying]
-        cup.holder = f"user:{self.args['user']}"
-        world.users[self.args["user"]].holding.append(cup.id)
-        self.robot.carrying = None
-        return {"cup": cup.id, "kind": cup.kind, "user": self.args["user"]}
-
-
-class SetPosture(Timed):
-    """AIBO posture change: stand <-> sit 1.0 s, sit <-> lie_down 1.2 s, stand <-> lie_down 1.5 s."""
-
-    ARGS = (Arg("posture", "string", choices=POSTURES),)
-
-    def target(self) -> str:
-        return self.args["posture"]
-
-    def begin(self, world: "World") -> Optional[str]:
-        self.robot.posture_target = self.target()
-        return None
-
-    def duration(self, world: "World") -> float:
-        return POSTURE_S.get(frozenset((self.robot.posture, self.target())), 0.0)
-
-    def stop(self, world: "World") -> None:
-        self.robot.posture_target = None
-
-    def finish(self, world: "World") -> dict[str, Any]:
-        self.robot.posture = self.target()
-        return {"posture": self.robot.posture}
-
-
-class LieDown(SetPosture):
-    """AIBO lies down (same as set_posture lie_down)."""
-
-    ARGS = ()
-
-    def target(self) -> str:
-        return "lie_down"
-
-
-class SetLights(Timed):
-    """Set AIBO's 19 lights: 'all' to one colour, and/or 'lights' as a list of 19 or {index: colour}."""
-
-    ARGS = (
-        Arg("all", "string", False, doc="one colour for every light"),
-        Arg("lights", "any", False, doc="list of 19 colours, or object {index: colour}"),
-    )
-
-    @classmethod
-    def validate(cls, args: dict[str, Any]) -> Optional[tuple[str, str]]:
-        def bad(c: Any) -> bool:
-            return not isinstance(c, str) or not (c in COLOURS or HEX.match(c))
-
-        if args.get("all") is None and args.get("lights") is None:
-            return ("args.all", "is required (or args.lights)")
-        if args.get("all") is not None and bad(args["all"]):
-            return ("args.all", f"must be one of {', '.join(COLOURS)} or #rrggbb")
-        lights = args.get("lights")
-        if lights is None:
-            return None
-        if isinstance(lights, list):
-            if len(lights) != N_LIGHTS:
-                return ("args.lights", f"must have {N_LIGHTS} entries, got {len(lights)}")
-            items = list(enumerate(lights))
-        elif isinstance(lights, dict):
-            items = []
-            for k, v in lights.items():
-                if not (k.isdigit() and 0 <= int(k) < N_LIGHTS):
-                    return (f"args.lights.{k}", f"must be a light index 0..{N_LIGHTS - 1}")
-                items.append((int(k), v))
-        else:
-            return ("args.lights", "must be a list or an object")
-        for i, c in items:
-            if bad(c):
-                return (f"args.lights.{i}", f"must be one of {', '.join(COLOURS)} or #rrggbb")
-        return None
-
-    def duration(self, world: "World") -> float:
-        return 0.0
-
-    def finish(self, world: "World") -> dict[str, Any]:
-        lights = self.robot.lights
-        if self.args.get("all") is not None:
-            lights[:] = [self.args["all"]] * N_LIGHTS
-        new = self.args.get("lights")
-        if isinstance(new, list):
-            lights[:] = list(new)
-        elif isinstance(new, dict):
-            for k, v in new.items():
-                lights[int(k)] = v
-        return {"lights": list(lights)}
-
-
-class Drive(Timed):
-    """Scout: run the wheels at left/right speeds (m/s) for duration_s; a bumper hit stops it."""
-
-    ARGS = (
-        Arg("left_mps", "number", lo=-0.6, hi=0.6),
-        Arg("right_mps", "number", lo=-0.6, hi=0.6),
-        Arg("duration_s", "number", lo=0.0, hi=600.0),
-    )
-
-    def duration(self, world: "World") -> float:
-        return float(self.args["duration_s"])
-
-    def control(self, world: "World", dt: float) -> None:
-        self.robot.wheel_cmd = (float(self.args["left_mps"]), float(self.args["right_mps"]))
-
-    def stop(self, world: "World") -> None:
-        self.robot.wheel_cmd = None
-
-    def finish(self, world: "World") -> dict[str, Any]:
-        x, y = self.robot.pos
-        return {"x": r(x, 3), "y": r(y, 3)}
 
 
 class StandUp(Timed):

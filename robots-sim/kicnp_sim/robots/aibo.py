@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any, Optional
 
-from ..skills import N_LIGHTS, LieDown, SetLights, SetPosture
+from ..skills_aibo import N_LIGHTS, LieDown, SetLights, SetPosture
 from .base import MOTION_SPECS, Robot, spec
 
 if TYPE_CHECKING:

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any, Optional
 
 from .. import sensors
 from ..geometry import r
-from ..skills import Drive, HandOver, PickUp
+from ..skills_scout import Drive, HandOver, PickUp
 from .base import MOTION_SPECS, Robot, spec
 
 if TYPE_CHECKING:
