@@ -28,6 +28,7 @@ ARRIVAL_TOLERANCE_M = 0.1
 HEADING_TOLERANCE = math.radians(2.0)
 STALL_S = 3.0
 STALL_EPS = 0.01
+ARRIVE_FRACTION = 0.5
 
 
 @dataclass(frozen=True)
@@ -158,6 +159,19 @@ class Motion(Action):
     def stop(self, world: "World") -> None:
         self.robot.cmd_v = self.robot.cmd_w = 0.0
 
+    def at_goal(self, world: "World", d: float, metric: float) -> Optional[bool]:
+        """True when arrived, None while under way, False when blocked.
+
+        The robot aims for half the tolerance (so it arrives well inside it), but a robot that
+        stalls within the tolerance (say, near a wall) has arrived all the same.
+        """
+        tol = self.args["tolerance_m"]
+        if d <= tol * ARRIVE_FRACTION:
+            return True
+        if self.progress.stalled(world.t, metric):
+            return d <= tol
+        return None
+
     def blocked(self, world: "World", metric: float) -> Optional[Outcome]:
         if self.progress.stalled(world.t, metric):
             return ("failed", f"blocked: no progress for {self.args['stall_s']:g} s")
@@ -171,10 +185,10 @@ class Motion(Action):
 class GoTo(Motion):
     """Go to (x, y), optionally turning to heading_deg on arrival."""
 
+    ARGS = (Arg("x", "number"), Arg("y", "number"), Arg("heading_deg", "number", False)) + MOTION_ARGS
+
     def progress_info(self, world: "World") -> dict[str, Any]:
         return {**self.pose_result(), "remaining_m": r(dist(self.robot.pos, self.goal), 3)}
-
-    ARGS = (Arg("x", "number"), Arg("y", "number"), Arg("heading_deg", "number", False)) + MOTION_ARGS
 
     def start(self, world: "World") -> Optional[str]:
         self.goal = (float(self.args["x"]), float(self.args["y"]))
@@ -191,15 +205,17 @@ class GoTo(Motion):
     def check(self, world: "World") -> Optional[Outcome]:
         d = dist(self.robot.pos, self.goal)
         if not self.turning:
-            if d <= self.args["tolerance_m"]:
-                world.sensor(self.robot.name, "arrival", {"x": r(self.goal[0], 3), "y": r(self.goal[1], 3)})
+            err = wrap(math.atan2(self.goal[1] - self.robot.pos[1], self.goal[0] - self.robot.pos[0]) - self.robot.heading)
+            there = self.at_goal(world, d, d + 0.2 * abs(err))
+            if there is False:
+                return ("failed", f"blocked: no progress for {self.args['stall_s']:g} s")
+            if there:
+                world.sensor(self.robot.name, "arrival", {**self.pose_result(), "goal": {"x": r(self.goal[0], 3), "y": r(self.goal[1], 3)}})
                 if self.args.get("heading_deg") is None:
                     return ("ended", {**self.pose_result(), "distance_error_m": r(d, 3)})
                 self.turning = True
                 self.progress = Progress(self.args["stall_s"])
-                return None
-            err = wrap(math.atan2(self.goal[1] - self.robot.pos[1], self.goal[0] - self.robot.pos[0]) - self.robot.heading)
-            return self.blocked(world, d + 0.2 * abs(err))
+            return None
         err = wrap(from_deg(self.args["heading_deg"]) - self.robot.heading)
         if abs(err) <= HEADING_TOLERANCE:
             return ("ended", {**self.pose_result(), "distance_error_m": r(d, 3)})
@@ -273,13 +289,15 @@ class ApproachUser(Motion):
         if self.facing and gap > self.args["distance_m"] + self.args["tolerance_m"] + 0.3:
             self.facing = False  # the user walked away: follow
         if not self.facing:
-            if d <= self.args["tolerance_m"]:
+            there = self.at_goal(world, d, d + 0.2 * abs(self._face_err(world)))
+            if there is False:
+                return ("failed", f"blocked: no progress for {self.args['stall_s']:g} s")
+            if there:
                 self.facing = True
                 self.progress = Progress(self.args["stall_s"])
-                return None
-            return self.blocked(world, d + 0.2 * abs(self._face_err(world)))
+            return None
         err = self._face_err(world)
         if abs(err) <= math.radians(3.0):
-            world.sensor(self.robot.name, "arrival", {"user": name, "gap_m": r(gap, 3)})
+            world.sensor(self.robot.name, "arrival", {**self.pose_result(), "user": name, "gap_m": r(gap, 3)})
             return ("ended", {**self.pose_result(), "user": name, "gap_m": r(gap, 3)})
         return self.blocked(world, abs(err))
