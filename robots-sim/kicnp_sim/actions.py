@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Callable, Optional
 
 from .geometry import clamp, dist, from_deg, r, to_deg, wrap
+from .room import ROOM_H, ROOM_W
 
 if TYPE_CHECKING:
     from .robots.base import Robot
@@ -185,7 +186,11 @@ class Motion(Action):
 class GoTo(Motion):
     """Go to (x, y), optionally turning to heading_deg on arrival."""
 
-    ARGS = (Arg("x", "number"), Arg("y", "number"), Arg("heading_deg", "number", False)) + MOTION_ARGS
+    ARGS = (
+        Arg("x", "number", lo=0.0, hi=ROOM_W),
+        Arg("y", "number", lo=0.0, hi=ROOM_H),
+        Arg("heading_deg", "number", False, lo=-360.0, hi=360.0),
+    ) + MOTION_ARGS
 
     def progress_info(self, world: "World") -> dict[str, Any]:
         return {**self.pose_result(), "remaining_m": r(dist(self.robot.pos, self.goal), 3)}
@@ -225,7 +230,7 @@ class GoTo(Motion):
 class TurnTo(Motion):
     """Turn in place to heading_deg."""
 
-    ARGS = (Arg("heading_deg", "number"),) + MOTION_ARGS[1:]
+    ARGS = (Arg("heading_deg", "number", lo=-360.0, hi=360.0),) + MOTION_ARGS[1:]
 
     def control(self, world: "World", dt: float) -> None:
         err = wrap(from_deg(self.args["heading_deg"]) - self.robot.heading)
