@@ -36,6 +36,8 @@ def parse_args(argv: Optional[list[str]]) -> argparse.Namespace:
 
 def main(argv: Optional[list[str]] = None) -> int:
     a = parse_args(argv)
+    sys.stdin.reconfigure(encoding="utf-8", errors="replace")  # bad bytes become a JSON error, not a crash
+    sys.stdout.reconfigure(encoding="utf-8")
     logging.basicConfig(stream=sys.stderr, level=a.log_level.upper(), format="%(levelname)s %(name)s: %(message)s")
     speaker = Speaker(a.audio_dir) if a.audio_dir else None
     world = World(seed=a.seed, dt=1.0 / a.hz, audio=speaker)

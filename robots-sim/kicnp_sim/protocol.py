@@ -8,15 +8,17 @@ See PROTOCOL.md for every message type.
 from __future__ import annotations
 
 import json
+import logging
 import math
 from typing import Any, Callable, Optional
 
 from . import PROTOCOL_VERSION, __version__, room
 from .actions import DEFAULT_TIMEOUT_S, Arg
 from .geometry import from_deg
-from .users import FACE_DIM
+from .users import FACE_DIM, USER_RADIUS
 from .world import BusyError, World
 
+log = logging.getLogger("kicnp_sim.protocol")
 MAX_STEP_S = 3600.0
 SELF_ACK = ("command", "query", "step")  # handlers that send their own ack at the right moment
 MARGIN = 0.1  # positions must be at least this far inside the walls
@@ -155,6 +157,9 @@ class Dispatcher:
                 self.ack(req_id, result)
         except ProtocolError as exc:
             self.world.emit("error", id=exc.req_id, field=exc.field, message=str(exc))
+        except Exception as exc:  # a bug: report it, log it, keep serving
+            log.exception("internal error handling %r", line[:200])
+            self.world.emit("error", id=req_id, field=None, message=f"request {req_id!r}: internal error: {exc!r}")
 
     def ack(self, req_id: Any, result: Optional[dict[str, Any]] = None) -> None:
         if result is None:
@@ -197,6 +202,12 @@ class Dispatcher:
         self.ack(req_id)
         self.world.start(robot, action)
 
+    def _clear(self, req_id: Any, x: float, y: float, radius: float) -> None:
+        """Refuse a position where a body of this radius would overlap a wall, the counter or an obstacle."""
+        hit = self.world.static_overlap(x, y, radius)
+        if hit:
+            raise ProtocolError(req_id, "x", f"({x:g}, {y:g}) overlaps {hit}")
+
     def _spawn_user(self, req_id: Any, f: dict[str, Any]) -> dict[str, Any]:
         if f["name"] in self.world.users:
             raise ProtocolError(req_id, "name", f"is already taken by a user in the room: {f['name']!r}")
@@ -209,6 +220,7 @@ class Dispatcher:
             if not any(face):
                 raise ProtocolError(req_id, "face", "must not be all zeros")
         x, y = (f["x"], f["y"]) if f["x"] is not None else room.DOOR_ENTRY
+        self._clear(req_id, x, y, USER_RADIUS)
         heading = from_deg(90.0 if f["heading_deg"] is None else f["heading_deg"])
         user = self.world.spawn_user(f["name"], x, y, heading, face)
         return {"name": user.name, **user.state(), "face": [round(v, 6) for v in user.face]}
@@ -217,6 +229,7 @@ class Dispatcher:
         user = self._user(req_id, f["name"])
         if f["heading_deg"] is not None:
             user.body.angle = from_deg(f["heading_deg"])
+        self._clear(req_id, f["x"], f["y"], USER_RADIUS)
         if f["speed"] is None:
             user.target = None
             user.body.position = (f["x"], f["y"])
@@ -232,6 +245,7 @@ class Dispatcher:
         robot = self._robot(req_id, f["robot"])
         if "base" in robot.actions:
             raise ProtocolError(req_id, "robot", f"{robot.name} is moving ({robot.actions['base'].id!r}); cancel it first")
+        self._clear(req_id, f["x"], f["y"], robot.radius)
         heading = robot.heading if f["heading_deg"] is None else from_deg(f["heading_deg"])
         self.world.place_robot(robot, f["x"], f["y"], heading)
 

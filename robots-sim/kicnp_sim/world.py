@@ -16,7 +16,7 @@ import pymunk
 from .actions import Action, Outcome
 from .geometry import r
 from .robots import ROBOT_CLASSES, Robot
-from .room import Cup, add_obstacle, build_room
+from .room import CAT_STATIC, Cup, add_obstacle, build_room
 from .users import User, face_from_seed, normalise
 
 DEFAULT_DT = 1.0 / 60.0
@@ -170,6 +170,13 @@ class World:
         robot.body.angle = heading
         robot.body.velocity = (0.0, 0.0)
         self.space.reindex_shapes_for_body(robot.body)
+
+    def static_overlap(self, x: float, y: float, radius: float) -> Optional[str]:
+        """The label of a wall, the counter or an obstacle that a circle here would overlap."""
+        for info in self.space.point_query((x, y), radius, pymunk.ShapeFilter(mask=CAT_STATIC)):
+            if info.distance < radius - 1e-9:
+                return getattr(info.shape, "label", "something")
+        return None
 
     def add_obstacle(self, name: str, x: float, y: float, w: float, h: float) -> None:
         add_obstacle(self.space, name, x, y, w, h)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import math
 
 from conftest import Sim, only
@@ -9,8 +10,6 @@ from conftest import Sim, only
 
 def test_hello_lists_robots_and_capabilities() -> None:
     sim = Sim(seed=5)
-    import json
-
     hello = json.loads(sim.lines[0])
     assert hello["type"] == "hello" and hello["seed"] == 5 and hello["t"] == 0.0
     assert set(hello["robots"]) == {"robovie", "pino", "scout", "aibo"}
@@ -103,3 +102,14 @@ def test_users_come_in_at_the_door_and_walk(sim: Sim) -> None:
     assert sim.state()["users"]["alice"]["y"] == 1.6
     sim.request("remove_user", name="alice")
     assert sim.state()["users"] == {}
+
+
+def test_positions_inside_walls_or_counter_are_refused(sim: Sim) -> None:
+    evs = sim.request("spawn_user", id="u", name="ghost", x=7.5, y=4.0)
+    assert evs[0]["type"] == "error" and evs[0]["field"] == "x" and "counter" in evs[0]["message"]
+    evs = sim.request("place_robot", id="p", robot="robovie", x=0.2, y=3.0)
+    assert evs[0]["type"] == "error" and "west wall" in evs[0]["message"]
+    sim.request("add_obstacle", name="crate", x=2.0, y=5.0, w=0.5, h=0.5)
+    evs = sim.request("spawn_user", id="v", name="ghost", x=2.0, y=5.0)
+    assert evs[0]["type"] == "error" and "crate" in evs[0]["message"]
+    assert sim.request("spawn_user", id="w", name="ghost", x=2.0, y=4.3)[0]["type"] == "ack"

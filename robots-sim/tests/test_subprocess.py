@@ -76,6 +76,11 @@ def test_manual_mode_over_pipes(procs: Any) -> None:
     err = pr.next()
     assert err["type"] == "error" and err["id"] is None and "malformed JSON" in err["message"]
     assert pr.p.poll() is None  # still alive
+    assert pr.p.stdin is not None
+    pr.p.stdin.buffer.write(b"\xff\xfe{not utf-8}\n")
+    pr.p.stdin.flush()
+    assert pr.next()["type"] == "error"
+    assert pr.p.poll() is None
     pr.send({"id": "q1", "type": "query"})
     assert pr.next()["type"] == "ack"
     st = pr.next()
