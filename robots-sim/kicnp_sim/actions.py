@@ -6,18 +6,18 @@ it may command the robot (``control``, before the step) and is checked (``check`
 step). ``check`` returns an outcome: ("ended", result) or ("failed", reason), or None while it
 is still running. The world also fails an action that runs past its timeout.
 
-This module holds the argument specs and the motion actions shared by all robots (go_to,
+This module holds the Action base and the motion actions shared by all robots (go_to,
 turn_to, approach_user); timed skills live in skills.py.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Callable, Optional
+from typing import TYPE_CHECKING, Any, Optional
 
 from .geometry import clamp, dist, from_deg, r, to_deg, wrap
 from .room import ROOM_H, ROOM_W
+from .specs import Arg
 
 if TYPE_CHECKING:
     from .robots.base import Robot
@@ -30,48 +30,6 @@ HEADING_TOLERANCE = math.radians(2.0)
 STALL_S = 3.0
 STALL_EPS = 0.01
 ARRIVE_FRACTION = 0.5
-
-
-@dataclass(frozen=True)
-class Arg:
-    """One argument of an action: its JSON kind, whether it is required, its limits."""
-
-    name: str
-    kind: str  # "number" | "string" | "bool" | "object" | "array" | "any"
-    required: bool = True
-    default: Any = None
-    choices: tuple[str, ...] | None = None
-    lo: float | None = None
-    hi: float | None = None
-    doc: str = ""
-
-    def describe(self) -> dict[str, Any]:
-        d: dict[str, Any] = {"type": self.kind, "required": self.required}
-        if self.default is not None:
-            d["default"] = self.default
-        if self.choices:
-            d["choices"] = list(self.choices)
-        if self.lo is not None:
-            d["min"] = self.lo
-        if self.hi is not None:
-            d["max"] = self.hi
-        if self.doc:
-            d["doc"] = self.doc
-        return d
-
-
-@dataclass(frozen=True)
-class ActionSpec:
-    """What a robot can be commanded: name, parts it claims, args, and the class to build."""
-
-    name: str
-    parts: tuple[str, ...]
-    factory: Callable[..., "Action"]
-    args: tuple[Arg, ...] = field(default_factory=tuple)
-    doc: str = ""
-
-    def describe(self) -> dict[str, Any]:
-        return {"parts": list(self.parts), "args": {a.name: a.describe() for a in self.args}, "doc": self.doc}
 
 
 class Action:

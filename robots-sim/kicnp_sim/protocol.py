@@ -13,7 +13,8 @@ import math
 from typing import Any, Callable, Optional
 
 from . import PROTOCOL_VERSION, __version__, room
-from .actions import DEFAULT_TIMEOUT_S, Arg
+from .actions import DEFAULT_TIMEOUT_S
+from .specs import Arg
 from .geometry import from_deg
 from .users import FACE_DIM, USER_RADIUS
 from .world import BusyError, World

@@ -10,7 +10,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any, Optional
 
-from .actions import Action, Arg, Outcome
+from .actions import Action, Outcome
+from .specs import Arg
 from .geometry import dist, r
 
 if TYPE_CHECKING:

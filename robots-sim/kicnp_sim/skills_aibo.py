@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 from typing import TYPE_CHECKING, Any, Optional
 
-from .actions import Arg
+from .specs import Arg
 from .skills import Timed
 
 if TYPE_CHECKING:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any, Optional
 
-from .actions import Arg
+from .specs import Arg
 from .geometry import dist, r
 from .skills import CUP_REACH_M, HAND_REACH_M, Timed, user_gap
 

@@ -13,7 +13,8 @@ from typing import TYPE_CHECKING, Any, Optional
 
 import pymunk
 
-from ..actions import ActionSpec, Action, ApproachUser, GoTo, Motion, TurnTo
+from ..actions import Action, ApproachUser, GoTo, Motion, TurnTo
+from ..specs import ActionSpec
 from ..geometry import clamp, r, to_deg
 from ..room import CAT_ROBOT
 
