@@ -75,3 +75,24 @@ def test_robovie_shakes_both_hands_with_near_user(sim: Sim) -> None:
     end, _ = sim.run("k1")
     assert end["type"] == "action_ended" and end["result"]["duration_s"] == 2.0
     assert sim.state()["robots"]["robovie"]["arms"] == {"left": "down", "right": "down"}
+
+
+def test_audio_dir_is_optional(tmp_path) -> None:
+    """With --audio-dir, say writes a WAV where espeak-ng exists and is skipped cleanly where not."""
+    import shutil
+
+    from kicnp_sim.audio import Speaker
+    from kicnp_sim.protocol import Dispatcher
+
+    sim = Sim()
+    speaker = Speaker(str(tmp_path))
+    sim.world.audio = speaker
+    sim.disp = Dispatcher(sim.world, manual=True, time_scale=1.0)
+    utt = only(sim.command("robovie", "say", "s1", text="Welcome to my room."), "utterance")[0]
+    assert sim.run("s1")[0]["type"] == "action_ended"
+    speaker.close()
+    if shutil.which("espeak-ng") is None:
+        assert "audio_file" not in utt
+    else:
+        assert utt["audio_file"].endswith("robovie-s1.wav")
+        assert (tmp_path / "robovie-s1.wav").stat().st_size > 44
