@@ -42,6 +42,19 @@ def test_scout_stops_on_bumper_hit_and_fails(sim: Sim) -> None:
     assert sim.state()["robots"]["scout"]["y"] == s["y"]  # and stays put
 
 
+def test_scout_stops_in_the_step_of_the_hit(sim: Sim) -> None:
+    sim.request("add_obstacle", name="box", x=6.2, y=3.0, w=1.0, h=0.2)
+    sim.request("stream", enabled=True, period_ms=1000 / 60)  # a state every step
+    sim.command("scout", "go_to", "g3", x=6.2, y=4.0)
+    end, seen = sim.run("g3", max_s=20)
+    states = {e["t"]: e["robots"]["scout"] for e in only(seen, "state")}
+    times = sorted(states)
+    i = times.index(end["t"])
+    before, at, after = states[times[i - 1]], states[times[i]], states[times[i + 1]]
+    assert before["v"] == 0.5 and at["v"] == 0.0  # full speed, then stopped in the hit's step
+    assert (after["x"], after["y"]) == (at["x"], at["y"])
+
+
 def test_scout_rear_bumper_when_reversing(sim: Sim) -> None:
     sim.request("place_robot", robot="scout", x=6.2, y=0.6, heading_deg=90)
     sim.command("scout", "drive", "d1", left_mps=-0.3, right_mps=-0.3, duration_s=5)

@@ -102,7 +102,7 @@ def test_realtime_mode_runs_faster_than_real_time_and_shuts_down(procs: Any) -> 
     evs = pr.until(lambda e: e.get("id") == "g" and e["type"] in ("action_ended", "action_failed"), timeout=15)
     wall = time.monotonic() - t0
     assert evs[-1]["type"] == "action_ended" and evs[-1]["t"] >= 3.5  # ~1.9 m at 0.5 m/s of sim time...
-    assert wall < evs[-1]["t"] / 3  # ...in much less wall time
+    assert wall < evs[-1]["t"] / 2  # ...in much less wall time (20x nominal; slack for a loaded machine)
     pr.send({"id": "x", "type": "step", "seconds": 1})
     assert pr.next()["field"] == "type"  # step needs --manual
     pr.send({"id": "bye", "type": "shutdown"})

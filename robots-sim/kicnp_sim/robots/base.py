@@ -87,7 +87,7 @@ class Robot:
 
     def halt(self) -> None:
         """Stop at once (e.g. on a bumper hit): zero speeds now, not at the next step."""
-        self.cmd_v = self.cmd_w = 0.0
+        self.cmd_v = self.cmd_w = self.v = self.w = 0.0
         self.body.velocity = (0.0, 0.0)
         self.body.angular_velocity = 0.0
 
