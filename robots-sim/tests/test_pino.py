@@ -15,7 +15,7 @@ def test_pino_walks_to_user_and_shakes_hands(sim: Sim) -> None:
     assert end["type"] == "action_ended", end
     assert end["t"] >= (1.27 - 0.1) / 0.25  # walked ~1.27 m (less the tolerance) at no more than 0.25 m/s
     speeds = [e for e in seen if e["type"] == "state"]
-    assert not speeds or max(s["robots"]["pino"]["v"] for s in speeds) <= 0.25
+    assert not speeds or max(s["robots"]["pino"]["v_mps"] for s in speeds) <= 0.25
     sim.command("pino", "shake_hands", "k1", user="alice")
     end, _ = sim.run("k1")
     assert end["type"] == "action_ended" and end["result"]["user"] == "alice" and end["result"]["duration_s"] == 2.0
@@ -27,7 +27,7 @@ def test_pino_speed_is_limited(sim: Sim) -> None:
     sim.command("pino", "go_to", "g1", x=1.5, y=1.0)
     end, seen = sim.run("g1", max_s=40)
     assert end["type"] == "action_ended"
-    vs = [s["robots"]["pino"]["v"] for s in only(seen, "state")]
+    vs = [s["robots"]["pino"]["v_mps"] for s in only(seen, "state")]
     assert max(vs) == 0.25
 
 

@@ -36,7 +36,7 @@ def test_scout_stops_on_bumper_hit_and_fails(sim: Sim) -> None:
     assert hits and hits[0]["bumper"] == 0 and hits[0]["contact"] == "box"
     assert hits[0]["t"] == end["t"]  # stopped in the same step as the hit
     s = sim.state()["robots"]["scout"]
-    assert s["v"] == 0.0 and s["bumpers"][0] is True
+    assert s["v_mps"] == 0.0 and s["bumpers"][0] is True
     assert 2.6 <= s["y"] <= 2.72  # against the box's south face (y = 2.9) with its 0.2 m radius
     sim.step(1.0)
     assert sim.state()["robots"]["scout"]["y"] == s["y"]  # and stays put
@@ -51,7 +51,7 @@ def test_scout_stops_in_the_step_of_the_hit(sim: Sim) -> None:
     times = sorted(states)
     i = times.index(end["t"])
     before, at, after = states[times[i - 1]], states[times[i]], states[times[i + 1]]
-    assert before["v"] == 0.5 and at["v"] == 0.0  # full speed, then stopped in the hit's step
+    assert before["v_mps"] == 0.5 and at["v_mps"] == 0.0  # full speed, then stopped in the hit's step
     assert (after["x"], after["y"]) == (at["x"], at["y"])
 
 

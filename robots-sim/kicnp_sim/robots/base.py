@@ -133,8 +133,8 @@ class Robot:
             "x": r(x, 3),
             "y": r(y, 3),
             "heading_deg": to_deg(self.heading),
-            "v": r(self.v, 3),
-            "w": r(self.w, 3),
+            "v_mps": r(self.v, 3),
+            "w_dps": r(math.degrees(self.w), 2),
             "actions": {part: {"id": a.id, "action": a.name} for part, a in self.actions.items()},
             **self.extra_state(world),
         }
