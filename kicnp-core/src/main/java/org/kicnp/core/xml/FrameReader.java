@@ -213,9 +213,14 @@ final class FrameReader {
             switch (event) {
                 case XMLStreamConstants.CHARACTERS, XMLStreamConstants.CDATA, XMLStreamConstants.SPACE -> {
                     if (textLine < 0) {
-                        Location l = r.getLocation();
-                        textLine = l.getLineNumber();
-                        textColumn = l.getColumnNumber();
+                        // Only a condition's errors point inside its text; other elements skip the location.
+                        if (tag.equals("CONDITION")) {
+                            Location l = r.getLocation();
+                            textLine = l.getLineNumber();
+                            textColumn = l.getColumnNumber();
+                        } else {
+                            textLine = 0;
+                        }
                         text = r.getText();
                     } else {
                         if (more == null) {
@@ -245,7 +250,7 @@ final class FrameReader {
                                 + " elements; give one or the other.");
                     }
                     return new Located(text, items, start.getLineNumber(), start.getColumnNumber(),
-                            textLine < 0 ? start.getLineNumber() : textLine, textLine < 0 ? 0 : textColumn);
+                            textLine <= 0 ? start.getLineNumber() : textLine, textLine <= 0 ? 0 : textColumn);
                 }
                 default -> { }
             }
