@@ -15,8 +15,6 @@ import javax.xml.stream.XMLStreamReader;
  * text, attributes) are collected with their location and reading goes on; malformed XML ends the document.
  */
 final class FrameReader {
-    private static final String XSI = "http://www.w3.org/2001/XMLSchema-instance";
-
     private final XMLStreamReader r;
     private final String source;
     private final List<LoadError> errors;
@@ -313,9 +311,10 @@ final class FrameReader {
 
     private void checkRootAttributes() {
         for (int i = 0; i < r.getAttributeCount(); i++) {
-            if (!XSI.equals(r.getAttributeNamespace(i))) {
-                error(r.getLocation(), "Element " + r.getLocalName() + " has attribute '" + r.getAttributeLocalName(i)
-                        + "'; only xsi: schema attributes are allowed on the root.");
+            String name = r.getAttributeLocalName(i);
+            if (!name.startsWith("xmlns") && !name.startsWith("xsi:")) {
+                error(r.getLocation(), "Element " + r.getLocalName() + " has attribute '" + name
+                        + "'; only xmlns and xsi: schema attributes are allowed on the root.");
             }
         }
     }

@@ -17,6 +17,8 @@ import org.kicnp.core.Value;
  * Run with {@code java -cp ... org.kicnp.core.xml.XmlBenchMain [frames] [rounds]}.
  */
 public final class XmlBenchMain {
+    private static final java.lang.management.ThreadMXBean CPU = java.lang.management.ManagementFactory.getThreadMXBean();
+
     private XmlBenchMain() {
     }
 
@@ -66,14 +68,19 @@ public final class XmlBenchMain {
             KnowledgeBase.create().apply(frames.stream().map(Change.Add::new).toList());
             for (int r = 0; r < rounds; r++) {
                 long t0 = System.nanoTime();
+                long c0 = CPU.getCurrentThreadCpuTime();
                 KnowledgeXmlWriter.write(frames, file);
                 long t1 = System.nanoTime();
+                long c1 = CPU.getCurrentThreadCpuTime();
                 List<SourcedFrame> parsed = KnowledgeLoader.parse(List.of(file), KnowledgeBase.create());
                 long t2 = System.nanoTime();
+                long c2 = CPU.getCurrentThreadCpuTime();
                 KnowledgeBase.create().apply(parsed.stream().map(s -> new Change.Add(s.frame())).toList());
                 long t3 = System.nanoTime();
-                System.out.printf("round %d: %,d frames, file %,d bytes; save %d ms; parse %d ms + apply %d ms%n", r, n,
-                        Files.size(file), ms(t0, t1), ms(t1, t2), ms(t2, t3));
+                long c3 = CPU.getCurrentThreadCpuTime();
+                System.out.printf("round %d: %,d frames, file %,d bytes; save %d ms (cpu %d); parse %d ms (cpu %d) "
+                        + "+ apply %d ms (cpu %d)%n", r, n, Files.size(file), ms(t0, t1), ms(c0, c1), ms(t1, t2),
+                        ms(c1, c2), ms(t2, t3), ms(c2, c3));
             }
             frames = null;
             long base = heapAfterGc();
