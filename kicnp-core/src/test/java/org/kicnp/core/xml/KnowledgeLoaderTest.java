@@ -138,4 +138,25 @@ class KnowledgeLoaderTest {
         assertThat(move.priority()).isEqualTo(3);
         assertThat(kb.linksInto("Arm")).hasSize(1);
     }
+
+    @Test
+    void parseText_largeInput_isMappedWhileReadingWithTheSameResultAndErrorOrder() {
+        List<Frame> frames = XmlBenchMain.generate(3600);
+        java.io.StringWriter out = new java.io.StringWriter();
+        KnowledgeXmlWriter.write(frames, out);
+        String xml = out.toString();
+        assertThat((long) xml.length()).isGreaterThan(KnowledgeLoader.PIPELINE_CHARS);
+
+        List<SourcedFrame> back = KnowledgeLoader.parseText(xml, "big", KnowledgeBase.create());
+        assertThat(back).extracting(SourcedFrame::frame).isEqualTo(frames);
+
+        String broken = xml.replace("<NAME>C10</NAME>", "<NAME>C10</NAME><COLOUR>red</COLOUR>")
+                .replaceFirst("<VALUE>10</VALUE>", "<VALUE>ten</VALUE>");
+        KnowledgeXmlException e = org.assertj.core.api.Assertions.catchThrowableOfType(KnowledgeXmlException.class,
+                () -> KnowledgeLoader.parseText(broken, "big", KnowledgeBase.create()));
+        assertThat(e.errors()).extracting(LoadError::message).satisfiesExactly(
+                m -> assertThat(m).startsWith("Unknown element 'COLOUR' in FRAME"),
+                m -> assertThat(m).isEqualTo("Slot 'count' of frame 'C10' has a VALUE that does not fit its type "
+                        + "TYPE_INT: 'ten' is not an integer."));
+    }
 }
