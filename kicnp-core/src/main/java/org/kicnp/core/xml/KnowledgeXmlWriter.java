@@ -103,7 +103,7 @@ public final class KnowledgeXmlWriter {
         open("FRAME", d);
         element("NAME", f.name(), d + 1);
         if (f.parent().isPresent()) {
-            element("ISA", f.parent().get(), d + 1);
+            text("ISA", f.parent().get(), d + 1, "frame '" + f.name() + "'");
         }
         element("ISINSTANCE", f.isInstance() ? "TRUE" : "FALSE", d + 1);
         if (f.learned()) {
@@ -115,12 +115,12 @@ public final class KnowledgeXmlWriter {
         if (!f.parts().isEmpty()) {
             open("HASPART", d + 1);
             for (String p : f.parts()) {
-                element("PART", p, d + 2);
+                text("PART", p, d + 2, "frame '" + f.name() + "'");
             }
             close("HASPART", d + 1);
         }
-        links("SEMANTICLINKTO", f.linksTo(), d + 1);
-        links("SEMANTICLINKFROM", f.linksFrom(), d + 1);
+        links("SEMANTICLINKTO", f, f.linksTo(), d + 1);
+        links("SEMANTICLINKFROM", f, f.linksFrom(), d + 1);
         if (!f.slots().isEmpty()) {
             open("SLOTLIST", d + 1);
             for (Slot s : f.slots()) {
@@ -131,15 +131,15 @@ public final class KnowledgeXmlWriter {
         close("FRAME", d);
     }
 
-    private void links(String tag, List<SemanticLink> links, int d) throws IOException {
+    private void links(String tag, Frame f, List<SemanticLink> links, int d) throws IOException {
         if (links.isEmpty()) {
             return;
         }
         open(tag, d);
         for (SemanticLink l : links) {
             open("LINK", d + 1);
-            element("RELATION", l.relation().name(), d + 2);
-            element("TARGET", l.frame(), d + 2);
+            text("RELATION", l.relation().name(), d + 2, "frame '" + f.name() + "'");
+            text("TARGET", l.frame(), d + 2, "frame '" + f.name() + "'");
             close("LINK", d + 1);
         }
         close(tag, d);

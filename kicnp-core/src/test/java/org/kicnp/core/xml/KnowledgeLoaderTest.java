@@ -159,4 +159,35 @@ class KnowledgeLoaderTest {
                 m -> assertThat(m).isEqualTo("Slot 'count' of frame 'C10' has a VALUE that does not fit its type "
                         + "TYPE_INT: 'ten' is not an integer."));
     }
+
+    @Test
+    void load_schemaAttributesOnTheRoot_areAllowedButOtherAttributesAreErrors() throws IOException {
+        Path ok = file("ok.xml", "<KNOWLEDGEBASE xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" "
+                + "xsi:noNamespaceSchemaLocation=\"kicnp-kb.xsd\"><FRAME><NAME>A</NAME></FRAME></KNOWLEDGEBASE>");
+        Path bad = file("bad.xml", "<KNOWLEDGEBASE>\n  <FRAME id=\"1\"><NAME>B</NAME></FRAME>\n</KNOWLEDGEBASE>");
+
+        assertThat(KnowledgeLoader.parse(List.of(ok), KnowledgeBase.create())).hasSize(1);
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> KnowledgeLoader.parse(List.of(bad),
+                        KnowledgeBase.create()))
+                .isInstanceOf(KnowledgeXmlException.class)
+                .hasMessage(bad + ":2:3: Element FRAME has attribute 'id'; the format uses elements only.");
+    }
+
+    @Test
+    void load_conditionsInCdataOrEscaped_areParsed() throws IOException {
+        Path a = file("a.xml", """
+                <FRAME>
+                  <NAME>X</NAME>
+                  <SLOTLIST>
+                    <SLOT><NAME>a</NAME><TYPE>TYPE_INT</TYPE><CONDITION>&lt;= 5</CONDITION></SLOT>
+                    <SLOT><NAME>b</NAME><TYPE>TYPE_INT</TYPE><CONDITION><![CDATA[js: s.a < 3 && s.b]]></CONDITION></SLOT>
+                  </SLOTLIST>
+                </FRAME>
+                """);
+
+        Frame x = KnowledgeLoader.parse(List.of(a), KnowledgeBase.create()).getFirst().frame();
+
+        assertThat(x.ownSlot("a").orElseThrow().condition().text()).isEqualTo("<= 5");
+        assertThat(x.ownSlot("b").orElseThrow().condition().text()).isEqualTo("js: s.a < 3 && s.b");
+    }
 }
