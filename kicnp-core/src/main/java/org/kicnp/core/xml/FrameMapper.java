@@ -15,6 +15,7 @@ import org.kicnp.core.FrameKind;
 import org.kicnp.core.InvalidFrameException;
 import org.kicnp.core.Provenance;
 import org.kicnp.core.Relation;
+import org.kicnp.core.SemanticLink;
 import org.kicnp.core.Slot;
 import org.kicnp.core.Value;
 
@@ -97,7 +98,7 @@ final class FrameMapper {
         }
     }
 
-    private Optional<org.kicnp.core.SemanticLink> link(String frame, LinkElement l, String list) {
+    private Optional<SemanticLink> link(String frame, LinkElement l, String list) {
         SourceLocation at = new SourceLocation(source, l.line(), l.column());
         if (l.target().isEmpty() || l.target().get().absent()) {
             error(at, "A LINK in " + list + " of frame '" + frame + "' needs a TARGET.");
@@ -109,7 +110,7 @@ final class FrameMapper {
             return Optional.empty();
         }
         Relation r = Relation.parse(l.relation().get().stripped());
-        return Optional.of(new org.kicnp.core.SemanticLink(r, interner.intern(l.target().get().stripped())));
+        return Optional.of(new SemanticLink(r, interner.intern(l.target().get().stripped())));
     }
 
     private Optional<Slot> slot(String frame, FrameElement fe, SlotElement s) {
