@@ -28,7 +28,8 @@ final class Journal implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(Journal.class);
     static final int MAGIC = 0x4B4A524E; // "KJRN"
     static final int HEADER = 12;
-    static final int MAX_PAYLOAD = 64 << 20;
+    /** Largest payload: bounds what a damaged length field can make recovery allocate. */
+    static final int MAX_PAYLOAD = 256 << 20;
     private static final Pattern SEGMENT = Pattern.compile("journal-(\\d{20})");
 
     /** A payload read back at open, with a place to name it by in messages. */
@@ -85,17 +86,15 @@ final class Journal implements AutoCloseable {
             long pos = 0;
             String problem = null;
             while (pos < size) {
-                problem = damage(ch, pos, size);
+                Read r = readEntry(ch, pos, size);
+                problem = r.problem();
                 if (problem != null) {
                     break;
                 }
-                int length = readHeader(ch, pos).getInt(4);
-                ByteBuffer payload = ByteBuffer.allocate(length);
-                readFully(ch, payload, pos + HEADER);
-                entries.add(new Entry(payload.array(), segment.getFileName() + " at byte " + pos));
+                entries.add(new Entry(r.payload(), segment.getFileName() + " at byte " + pos));
                 pendingRecords++;
-                pendingBytes += HEADER + length;
-                pos += HEADER + length;
+                pendingBytes += HEADER + r.payload().length;
+                pos += HEADER + r.payload().length;
             }
             if (problem == null) {
                 return;
@@ -112,29 +111,35 @@ final class Journal implements AutoCloseable {
         }
     }
 
-    /** Why the entry at {@code pos} is not intact, or null when it is. */
-    private static String damage(FileChannel ch, long pos, long size) throws IOException {
+    /** An entry read back: its payload, or why it is not intact. */
+    private record Read(byte[] payload, String problem) {
+        static Read damaged(String problem) {
+            return new Read(null, problem);
+        }
+    }
+
+    private static Read readEntry(FileChannel ch, long pos, long size) throws IOException {
         if (size - pos < HEADER) {
-            return "only " + (size - pos) + " bytes of a " + HEADER + "-byte header";
+            return Read.damaged("only " + (size - pos) + " bytes of a " + HEADER + "-byte header");
         }
         ByteBuffer h = readHeader(ch, pos);
         int magic = h.getInt(0);
         int length = h.getInt(4);
         if (magic != MAGIC) {
-            return String.format("bad magic 0x%08X", magic);
+            return Read.damaged(String.format("bad magic 0x%08X", magic));
         }
         if (length < 0 || length > MAX_PAYLOAD) {
-            return "bad length " + length;
+            return Read.damaged("bad length " + length);
         }
         if (size - pos - HEADER < length) {
-            return "payload of " + length + " bytes cut at " + (size - pos - HEADER);
+            return Read.damaged("payload of " + length + " bytes cut at " + (size - pos - HEADER));
         }
         ByteBuffer payload = ByteBuffer.allocate(length);
         readFully(ch, payload, pos + HEADER);
         if ((int) crc(length, payload.array()) != h.getInt(8)) {
-            return "checksum mismatch";
+            return Read.damaged("checksum mismatch");
         }
-        return null;
+        return new Read(payload.array(), null);
     }
 
     private static ByteBuffer readHeader(FileChannel ch, long pos) throws IOException {
@@ -166,6 +171,10 @@ final class Journal implements AutoCloseable {
         if (broken) {
             throw new StoreException("The journal in '" + dir + "' is in an unknown state after a failed write; "
                     + "reopen the store to recover it.");
+        }
+        if (payload.length > MAX_PAYLOAD) {
+            throw new StoreException("A batch of " + payload.length + " bytes is more than the journal takes in one "
+                    + "record (" + MAX_PAYLOAD + " bytes); split it into smaller batches.");
         }
         ByteBuffer buf = ByteBuffer.allocate(HEADER + payload.length);
         buf.putInt(MAGIC).putInt(payload.length).putInt((int) crc(payload.length, payload)).put(payload).flip();

@@ -92,6 +92,10 @@ public final class KnowledgeStore implements AutoCloseable {
             new Recovery(store.dir, store.metaDir, store.disk, store.layout).run(store::createKnowledgeBase,
                     j -> store.journal = j);
             store.recovering = false;
+            if (store.journal.pendingRecords() >= options.compactAfterRecords()
+                    || store.journal.pendingBytes() >= options.compactAfterBytes()) {
+                store.scheduleCompaction();
+            }
             return store;
         } catch (IOException e) {
             store.abandon();
