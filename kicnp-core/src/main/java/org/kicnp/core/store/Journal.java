@@ -183,7 +183,7 @@ final class Journal implements AutoCloseable {
             while (buf.hasRemaining()) {
                 active.write(buf, start + buf.position());
             }
-            disk.force(active);
+            disk.forceData(active);
         } catch (IOException e) {
             try {
                 active.truncate(start);

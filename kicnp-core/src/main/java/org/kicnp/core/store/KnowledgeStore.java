@@ -3,12 +3,7 @@ package org.kicnp.core.store;
 import static java.util.Objects.requireNonNull;
 
 import java.io.IOException;
-import java.nio.channels.FileChannel;
-import java.nio.channels.FileLock;
-import java.nio.channels.OverlappingFileLockException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -55,11 +50,11 @@ public final class KnowledgeStore implements AutoCloseable {
     private boolean closed;
     private boolean lastCompactionFailed;
 
-    private KnowledgeStore(Path dir, StoreOptions options, DirectoryLock dirLock) {
+    private KnowledgeStore(Path dir, StoreOptions options, Disk disk, DirectoryLock dirLock) {
         this.dir = dir;
         this.metaDir = dir.resolve(META_DIR);
         this.options = options;
-        this.disk = new Disk(options.fsync());
+        this.disk = disk;
         this.dirLock = dirLock;
         this.compactor = options.compactInBackground() ? Executors.newSingleThreadExecutor(r -> {
             Thread t = new Thread(r, "kicnp-store-compactor");
@@ -75,8 +70,8 @@ public final class KnowledgeStore implements AutoCloseable {
 
     /**
      * Opens (creating if needed) the knowledge directory: finishes an interrupted compaction, loads every
-     * {@code *.xml} file below {@code dir} (skipping hidden files and directories, such as {@code .kicnp}), replays the journal
-     * and returns the store, whose {@link #kb()} then holds every acknowledged durable change.
+     * {@code *.xml} file below {@code dir} (skipping hidden files and directories, such as {@code .kicnp}), replays
+     * the journal and returns the store, whose {@link #kb()} then holds every acknowledged durable change.
      *
      * @throws StoreException when the directory cannot be read or is damaged beyond what a crash explains, or is
      *     open in another store
@@ -86,8 +81,9 @@ public final class KnowledgeStore implements AutoCloseable {
         requireNonNull(dir, "dir");
         requireNonNull(options, "options");
         Path absolute = dir.toAbsolutePath().normalize();
-        DirectoryLock dirLock = DirectoryLock.acquire(absolute.resolve(META_DIR));
-        KnowledgeStore store = new KnowledgeStore(absolute, options, dirLock);
+        Disk disk = new Disk(options.fsync());
+        DirectoryLock dirLock = DirectoryLock.acquire(absolute.resolve(META_DIR), disk);
+        KnowledgeStore store = new KnowledgeStore(absolute, options, disk, dirLock);
         try {
             new Recovery(store.dir, store.metaDir, store.disk, store.layout).run(store::createKnowledgeBase,
                     j -> store.journal = j);
@@ -208,8 +204,8 @@ public final class KnowledgeStore implements AutoCloseable {
                 if (journal.pendingRecords() == 0 && !layout.hasDirtyFiles() && !lastCompactionFailed) {
                     return;
                 }
-                contents = layout.takeDirty();
                 folded = journal.roll();
+                contents = layout.takeDirty();
             } catch (IOException e) {
                 throw new StoreException("Could not start a new journal segment in '" + metaDir + "': "
                         + e.getMessage(), e);
@@ -307,39 +303,5 @@ public final class KnowledgeStore implements AutoCloseable {
             LOG.debug("Closing the journal of an abandoned open failed", e);
         }
         dirLock.release();
-    }
-
-    /** An exclusive lock on {@code .kicnp/lock}, so that two stores never write one directory. */
-    private record DirectoryLock(FileChannel channel, FileLock lock) {
-        static DirectoryLock acquire(Path metaDir) {
-            try {
-                Files.createDirectories(metaDir);
-                FileChannel ch = FileChannel.open(metaDir.resolve("lock"), StandardOpenOption.CREATE,
-                        StandardOpenOption.WRITE);
-                FileLock l;
-                try {
-                    l = ch.tryLock();
-                } catch (OverlappingFileLockException e) {
-                    l = null;
-                }
-                if (l == null) {
-                    ch.close();
-                    throw new StoreException("The knowledge store in '" + metaDir.getParent()
-                            + "' is already open, in this process or another one.");
-                }
-                return new DirectoryLock(ch, l);
-            } catch (IOException e) {
-                throw new StoreException("Could not lock the knowledge store in '" + metaDir.getParent() + "': "
-                        + e.getMessage(), e);
-            }
-        }
-
-        void release() {
-            try {
-                channel.close(); // releases the lock too
-            } catch (IOException e) {
-                LOG.debug("Releasing the store lock failed", e);
-            }
-        }
     }
 }

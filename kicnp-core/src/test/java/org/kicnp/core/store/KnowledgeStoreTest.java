@@ -200,4 +200,51 @@ class KnowledgeStoreTest {
             assertThat(store.kb().contains("Thing")).isTrue();
         }
     }
+
+    @Test
+    void compact_ofAFrameLoadedFromASubdirectory_rewritesThatFile() throws Exception {
+        Path dir = baseDir(tmp);
+        Files.createDirectories(dir.resolve("robots"));
+        org.kicnp.core.xml.KnowledgeXmlWriter.write(List.of(robot("robot2", 1), robot("robot3", 1)),
+                dir.resolve("robots/more.xml"));
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET)) {
+            store.kb().replace(robot("robot2", 8));
+            assertThat(store.homeOf("robot2")).contains(dir.resolve("robots/more.xml"));
+            store.compact();
+        }
+        assertThat(namesIn(dir.resolve("robots/more.xml"))).containsExactly("robot2", "robot3");
+        assertThat(xmlOnly(dir).get("robot2")).isEqualTo(robot("robot2", 8));
+    }
+
+    @Test
+    void concurrentChanges_withBackgroundCompaction_allSurviveReopen() throws Exception {
+        Path dir = baseDir(tmp);
+        Map<String, Frame> expected;
+        StoreOptions options = QUIET.withCompactInBackground(true).withCompactAfterRecords(10);
+        try (KnowledgeStore store = KnowledgeStore.open(dir, options)) {
+            List<Thread> writers = new java.util.ArrayList<>();
+            for (int t = 0; t < 4; t++) {
+                int id = t;
+                writers.add(Thread.ofPlatform().start(() -> {
+                    for (int i = 0; i < 150; i++) {
+                        store.kb().add(learnedUser("t" + id + "_" + i, i));
+                        if (i % 3 == 0) {
+                            store.kb().replace(learnedUser("t" + id + "_" + i, -i));
+                        }
+                        if (i % 5 == 0) {
+                            store.kb().remove("t" + id + "_" + i);
+                        }
+                    }
+                }));
+            }
+            for (Thread w : writers) {
+                w.join();
+            }
+            expected = byName(store.kb());
+        }
+        assertThat(expected).hasSize(3 + 4 * 120);
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET)) {
+            assertThat(byName(store.kb())).isEqualTo(expected);
+        }
+    }
 }
