@@ -85,8 +85,8 @@ public final class KnowledgeStore implements AutoCloseable {
         DirectoryLock dirLock = DirectoryLock.acquire(absolute.resolve(META_DIR), disk);
         KnowledgeStore store = new KnowledgeStore(absolute, options, disk, dirLock);
         try {
-            new Recovery(store.dir, store.metaDir, store.disk, store.layout).run(store::createKnowledgeBase,
-                    j -> store.journal = j);
+            store.kb = KnowledgeBase.create(store::append);
+            store.journal = new Recovery(store.dir, store.metaDir, store.disk, store.layout).run(store.kb);
             store.recovering = false;
             if (store.journal.pendingRecords() >= options.compactAfterRecords()
                     || store.journal.pendingBytes() >= options.compactAfterBytes()) {
@@ -100,11 +100,6 @@ public final class KnowledgeStore implements AutoCloseable {
             store.abandon();
             throw e;
         }
-    }
-
-    private KnowledgeBase createKnowledgeBase() {
-        kb = KnowledgeBase.create(this::append);
-        return kb;
     }
 
     /** The knowledge base this store keeps durable. */

@@ -7,8 +7,6 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import java.util.function.Consumer;
-import java.util.function.Supplier;
 import org.kicnp.core.BatchRejectedException;
 import org.kicnp.core.Change;
 import org.kicnp.core.Frame;
@@ -40,23 +38,28 @@ final class Recovery {
     }
 
     /**
-     * Recovers; {@code newKnowledgeBase} makes the (empty) knowledge base to load into, and {@code opened} receives
-     * the journal, ready for appends.
+     * Recovers into {@code kb}, an empty knowledge base whose commit log ignores what recovery applies (it is on
+     * disk already), and returns the journal, ready for appends.
      */
-    void run(Supplier<KnowledgeBase> newKnowledgeBase, Consumer<Journal> opened) throws IOException {
+    Journal run(KnowledgeBase kb) throws IOException {
         finishInterruptedCompaction(dir, metaDir, disk);
         List<Path> files = xmlFiles();
-        KnowledgeBase kb = newKnowledgeBase.get();
         load(kb, files);
         List<Journal.Entry> entries = new ArrayList<>();
         Journal journal = Journal.open(metaDir, disk, entries);
-        opened.accept(journal);
-        for (Journal.Entry e : entries) {
-            layout.apply(JournalCodec.decode(e.payload(), e.where(), kb));
+        int changed;
+        try {
+            for (Journal.Entry e : entries) {
+                layout.apply(JournalCodec.decode(e.payload(), e.where(), kb));
+            }
+            changed = reconcile(kb);
+        } catch (RuntimeException e) {
+            journal.close();
+            throw e;
         }
-        int changed = reconcile(kb);
         LOG.info("Opened knowledge store '{}': {} frames from {} XML file(s), {} journal record(s) replayed ({} frame(s) "
                 + "changed by them)", dir, kb.size(), files.size(), entries.size(), changed);
+        return journal;
     }
 
     /** Completes the moves of a compaction whose manifest survived, and removes what an unfinished one left. */
