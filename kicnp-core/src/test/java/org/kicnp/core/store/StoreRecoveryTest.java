@@ -169,4 +169,27 @@ class StoreRecoveryTest {
             assertThat(store.kb().size()).isEqualTo(4);
         }
     }
+
+    @Test
+    void compact_whenAFileCannotBeWritten_failsKeepsEveryChangeAndSucceedsLater() throws Exception {
+        Path dir = baseDir(tmp);
+        // A directory where the temporary file of learned.xml must go: that write fails.
+        Path blocker = Files.createDirectories(dir.resolve("learned.xml" + Compaction.TEMP_SUFFIX).resolve("x"));
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET)) {
+            store.kb().add(learnedUser("ann", 1));
+            store.kb().replace(robot("robot1", 4));
+
+            assertThatThrownBy(store::compact).isInstanceOf(StoreException.class)
+                    .hasMessageContaining("the journal still holds every change");
+            store.kb().add(learnedUser("bob", 1));
+            assertThat(dir.resolve("learned.xml")).doesNotExist();
+
+            Files.delete(blocker);
+            Files.delete(blocker.getParent());
+            store.compact();
+            assertThat(StoreFixtures.namesIn(dir.resolve("learned.xml"))).containsExactly("ann", "bob");
+            assertThat(StoreFixtures.xmlOnly(dir).get("robot1")).isEqualTo(robot("robot1", 4));
+            assertThat(journalSegments(dir)).hasSize(1);
+        }
+    }
 }
