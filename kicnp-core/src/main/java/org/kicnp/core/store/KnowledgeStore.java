@@ -248,6 +248,14 @@ public final class KnowledgeStore implements AutoCloseable {
      */
     @Override
     public void close() {
+        lock.lock();
+        try {
+            if (closed) {
+                return;
+            }
+        } finally {
+            lock.unlock();
+        }
         if (compactor != null) {
             compactor.shutdown();
             try {

@@ -171,6 +171,7 @@ class KnowledgeStoreTest {
         Path dir = baseDir(tmp);
         KnowledgeStore store = KnowledgeStore.open(dir, QUIET);
         store.close();
+        store.close(); // harmless
         assertThatThrownBy(() -> store.kb().add(learnedUser("ann", 1))).isInstanceOf(KnowledgeException.class)
                 .hasMessageContaining("not applied").hasMessageContaining("is closed");
         assertThat(store.kb().contains("ann")).isFalse();
