@@ -2,7 +2,7 @@ package org.kicnp.core.xml;
 
 import static java.util.Objects.requireNonNull;
 
-import java.io.BufferedWriter;
+import java.io.OutputStreamWriter;
 import java.io.IOException;
 import java.io.StringWriter;
 import java.io.UncheckedIOException;
@@ -34,9 +34,9 @@ public final class KnowledgeXmlWriter {
         }
     }
 
-    private final Writer out;
+    private final CharSink out;
 
-    private KnowledgeXmlWriter(Writer out) {
+    private KnowledgeXmlWriter(CharSink out) {
         this.out = out;
     }
 
@@ -45,15 +45,15 @@ public final class KnowledgeXmlWriter {
         requireNonNull(frames, "frames");
         requireNonNull(out, "out");
         try {
-            Writer w = out instanceof BufferedWriter || out instanceof StringWriter ? out : new BufferedWriter(out, 1 << 16);
-            KnowledgeXmlWriter x = new KnowledgeXmlWriter(w);
-            w.write(HEADER);
-            w.write("<KNOWLEDGEBASE>\n");
+            CharSink sink = new CharSink(out);
+            KnowledgeXmlWriter x = new KnowledgeXmlWriter(sink);
+            sink.write(HEADER);
+            sink.write("<KNOWLEDGEBASE>\n");
             for (Frame f : frames) {
                 x.frame(f, 1);
             }
-            w.write("</KNOWLEDGEBASE>\n");
-            w.flush();
+            sink.write("</KNOWLEDGEBASE>\n");
+            sink.flush();
         } catch (IOException e) {
             throw new UncheckedIOException("Writing frames as XML failed: " + e.getMessage(), e);
         }
@@ -65,7 +65,7 @@ public final class KnowledgeXmlWriter {
         Path abs = file.toAbsolutePath();
         Path tmp = abs.resolveSibling("." + abs.getFileName() + ".tmp");
         try {
-            try (BufferedWriter w = Files.newBufferedWriter(tmp, StandardCharsets.UTF_8)) {
+            try (Writer w = new OutputStreamWriter(Files.newOutputStream(tmp), StandardCharsets.UTF_8)) {
                 write(frames, w);
             }
             try {
@@ -89,8 +89,10 @@ public final class KnowledgeXmlWriter {
         requireNonNull(frame, "frame");
         StringWriter sw = new StringWriter(1024);
         try {
-            sw.write(HEADER);
-            new KnowledgeXmlWriter(sw).frame(frame, 0);
+            CharSink sink = new CharSink(sw);
+            sink.write(HEADER);
+            new KnowledgeXmlWriter(sink).frame(frame, 0);
+            sink.flush();
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }

@@ -38,7 +38,7 @@ final class LoadSession {
     private final List<Integer> pendingSlots = new ArrayList<>();
     private final Map<String, Frame> byName = new HashMap<>();
     private final Map<String, FrameElement> unmapped = new HashMap<>();
-    private final Map<String, SourceLocation> seen = new HashMap<>();
+    private final Map<String, SourceLocation> seen = new HashMap<>(1 << 12);
     private final Map<String, Located> descendants = new HashMap<>();
 
     LoadSession(KnowledgeBase context) {
@@ -103,12 +103,18 @@ final class LoadSession {
     }
 
     private void add(Frame f, FrameElement e) {
-        byName.put(f.name(), f);
         parsed.add(located(f, e));
     }
 
     /** Maps the frames that waited for their slot types, checks DESCENDANTS, and answers every frame in file order. */
     List<ParsedFrame> finish() {
+        if (!pending.isEmpty()) {
+            for (ParsedFrame p : parsed) {
+                if (p != null) {
+                    byName.put(p.sourced().frame().name(), p.sourced().frame());
+                }
+            }
+        }
         for (int i = 0; i < pending.size(); i++) {
             FrameElement e = pending.get(i);
             int index = pendingSlots.get(i);
@@ -126,9 +132,10 @@ final class LoadSession {
 
     private static ParsedFrame located(Frame f, FrameElement e) {
         SourceLocation at = e.location();
-        List<SourceLocation> slots = new ArrayList<>(e.slots().size());
-        for (SlotElement s : e.slots()) {
-            slots.add(new SourceLocation(at.source(), s.line(), s.column()));
+        long[] slots = new long[e.slots().size()];
+        for (int i = 0; i < slots.length; i++) {
+            SlotElement s = e.slots().get(i);
+            slots[i] = (long) s.line() << 32 | s.column();
         }
         Optional<SourceLocation> isa = e.present(FrameTag.ISA).map(l -> l.at(at.source()));
         return new ParsedFrame(new SourcedFrame(f, at), isa, slots);

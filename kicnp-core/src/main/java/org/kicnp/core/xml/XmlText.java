@@ -1,7 +1,6 @@
 package org.kicnp.core.xml;
 
 import java.io.IOException;
-import java.io.Writer;
 
 /**
  * Writes free text as XML element content. Text with {@code <}, {@code &} or a line break goes in CDATA, so scripts
@@ -12,7 +11,7 @@ final class XmlText {
     private XmlText() {
     }
 
-    static void write(Writer out, String text, String where) throws IOException {
+    static void write(CharSink out, String text, String where) throws IOException {
         boolean markup = false;
         boolean cr = false;
         for (int i = 0; i < text.length(); i++) {
