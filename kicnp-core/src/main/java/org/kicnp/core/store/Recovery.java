@@ -97,7 +97,9 @@ final class Recovery {
                 throw new StoreException("The XML loader named the source of frame '" + sf.frame().name() + "' as '"
                         + sf.location().source() + "', which is none of the files of '" + dir + "'.");
             }
-            layout.loaded(home, sf.frame());
+            if (sf.frame().provenance().durable()) {
+                layout.loaded(home, sf.frame()); // a RUNTIME fixture is loaded each time but never written
+            }
         }
     }
 
@@ -106,7 +108,7 @@ final class Recovery {
         Map<String, Frame> target = layout.frames();
         List<Change> changes = new ArrayList<>();
         for (Frame f : kb.frames()) {
-            if (!target.containsKey(f.name())) {
+            if (f.provenance().durable() && !target.containsKey(f.name())) {
                 changes.add(new Change.Remove(f.name()));
             }
         }

@@ -248,4 +248,28 @@ class KnowledgeStoreTest {
             assertThat(byName(store.kb())).isEqualTo(expected);
         }
     }
+
+    @Test
+    void runtimeFixtureInAFileOfItsOwn_isLoadedEveryTimeAndNeverRewritten() throws Exception {
+        Path dir = baseDir(tmp);
+        String fixture = """
+                <?xml version="1.0" encoding="UTF-8"?>
+                <KNOWLEDGEBASE>
+                  <FRAME><NAME>mouth</NAME><ISA>Robot</ISA><ISINSTANCE>TRUE</ISINSTANCE><RUNTIME>TRUE</RUNTIME></FRAME>
+                </KNOWLEDGEBASE>
+                """;
+        Files.writeString(dir.resolve("fixtures.xml"), fixture);
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET)) {
+            assertThat(store.kb().require("mouth").provenance()).isEqualTo(Provenance.RUNTIME);
+            assertThat(store.homeOf("mouth")).isEmpty();
+            store.kb().remove("mouth");
+            store.kb().add(learnedUser("ann", 1));
+            store.compact();
+        }
+        assertThat(Files.readString(dir.resolve("fixtures.xml"))).isEqualTo(fixture);
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET)) {
+            assertThat(store.kb().require("mouth").provenance()).isEqualTo(Provenance.RUNTIME);
+            assertThat(store.kb().contains("ann")).isTrue();
+        }
+    }
 }
