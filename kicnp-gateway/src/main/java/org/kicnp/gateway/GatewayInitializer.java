@@ -1,5 +1,6 @@
 package org.kicnp.gateway;
 
+import io.netty.channel.Channel;
 import io.netty.channel.ChannelInitializer;
 import io.netty.channel.ChannelPipeline;
 import io.netty.channel.group.ChannelGroup;
@@ -31,6 +32,11 @@ final class GatewayInitializer extends ChannelInitializer<SocketChannel> {
 
     @Override protected void initChannel(SocketChannel ch) {
         connections.add(ch);
+        configure(ch);
+    }
+
+    /** Installs the handlers on a channel; also used on {@code EmbeddedChannel}s in tests. */
+    void configure(Channel ch) {
         ChannelPipeline p = ch.pipeline();
         config.tls().ifPresent(tls -> p.addLast("tls", tls.newHandler(ch.alloc())));
         // failFast: an oversize length is refused when read, without waiting for (or buffering) its bytes.

@@ -56,13 +56,8 @@ public final class GatewayServer implements AutoCloseable {
                                       FeedbackListener feedback) {
         requireNonNull(config, "config");
         GatewayMetrics metrics = new GatewayMetrics();
-        AgentRegistry registry = new AgentRegistry();
-        Outbound out = new Outbound(metrics, config.maxShedBeforeDrop());
-        RuntimeFrames runtime = new RuntimeFrames(kb);
-        KnowledgeAccess knowledge = new KnowledgeAccess(kb, out);
-        Commands commands = new Commands(registry, out, runtime, requireNonNull(feedback, "feedback"));
-        ServerAgent server = new ServerAgent(config.serverName(), requireNonNull(agents, "agents"), registry, kb,
-                runtime, out, commands, knowledge);
+        ServerAgent server = ServerAgent.create(config, requireNonNull(agents, "agents"), requireNonNull(kb, "kb"),
+                requireNonNull(feedback, "feedback"), metrics);
         ChannelGroup connections = new DefaultChannelGroup("kicnp-agents", GlobalEventExecutor.INSTANCE);
         EventLoopGroup boss = new MultiThreadIoEventLoopGroup(1, NioIoHandler.newFactory());
         EventLoopGroup workers = new MultiThreadIoEventLoopGroup(NioIoHandler.newFactory());
@@ -76,7 +71,7 @@ public final class GatewayServer implements AutoCloseable {
                             new WriteBufferWaterMark(config.writeLowWaterBytes(), config.writeHighWaterBytes()))
                     .childHandler(init)
                     .bind(config.host(), config.port()).sync().channel();
-            kb.addListener(knowledge);
+            kb.addListener(server.knowledge());
             GatewayServer gw = new GatewayServer(boss, workers, ch, connections, server, metrics, kb);
             LOG.info("K-ICNP gateway '{}' listening on {}{}.", config.serverName(), ch.localAddress(),
                     config.tls().isPresent() ? " (TLS)" : "");

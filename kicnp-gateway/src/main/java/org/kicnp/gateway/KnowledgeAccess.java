@@ -117,11 +117,7 @@ final class KnowledgeAccess implements KnowledgeListener {
         if (p.root().isPresent() && !kb.contains(p.root().get())) {
             return unknown(p.id(), p.root().get());
         }
-        List<Frame> frames = kb.frames().stream()
-                .filter(f -> f.provenance().durable())
-                .filter(f -> p.root().map(r -> kb.isA(f.name(), r)).orElse(true))
-                .toList();
-        return new Message.Frames(p.id(), FrameText.toXml(frames));
+        return new Message.Frames(p.id(), FrameText.toXml(Subtree.of(kb, p.root())));
     }
 
     void connectionClosed(Session s) {
