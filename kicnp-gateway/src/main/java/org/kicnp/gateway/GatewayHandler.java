@@ -32,10 +32,9 @@ final class GatewayHandler extends SimpleChannelInboundHandler<Message> {
         this.metrics = metrics;
     }
 
-    @Override public void channelActive(ChannelHandlerContext ctx) throws Exception {
+    @Override public void handlerAdded(ChannelHandlerContext ctx) {
         session = new Session(ctx.channel());
         metrics.connections.incrementAndGet();
-        super.channelActive(ctx);
     }
 
     @Override public void channelInactive(ChannelHandlerContext ctx) throws Exception {
