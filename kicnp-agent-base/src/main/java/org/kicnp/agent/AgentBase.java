@@ -255,7 +255,7 @@ public abstract class AgentBase implements AutoCloseable {
                     return;
                 }
                 LOG.info("Agent '{}' lost its connection to {}:{} ({}); reconnecting.", name(), options.host(),
-                        options.port(), e.getMessage());
+                        options.port(), e.getMessage() == null ? e.toString() : e.getMessage());
             } finally {
                 lost();
             }
