@@ -264,12 +264,17 @@ public abstract class AgentBase implements AutoCloseable {
                 firstOutcome.countDown();
                 LOG.error("Agent '{}' stops: {}", name(), e.getMessage());
                 return;
-            } catch (IOException | ProtocolException | AgentException e) {
+            } catch (IOException | ProtocolException | NotConnectedException e) {
                 if (closed) {
                     return;
                 }
                 LOG.info("Agent '{}' lost its connection to {}:{} ({}); reconnecting.", name(), options.host(),
                         options.port(), e.getMessage() == null ? e.toString() : e.getMessage());
+            } catch (RuntimeException e) { // a bug in a subclass (say, in capabilities()) or a server we do not understand
+                fatal = e instanceof AgentException a ? a : new AgentException("Agent '" + name() + "' stops: " + e, e);
+                firstOutcome.countDown();
+                LOG.error("Agent '{}' stops.", name(), e);
+                return;
             } finally {
                 lost();
             }
