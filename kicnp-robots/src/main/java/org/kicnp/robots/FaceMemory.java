@@ -60,7 +60,8 @@ public final class FaceMemory implements KnowledgeListener {
         }
         Frame user = Frame.instance(name, KNOWN_USER)
                 .slot(Slot.ofValue(NAME_SLOT, DataType.STRING, Value.of(name)))
-                .slot(Slot.ofValue(FACE_SLOT, DataType.LIST, new Value.Lst(components)))
+                .slot(Slot.builder(FACE_SLOT, DataType.LIST).argument(DataType.FLOAT.xmlName())
+                        .value(new Value.Lst(components)).build())
                 .provenance(Provenance.LEARNED)
                 .build();
         kb.put(user);
@@ -94,12 +95,14 @@ public final class FaceMemory implements KnowledgeListener {
         face(f).ifPresent(face -> recognizer.enroll(personName(f), face));
     }
 
-    private static String personName(Frame f) {
+    /** The person a KnownUser frame stands for: its {@code name} slot, else the frame's name. */
+    public static String personName(Frame f) {
         return f.ownSlot(NAME_SLOT).flatMap(Slot::value)
                 .filter(v -> v instanceof Value.Str).map(Value::text).orElse(f.name());
     }
 
-    private static Optional<FaceVector> face(Frame f) {
+    /** The frame's own {@code face} slot as a vector, if it holds a non-empty list of numbers. */
+    public static Optional<FaceVector> face(Frame f) {
         return f.ownSlot(FACE_SLOT).flatMap(Slot::value).flatMap(v -> {
             if (!(v instanceof Value.Lst list) || list.items().isEmpty()) {
                 return Optional.empty();
@@ -109,6 +112,13 @@ public final class FaceMemory implements KnowledgeListener {
                 switch (list.items().get(i)) {
                     case Value.Real r -> out[i] = r.value();
                     case Value.Int n -> out[i] = n.value();
+                    case Value.Str text -> { // a list read without its element type (no ARGUMENT) holds text
+                        try {
+                            out[i] = Double.parseDouble(text.value().strip());
+                        } catch (NumberFormatException e) {
+                            return Optional.empty();
+                        }
+                    }
                     default -> {
                         return Optional.empty();
                     }
