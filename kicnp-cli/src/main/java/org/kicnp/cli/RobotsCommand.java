@@ -32,24 +32,29 @@ import java.util.concurrent.TimeUnit;
  * until the simulator dies.
  */
 @Command(name = "robots", mixinStandardHelpOptions = true,
-        description = "Start the simulator and the four robot agents (robovie, pino, scout, aibo) against a running server.")
+        description = "Start the simulator and the four robot agents (robovie, pino, scout, aibo) "
+                + "against a running server.")
 public final class RobotsCommand implements Callable<Integer> {
     private static final List<String> ROBOTS = List.of("robovie", "pino", "scout", "aibo");
 
-    @Option(names = "--gateway", defaultValue = "127.0.0.1:7407", description = "The server, host:port (default ${DEFAULT-VALUE}).")
+    @Option(names = "--gateway", defaultValue = "127.0.0.1:7407",
+            description = "The server, host:port (default ${DEFAULT-VALUE}).")
     String gateway;
 
     @Option(names = "--tokens", defaultValue = "agents.properties",
             description = "Properties file with NAME.token for robovie, pino, scout and aibo (default ${DEFAULT-VALUE}).")
     Path tokens;
 
-    @Option(names = "--seed", defaultValue = "42", description = "Simulator seed: faces and sensor noise (default ${DEFAULT-VALUE}).")
+    @Option(names = "--seed", defaultValue = "42",
+            description = "Simulator seed: faces and sensor noise (default ${DEFAULT-VALUE}).")
     long seed;
 
-    @Option(names = "--time-scale", defaultValue = "1", description = "Simulated seconds per wall second (default ${DEFAULT-VALUE}).")
+    @Option(names = "--time-scale", defaultValue = "1",
+            description = "Simulated seconds per wall second (default ${DEFAULT-VALUE}).")
     double timeScale;
 
-    @Option(names = "--repo", description = "The K-ICNP repository (holding robots-sim/); default: found from the working directory.")
+    @Option(names = "--repo",
+            description = "The K-ICNP repository (holding robots-sim/); default: found from the working directory.")
     Path repo;
 
     @Option(names = "--for", paramLabel = "SECONDS", description = "Stop after this many seconds (default: run until interrupted).")

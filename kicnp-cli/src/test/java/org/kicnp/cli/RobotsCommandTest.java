@@ -45,7 +45,8 @@ class RobotsCommandTest {
         }
         Path tokens = Files.write(dir.resolve("agents.properties"), lines);
         KnowledgeBase kb = KnowledgeBase.create();
-        try (GatewayServer server = GatewayServer.start(GatewayConfig.defaults().withPort(0), agents, kb, FeedbackListener.NONE)) {
+        GatewayConfig config = GatewayConfig.defaults().withPort(0);
+        try (GatewayServer server = GatewayServer.start(config, agents, kb, FeedbackListener.NONE)) {
             CompletableFuture<Integer> exit = CompletableFuture.supplyAsync(() -> run("robots",
                     "--gateway", "127.0.0.1:" + server.port(), "--tokens", tokens.toString(), "--seed", "5", "--for", "4"));
             long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);

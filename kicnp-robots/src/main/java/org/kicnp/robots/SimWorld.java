@@ -11,9 +11,7 @@ import java.io.OutputStreamWriter;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.time.Duration;
-import java.util.ArrayDeque;
 import java.util.ArrayList;
-import java.util.Deque;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
@@ -40,8 +38,6 @@ import java.util.function.Consumer;
  */
 public final class SimWorld implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(SimWorld.class);
-    private static final Logger SIM_LOG = LoggerFactory.getLogger("kicnp.sim");
-    private static final int STDERR_KEPT = 5;
 
     private final SimOptions options;
     private final Process process;
@@ -54,7 +50,7 @@ public final class SimWorld implements AutoCloseable {
     private final List<Consumer<SimEvent>> listeners = new CopyOnWriteArrayList<>();
     private final ExecutorService events;
     private final CompletableFuture<SimEvent.Hello> hello = new CompletableFuture<>();
-    private final Deque<String> lastStderr = new ArrayDeque<>();
+    private final SimStderr stderr = new SimStderr();
     private final Object deathLock = new Object();
     private volatile String deathReason;
     private volatile boolean closing;
@@ -105,7 +101,7 @@ public final class SimWorld implements AutoCloseable {
 
     private void startThreads() {
         reader = Thread.ofPlatform().daemon().name("sim-stdout").start(this::readEvents);
-        Thread.ofPlatform().daemon().name("sim-stderr").start(this::readLog);
+        stderr.follow(process.getErrorStream());
     }
 
     /** The simulator's first line: protocol, seed, mode, robots and their actions. */
@@ -251,10 +247,11 @@ public final class SimWorld implements AutoCloseable {
             return future.get();
         } catch (ExecutionException e) {
             Throwable cause = e.getCause();
-            if (cause instanceof SimulatorException se) {
-                throw se instanceof SimulatorExitedException x ? new SimulatorExitedException(x.getMessage())
-                        : se instanceof SimRequestRejectedException r
-                        ? new SimRequestRejectedException(r.getMessage(), r.field()) : new SimulatorException(se.getMessage(), se);
+            switch (cause) { // a fresh exception, so the stack trace shows the caller
+                case SimulatorExitedException x -> throw new SimulatorExitedException(x.getMessage());
+                case SimRequestRejectedException r -> throw new SimRequestRejectedException(r.getMessage(), r.field());
+                case SimulatorException x -> throw new SimulatorException(x.getMessage(), x);
+                default -> { }
             }
             if (cause instanceof TimeoutException) {
                 throw new SimulatorException("The simulator did not answer in time.", cause);
@@ -372,29 +369,6 @@ public final class SimWorld implements AutoCloseable {
         }
     }
 
-    private void readLog() {
-        try (BufferedReader in = new BufferedReader(new InputStreamReader(process.getErrorStream(), StandardCharsets.UTF_8))) {
-            String line;
-            while ((line = in.readLine()) != null) {
-                synchronized (lastStderr) {
-                    if (lastStderr.size() == STDERR_KEPT) {
-                        lastStderr.removeFirst();
-                    }
-                    lastStderr.addLast(line);
-                }
-                if (line.startsWith("ERROR") || line.startsWith("CRITICAL") || line.startsWith("Traceback")) {
-                    SIM_LOG.error("{}", line);
-                } else if (line.startsWith("WARNING")) {
-                    SIM_LOG.warn("{}", line);
-                } else {
-                    SIM_LOG.info("{}", line);
-                }
-            }
-        } catch (IOException e) {
-            LOG.debug("Simulator stderr closed: {}", e.getMessage());
-        }
-    }
-
     private String reasonAfterEof() {
         try {
             if (process.waitFor(2, TimeUnit.SECONDS)) {
@@ -419,20 +393,7 @@ public final class SimWorld implements AutoCloseable {
     }
 
     private String exitReason(int code) {
-        if (closing && code == 0) {
-            return "simulator was shut down";
-        }
-        String reason = "simulator exited with code " + code;
-        if (code > 128) {
-            reason += " (signal " + (code - 128) + ")";
-        } else if (code != 0) {
-            synchronized (lastStderr) {
-                if (!lastStderr.isEmpty()) {
-                    reason += "; its last words: " + String.join(" | ", lastStderr);
-                }
-            }
-        }
-        return reason;
+        return closing && code == 0 ? "simulator was shut down" : stderr.exitReason(code);
     }
 
     /** Marks the world dead once: fails everything in flight and tells the listeners. */

@@ -139,6 +139,13 @@ class SimWorldTest {
                 .hasMessage("The simulator is not running: simulator was shut down.");
     }
 
+    @Test
+    void start_withARepositoryWithoutTheSimulator_failsNamingTheFolder(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) {
+        assertThatThrownBy(() -> SimWorld.start(manual().withRepoRoot(dir)))
+                .isInstanceOf(SimulatorException.class)
+                .hasMessage("No simulator under '" + dir.resolve("robots-sim") + "': expected robots-sim/kicnp_sim there.");
+    }
+
     static void kill9(long pid) throws IOException, InterruptedException {
         Process kill = new ProcessBuilder("kill", "-9", Long.toString(pid)).inheritIO().start();
         assertThat(kill.waitFor()).isZero();
