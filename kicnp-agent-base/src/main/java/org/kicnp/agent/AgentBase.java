@@ -13,7 +13,8 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
+import java.util.concurrent.ThreadPoolExecutor;
+import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.ThreadLocalRandom;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
@@ -22,6 +23,7 @@ import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Value;
 import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.ErrorCode;
 import org.kicnp.protocol.FrameText;
 import org.kicnp.protocol.Message;
 import org.kicnp.protocol.Message.Command;
@@ -43,6 +45,7 @@ import org.slf4j.LoggerFactory;
  */
 public abstract class AgentBase implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(AgentBase.class);
+    private static final int EVENT_QUEUE = 10_000;
 
     private final AgentOptions options;
     private final MessageCodec codec = new MessageCodec();
@@ -50,7 +53,17 @@ public abstract class AgentBase implements AutoCloseable {
     private final Map<String, CommandTicket> tickets = new ConcurrentHashMap<>();
     private final Set<String> subscriptions = ConcurrentHashMap.newKeySet();
     private final AtomicLong ids = new AtomicLong();
-    private final ExecutorService events = Executors.newSingleThreadExecutor(Thread.ofVirtual().name("agent-events").factory());
+    /** Relays and changes, in order; when full, the reader waits, so TCP pushes back on the server (which sheds). */
+    private final ExecutorService events = new ThreadPoolExecutor(1, 1, 0, TimeUnit.MILLISECONDS,
+            new ArrayBlockingQueue<>(EVENT_QUEUE), Thread.ofVirtual().name("agent-events").factory(), (task, pool) -> {
+                try {
+                    if (!pool.isShutdown()) {
+                        pool.getQueue().put(task);
+                    }
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            });
     private final CountDownLatch firstOutcome = new CountDownLatch(1);
     private volatile Connection connection;
     private volatile boolean registered;
@@ -255,7 +268,7 @@ public abstract class AgentBase implements AutoCloseable {
                     return;
                 }
                 LOG.info("Agent '{}' lost its connection to {}:{} ({}); reconnecting.", name(), options.host(),
-                        options.port(), e.getMessage());
+                        options.port(), e.getMessage() == null ? e.toString() : e.getMessage());
             } finally {
                 lost();
             }
@@ -343,6 +356,8 @@ public abstract class AgentBase implements AutoCloseable {
                 case Message.Relay r -> events.execute(() -> onRelay(r));
                 case Message.Changed ch -> events.execute(() -> onChanged(ch));
                 case Message.Heartbeat h -> { }
+                case Message.ErrorReply e when e.code() == ErrorCode.SUPERSEDED ->
+                        throw new AuthenticationException("Agent '" + name() + "' stops: " + e.message());
                 case Message.ErrorReply e when e.id().isEmpty() -> LOG.warn("Agent '{}': server says {}: {}", name(),
                         e.code(), e.message());
                 case Message.ErrorReply e -> complete(e.id().get(), e);
@@ -369,10 +384,16 @@ public abstract class AgentBase implements AutoCloseable {
         ActionHandle handle = new ActionHandle(cmd, this::send);
         try {
             onCommand(cmd, handle);
+        } catch (NotConnectedException e) {
+            LOG.info("Agent '{}' lost its connection during command '{}'; the server fails it.", name(), cmd.id());
         } catch (RuntimeException e) {
             LOG.warn("Agent '{}' failed on command '{}'.", name(), cmd.id(), e);
-            if (!handle.isDone()) {
-                handle.failed("Agent '" + name() + "' failed: " + e.getMessage());
+            try {
+                if (!handle.isDone()) {
+                    handle.failed("Agent '" + name() + "' failed: " + e.getMessage());
+                }
+            } catch (NotConnectedException lost) {
+                LOG.info("Agent '{}' could not report the failure of '{}': {}", name(), cmd.id(), lost.getMessage());
             }
         }
     }

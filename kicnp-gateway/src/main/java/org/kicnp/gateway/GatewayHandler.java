@@ -106,6 +106,13 @@ final class GatewayHandler extends SimpleChannelInboundHandler<Message> {
             ctx.close();
             return;
         }
+        if (cause.getCause() instanceof javax.net.ssl.SSLException || cause instanceof javax.net.ssl.SSLException) {
+            // No error message can be sent without a TLS session: just close.
+            LOG.info("Closing {}: TLS failed: {}", session, cause.getCause() == null ? cause : cause.getCause());
+            metrics.protocolErrors.incrementAndGet();
+            ctx.close();
+            return;
+        }
         ErrorReply error = toError(cause);
         if (error.code() == ErrorCode.INTERNAL) {
             LOG.error("Internal error on connection {}.", session, cause);

@@ -106,7 +106,7 @@ final class ServerAgent {
         s.registered(names);
         registry.register(s).ifPresent(old -> {
             LOG.info("Agent {} registered again from a new connection; closing the old one.", s);
-            out.closeWith(old, ErrorReply.of(ErrorCode.AUTH_FAILED, "Agent " + s + " connected again elsewhere."));
+            out.closeWith(old, ErrorReply.of(ErrorCode.SUPERSEDED, "Agent " + s + " registered again from a new connection."));
         });
         try {
             runtime.present(s.agent(), s.kind(), names);

@@ -161,6 +161,22 @@ class GatewayEndToEndTest {
     }
 
     @Test
+    void secondConnection_ofSameAgent_supersedesTheFirst_andKeepsPresence() throws IOException {
+        try (RawClient first = new RawClient(server.port()); RawClient second = new RawClient(server.port())) {
+            for (RawClient c : List.of(first, second)) {
+                c.send(new Message.Hello("1", "bob", AgentKind.USER, "bob-token"));
+                c.send(new Message.Register("2", List.of()));
+                assertThat(c.read()).isInstanceOf(Message.AuthResult.class);
+                assertThat(c.read()).isEqualTo(new Message.Ack("2"));
+            }
+            assertThat(first.readUntilClosed()).last().isInstanceOfSatisfying(Message.ErrorReply.class,
+                    e -> assertThat(e.code()).isEqualTo(ErrorCode.SUPERSEDED));
+            assertThat(kb.contains("agent_bob")).isTrue();
+            assertThat(server.registeredAgents()).containsExactly("bob");
+        }
+    }
+
+    @Test
     void disconnect_inTheMiddleOfAnAction_failsItWithReason() {
         AgentBase stuck = connect(new AgentBase(options("scout", AgentKind.ROBOT)) {
             @Override protected void onCommand(Command c, ActionHandle h) {

@@ -16,7 +16,8 @@ public enum ErrorCode {
     AGENT_DISCONNECTED(false),
     HEARTBEAT_TIMEOUT(true),
     OVERLOADED(true),
-    INTERNAL(false);
+    SUPERSEDED(true),
+    INTERNAL(true);
 
     private final boolean closesConnection;
 

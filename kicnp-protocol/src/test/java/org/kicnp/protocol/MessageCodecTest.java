@@ -38,7 +38,8 @@ class MessageCodecTest {
     @Test
     void encode_writesEnvelopeFirstAndLowerCaseEnums() {
         String json = new String(codec.encode(new Message.Hello("1", "scout", AgentKind.ROBOT, "t")), UTF_8);
-        assertThat(json).isEqualTo("{\"v\":1,\"type\":\"hello\",\"id\":\"1\",\"agent\":\"scout\",\"kind\":\"robot\",\"token\":\"t\"}");
+        assertThat(json).isEqualTo(
+                "{\"v\":1,\"type\":\"hello\",\"id\":\"1\",\"agent\":\"scout\",\"kind\":\"robot\",\"token\":\"t\"}");
     }
 
     @Test
