@@ -1,5 +1,6 @@
 package org.kicnp.cli;
 
+import org.kicnp.agent.AgentException;
 import org.kicnp.agent.AgentOptions;
 import org.kicnp.protocol.AgentKind;
 import org.kicnp.robots.AiboAgent;
@@ -7,11 +8,14 @@ import org.kicnp.robots.PinoAgent;
 import org.kicnp.robots.RobotAgent;
 import org.kicnp.robots.RobovieAgent;
 import org.kicnp.robots.ScoutAgent;
+import org.kicnp.robots.SimEvent;
 import org.kicnp.robots.SimOptions;
 import org.kicnp.robots.SimWorld;
 import org.kicnp.robots.SimulatorException;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -57,11 +61,12 @@ public final class RobotsCommand implements Callable<Integer> {
             description = "The K-ICNP repository (holding robots-sim/); default: found from the working directory.")
     Path repo;
 
-    @Option(names = "--for", paramLabel = "SECONDS", description = "Stop after this many seconds (default: run until interrupted).")
+    @Option(names = "--for", paramLabel = "SECONDS",
+            description = "Stop after this many seconds (default: run until interrupted).")
     Double duration;
 
-    @picocli.CommandLine.Spec
-    picocli.CommandLine.Model.CommandSpec spec;
+    @Spec
+    CommandSpec spec;
 
     @Override public Integer call() throws InterruptedException {
         PrintWriter out = spec.commandLine().getOut();
@@ -95,7 +100,7 @@ public final class RobotsCommand implements Callable<Integer> {
         List<RobotAgent> agents = new ArrayList<>();
         try (SimWorld world = SimWorld.start(options)) {
             world.addListener(e -> {
-                if (e instanceof org.kicnp.robots.SimEvent.Exited x) {
+                if (e instanceof SimEvent.Exited x) {
                     err.println("The simulator is gone: " + x.reason() + ".");
                     stop.countDown();
                 }
@@ -125,7 +130,7 @@ public final class RobotsCommand implements Callable<Integer> {
                 // Shutting down already: the hook is running.
             }
             return died && !world.alive() ? 1 : 0;
-        } catch (SimulatorException | org.kicnp.agent.AgentException e) {
+        } catch (SimulatorException | AgentException e) {
             err.println(e.getMessage());
             return 1;
         } finally {
