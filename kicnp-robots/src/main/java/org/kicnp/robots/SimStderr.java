@@ -8,6 +8,7 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
+import java.time.Duration;
 import java.util.ArrayDeque;
 import java.util.Deque;
 
@@ -21,10 +22,24 @@ final class SimStderr {
     private static final int KEPT = 5;
 
     private final Deque<String> last = new ArrayDeque<>();
+    private volatile Thread reader;
 
     /** Reads the stream to its end on a daemon thread. */
     void follow(InputStream stderr) {
-        Thread.ofPlatform().daemon().name("sim-stderr").start(() -> read(stderr));
+        reader = Thread.ofPlatform().daemon().name("sim-stderr").start(() -> read(stderr));
+    }
+
+    /** Once the process has exited: waits briefly for its last lines, so an exit reason can quote them. */
+    void drain() {
+        Thread t = reader;
+        if (t == null) {
+            return;
+        }
+        try {
+            t.join(Duration.ofSeconds(1));
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     private void read(InputStream stderr) {

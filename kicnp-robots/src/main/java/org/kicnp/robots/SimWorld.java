@@ -100,8 +100,8 @@ public final class SimWorld implements AutoCloseable {
     }
 
     private void startThreads() {
+        stderr.follow(process.getErrorStream()); // first: a quick death's reason quotes stderr
         reader = Thread.ofPlatform().daemon().name("sim-stdout").start(this::readEvents);
-        stderr.follow(process.getErrorStream());
     }
 
     /** The simulator's first line: protocol, seed, mode, robots and their actions. */
@@ -393,6 +393,7 @@ public final class SimWorld implements AutoCloseable {
     }
 
     private String exitReason(int code) {
+        stderr.drain();
         return closing && code == 0 ? "simulator was shut down" : stderr.exitReason(code);
     }
 
