@@ -15,7 +15,8 @@ public sealed interface SimRequest {
     String type();
 
     /**
-     * Runs {@code action} on {@code robot}. Argument values are strings, numbers, booleans or lists of them.
+     * Runs {@code action} on {@code robot}. Argument values are strings, numbers, booleans or lists of them (the
+     * simulator's argument types; it validates each against its own specs).
      * {@code progressS} asks for {@code action_progress} events at that period.
      */
     record Command(String robot, String action, Map<String, Object> args, Optional<Double> timeoutS,
@@ -24,8 +25,19 @@ public sealed interface SimRequest {
             Objects.requireNonNull(robot, "robot");
             Objects.requireNonNull(action, "action");
             args = Map.copyOf(args);
+            args.forEach((name, value) -> {
+                if (!jsonScalarOrList(value)) {
+                    throw new IllegalArgumentException("Argument '" + name + "' of " + robot + "." + action
+                            + " is a " + value.getClass().getSimpleName() + ", not a string, number, boolean or list.");
+                }
+            });
             Objects.requireNonNull(timeoutS, "timeoutS");
             Objects.requireNonNull(progressS, "progressS");
+        }
+
+        private static boolean jsonScalarOrList(Object v) {
+            return v instanceof String || v instanceof Number || v instanceof Boolean
+                    || v instanceof List<?> l && l.stream().allMatch(Command::jsonScalarOrList);
         }
 
         /** A command with the simulator's default timeout and no progress events. */

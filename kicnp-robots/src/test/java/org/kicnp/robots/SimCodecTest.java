@@ -31,6 +31,13 @@ class SimCodecTest {
     }
 
     @Test
+    void command_withAnArgumentThatIsNotJson_isRefusedNamingIt() {
+        assertThatThrownBy(() -> SimRequest.Command.of("scout", "go_to", Map.of("x", new Object())))
+                .isInstanceOf(IllegalArgumentException.class)
+                .hasMessage("Argument 'x' of scout.go_to is a Object, not a string, number, boolean or list.");
+    }
+
+    @Test
     void decode_actionFailed_keepsTheReason() {
         SimEvent e = codec.decode("{\"type\":\"action_failed\",\"t\":3.2833,\"id\":\"c3\",\"robot\":\"scout\","
                 + "\"action\":\"go_to\",\"reason\":\"blocked: bumper 0\"}");
