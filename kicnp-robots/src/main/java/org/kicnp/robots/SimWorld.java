@@ -193,7 +193,7 @@ public final class SimWorld implements AutoCloseable {
         pending.put(id, ack);
         ack.orTimeout(options.requestTimeout().toMillis(), TimeUnit.MILLISECONDS).whenComplete((r, e) -> {
             pending.remove(id);
-            if (e != null) {
+            if (e != null && !(e instanceof SimulatorExitedException)) { // a death is reported by die(), with its reason
                 String reason = e instanceof TimeoutException
                         ? "no answer from the simulator within " + options.requestTimeout().toSeconds() + " s"
                         : e.getMessage();
