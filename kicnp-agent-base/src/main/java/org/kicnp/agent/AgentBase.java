@@ -24,6 +24,7 @@ import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Value;
 import org.kicnp.protocol.AgentKind;
 import org.kicnp.protocol.ErrorCode;
+import org.kicnp.protocol.FeedbackStage;
 import org.kicnp.protocol.FrameText;
 import org.kicnp.protocol.Message;
 import org.kicnp.protocol.Message.Command;
@@ -263,12 +264,17 @@ public abstract class AgentBase implements AutoCloseable {
                 firstOutcome.countDown();
                 LOG.error("Agent '{}' stops: {}", name(), e.getMessage());
                 return;
-            } catch (IOException | ProtocolException | AgentException e) {
+            } catch (IOException | ProtocolException | NotConnectedException e) {
                 if (closed) {
                     return;
                 }
                 LOG.info("Agent '{}' lost its connection to {}:{} ({}); reconnecting.", name(), options.host(),
                         options.port(), e.getMessage() == null ? e.toString() : e.getMessage());
+            } catch (RuntimeException e) { // a bug in a subclass (say, in capabilities()) or a server we do not understand
+                fatal = e instanceof AgentException a ? a : new AgentException("Agent '" + name() + "' stops: " + e, e);
+                firstOutcome.countDown();
+                LOG.error("Agent '{}' stops.", name(), e);
+                return;
             } finally {
                 lost();
             }
@@ -410,6 +416,10 @@ public abstract class AgentBase implements AutoCloseable {
         registered = false;
         connection = null;
         failPending("Agent '" + name() + "' lost its connection.");
+        // The server sends feedback to the connection that issued a command; a new connection will not hear it.
+        tickets.forEach((id, t) -> t.received(new Message.Feedback(id, t.command().robot(), FeedbackStage.FAILED,
+                Optional.empty(), "the connection to the gateway was lost before command '" + id + "' ended")));
+        tickets.clear();
         if (was && !closed) {
             events.execute(() -> onDisconnected("connection lost"));
         }

@@ -20,6 +20,8 @@ import org.slf4j.LoggerFactory;
  */
 final class Commands implements ActionSink {
     private static final Logger LOG = LoggerFactory.getLogger(Commands.class);
+    /** The most commands one robot connection may have in flight: bounds the table against a robot that never answers. */
+    static final int MAX_IN_FLIGHT_PER_ROBOT = 1024;
 
     /** A command sent to {@code robot}'s connection, issued by a user agent or (empty) by the platform. */
     private record InFlight(Command command, Session robot, Optional<Session> issuer) {
@@ -61,12 +63,18 @@ final class Commands implements ActionSink {
                     "Agent '" + c.robot() + "' is not connected, so command '" + c.id() + "' cannot be sent."));
         }
         InFlight entry = new InFlight(c, robot.get(), issuer);
+        if (robot.get().commandsInFlight.incrementAndGet() > MAX_IN_FLIGHT_PER_ROBOT) {
+            robot.get().commandsInFlight.decrementAndGet();
+            return Optional.of(ErrorReply.to(c.id(), ErrorCode.REJECTED, "Agent '" + c.robot() + "' already has "
+                    + MAX_IN_FLIGHT_PER_ROBOT + " commands in flight; command '" + c.id() + "' was not sent."));
+        }
         if (inFlight.putIfAbsent(key(c.robot(), c.id()), entry) != null) {
+            robot.get().commandsInFlight.decrementAndGet();
             return Optional.of(ErrorReply.to(c.id(), ErrorCode.REJECTED,
                     "A command '" + c.id() + "' to '" + c.robot() + "' is already in flight."));
         }
         if (!out.send(robot.get(), c)) {
-            inFlight.remove(key(c.robot(), c.id()), entry);
+            remove(key(c.robot(), c.id()), entry);
             return Optional.of(ErrorReply.to(c.id(), ErrorCode.AGENT_DISCONNECTED,
                     "Command '" + c.id() + "' could not be sent: agent '" + c.robot() + "' is not reading."));
         }
@@ -77,7 +85,10 @@ final class Commands implements ActionSink {
     void feedback(Session robot, Feedback received) {
         Feedback f = received.from(robot.agent());
         String key = key(robot.agent(), f.id());
-        InFlight entry = f.stage().terminal() ? inFlight.remove(key) : inFlight.get(key);
+        InFlight entry = inFlight.get(key);
+        if (entry != null && f.stage().terminal() && !remove(key, entry)) {
+            entry = null; // failed by a disconnect at the same moment
+        }
         if (entry == null) {
             LOG.debug("Dropping {} feedback from '{}' for command '{}', which is not in flight.", f.stage(),
                     robot.agent(), f.id());
@@ -94,7 +105,7 @@ final class Commands implements ActionSink {
     /** Fails every command in flight on a robot connection that closed. */
     void connectionClosed(Session robot) {
         inFlight.forEach((key, entry) -> {
-            if (entry.robot() == robot && inFlight.remove(key, entry)) {
+            if (entry.robot() == robot && remove(key, entry)) {
                 Feedback failed = new Feedback(entry.command().id(), robot.agent(), FeedbackStage.FAILED,
                         Optional.empty(), "agent '" + robot.agent() + "' disconnected");
                 try {
@@ -105,6 +116,14 @@ final class Commands implements ActionSink {
                 deliver(entry, failed);
             }
         });
+    }
+
+    private boolean remove(String key, InFlight entry) {
+        if (inFlight.remove(key, entry)) {
+            entry.robot().commandsInFlight.decrementAndGet();
+            return true;
+        }
+        return false;
     }
 
     int inFlightCount() {

@@ -24,6 +24,11 @@ import org.slf4j.LoggerFactory;
  * The running gateway: binds, accepts agents, and gives the platform its {@link ActionSink}. Start with
  * {@link #start}; {@link #close} stops accepting, closes every connection (failing in-flight commands) and
  * releases the threads.
+ *
+ * <p>Threads: each connection's messages are handled on its Netty event loop, knowledge-base calls included (they
+ * are short, and the knowledge base has its own lock). Knowledge-base listeners registered by others (such as the
+ * inference engine) therefore run on a gateway thread when an agent's change commits; a slow listener should hand
+ * its work to its own thread. {@link FeedbackListener} calls come from the robot connection's event loop.
  */
 public final class GatewayServer implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(GatewayServer.class);

@@ -29,6 +29,7 @@ import org.kicnp.protocol.Message.ErrorReply;
  * returns the answer to send. Thread-safe; the knowledge base does the locking.
  */
 final class KnowledgeAccess implements KnowledgeListener {
+    private static final org.slf4j.Logger LOG = org.slf4j.LoggerFactory.getLogger(KnowledgeAccess.class);
     private final KnowledgeBase kb;
     private final Outbound out;
     private final Set<Session> subscribers = ConcurrentHashMap.newKeySet();
@@ -128,15 +129,19 @@ final class KnowledgeAccess implements KnowledgeListener {
         if (subscribers.isEmpty()) {
             return;
         }
-        for (FrameEvent e : changes.events()) {
-            Set<String> classes = classesOf(e.frame());
-            for (Session s : subscribers) {
-                for (String c : s.subscriptions()) {
-                    if (classes.contains(c)) {
-                        out.send(s, notification(c, e));
+        try {
+            for (FrameEvent e : changes.events()) {
+                Set<String> classes = classesOf(e.frame());
+                for (Session s : subscribers) {
+                    for (String c : s.subscriptions()) {
+                        if (classes.contains(c)) {
+                            out.send(s, notification(c, e));
+                        }
                     }
                 }
             }
+        } catch (RuntimeException e) { // never let a notification problem reach the knowledge base's committer
+            LOG.error("Could not notify subscribers of change set {}.", changes.version(), e);
         }
     }
 

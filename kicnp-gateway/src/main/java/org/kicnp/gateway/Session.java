@@ -23,6 +23,8 @@ final class Session {
     private volatile List<String> capabilities = List.of();
     private final Set<String> subscriptions = ConcurrentHashMap.newKeySet();
     final AtomicInteger shedInARow = new AtomicInteger();
+    /** Commands sent to this (robot) connection and not yet ended or failed. */
+    final AtomicInteger commandsInFlight = new AtomicInteger();
 
     Session(Channel channel) {
         this.channel = requireNonNull(channel, "channel");

@@ -1,6 +1,7 @@
 package org.kicnp.gateway;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import io.netty.buffer.Unpooled;
 import io.netty.channel.embedded.EmbeddedChannel;
@@ -104,6 +105,30 @@ class GatewayHandlerTest {
 
         ch.close();
         assertThat(kb.contains("agent_scout")).isFalse();
+    }
+
+    @Test
+    void register_usesRobotAgentClass_whenTheKnowledgeBaseHasOne() {
+        kb.add(Frame.classFrame("Agent").build());
+        kb.add(Frame.classFrame("RobotAgent").parent("Agent").build());
+        register();
+        assertThat(kb.frame("agent_scout").flatMap(Frame::parent)).contains("RobotAgent");
+        assertThat(kb.contains("Presence")).isFalse();
+    }
+
+    @Test
+    void commands_inFlightPerRobot_areBounded() {
+        register();
+        for (int i = 0; i < Commands.MAX_IN_FLIGHT_PER_ROBOT; i++) {
+            server[0].commands().send(new Command("c" + i, "scout", "walk", Map.of()));
+        }
+        Wire.written(ch);
+        assertThatThrownBy(() -> server[0].commands().send(new Command("one-more", "scout", "walk", Map.of())))
+                .isInstanceOf(IllegalArgumentException.class)
+                .hasMessage("Agent 'scout' already has 1024 commands in flight; command 'one-more' was not sent.");
+        ch.writeInbound(Wire.frame(new Message.Feedback("c0", "scout", FeedbackStage.FAILED, Optional.empty(), "no")));
+        server[0].commands().send(new Command("one-more", "scout", "walk", Map.of()));
+        assertThat(server[0].commands().inFlightCount()).isEqualTo(Commands.MAX_IN_FLIGHT_PER_ROBOT);
     }
 
     @Test

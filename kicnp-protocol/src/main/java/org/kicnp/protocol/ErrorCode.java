@@ -8,7 +8,6 @@ public enum ErrorCode {
     UNKNOWN_TYPE(true),
     BAD_MESSAGE(true),
     NOT_AUTHENTICATED(true),
-    AUTH_FAILED(true),
     FORBIDDEN(false),
     UNKNOWN_AGENT(false),
     UNKNOWN_FRAME(false),
