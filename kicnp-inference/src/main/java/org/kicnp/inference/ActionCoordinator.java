@@ -17,7 +17,7 @@ import org.kicnp.core.SemanticLink;
  * Follows every issued action through its life cycle and turns the coordination links of behavior frames into
  * guarantees: succession (wait for the predecessor frames' unfinished actions to end; fail if one fails),
  * synchronization (actions of linked frames are released together at quiescence with one start time) and restriction
- * (while an action of a restricted frame runs, other robots' actions are held, in order). Owned by the engine thread.
+ * (while an action of a frame with a restriction link out of it runs, other robots' actions are held, in order). Owned by the engine thread.
  */
 final class ActionCoordinator {
     private final KnowledgeBase kb;
@@ -65,13 +65,13 @@ final class ActionCoordinator {
         Tracked t = new Tracked(a);
         actions.put(a.id(), t);
         trace.accept(new TraceEvent.ActionIssued(a));
-        Set<String> preds = related(a.frame(), Relation.Coordination.SUCCESSION, true);
+        Set<String> preds = related(a.frame(), Relation.Coordination.SUCCESSION, Direction.INTO);
         for (Tracked o : actions.values()) {
             if (o != t && !o.status.finished() && preds.contains(o.action.frame())) {
                 t.waitsOn.add(o.action.id());
             }
         }
-        if (!related(a.frame(), Relation.Coordination.SYNCHRONIZATION, false).isEmpty()) {
+        if (!related(a.frame(), Relation.Coordination.SYNCHRONIZATION, Direction.BOTH).isEmpty()) {
             syncBuffer.add(t);
             changed(t, Action.Status.HELD, "waiting for its synchronization group");
         } else if (!t.waitsOn.isEmpty() || restrictedByOther(t)) {
@@ -167,25 +167,29 @@ final class ActionCoordinator {
         for (Tracked o : actions.values()) {
             if (o != t && (o.status == Action.Status.SENT || o.status == Action.Status.STARTED)
                     && !o.action.robot().equals(t.action.robot())
-                    && !related(o.action.frame(), Relation.Coordination.RESTRICTION, false).isEmpty()) {
+                    && !related(o.action.frame(), Relation.Coordination.RESTRICTION, Direction.OUT_OF).isEmpty()) {
                 return true;
             }
         }
         return false;
     }
 
-    /** Frames linked to {@code frame} by the relation: only those linked into it when {@code into}. */
-    private Set<String> related(String frame, Relation rel, boolean into) {
+    private enum Direction { INTO, OUT_OF, BOTH }
+
+    /** Frames linked to {@code frame} by the relation, following links into it, out of it, or both. */
+    private Set<String> related(String frame, Relation rel, Direction d) {
         Set<String> out = new HashSet<>();
         if (!kb.contains(frame)) {
             return out;
         }
-        for (SemanticLink l : kb.linksInto(frame)) {
-            if (l.relation().equals(rel)) {
-                out.add(l.frame());
+        if (d != Direction.OUT_OF) {
+            for (SemanticLink l : kb.linksInto(frame)) {
+                if (l.relation().equals(rel)) {
+                    out.add(l.frame());
+                }
             }
         }
-        if (!into) {
+        if (d != Direction.INTO) {
             for (SemanticLink l : kb.linksOutOf(frame)) {
                 if (l.relation().equals(rel)) {
                     out.add(l.frame());

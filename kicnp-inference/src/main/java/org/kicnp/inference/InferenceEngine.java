@@ -776,8 +776,12 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
         }
     }
 
-    private static Frame feedbackClass() {
-        Frame.Builder b = Frame.classFrame(FEEDBACK_CLASS).provenance(Provenance.RUNTIME);
+    /**
+     * The {@value #FEEDBACK_CLASS} class frame the engine adds when it is missing. Knowledge bases whose frames
+     * match on feedback declare it (or add this frame) before those frames load.
+     */
+    public static Frame feedbackClass() {
+        Frame.Builder b = Frame.classFrame(FEEDBACK_CLASS);
         for (String s : List.of("action", "robot", "name", "status", "result", "frame", "issuedBy")) {
             b.slot(Slot.builder(s, DataType.STRING).build());
         }
