@@ -299,8 +299,9 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
         String name = after.name();
         Set<String> changed = changedSlots(before, after);
         runDemons(before, after, changed);
+        String cls = after.parent().orElseThrow();
         boolean reactive = !before.parent().equals(after.parent()) || changed.stream().anyMatch(s ->
-                kb.slot(name, s).map(e -> e.slot().reactive()).orElse(true));
+                kb.slot(cls, s).map(e -> e.slot().reactive()).orElse(true));
         if (!reactive || !kb.contains(name)) {
             return;
         }
