@@ -7,7 +7,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
-import java.util.function.Function;
 import java.util.function.Supplier;
 import org.kicnp.core.Condition;
 import org.kicnp.core.Frame;
@@ -25,15 +24,13 @@ final class BackwardChainer {
     private final KnowledgeBase kb;
     private final EngineOptions options;
     private final Supports supports;
-    private final Function<String, Rule> rule;
     private final Supplier<List<Rule>> rules;
+    private long hypotheses;
 
-    BackwardChainer(KnowledgeBase kb, EngineOptions options, Supports supports, Function<String, Rule> rule,
-                    Supplier<List<Rule>> rules) {
+    BackwardChainer(KnowledgeBase kb, EngineOptions options, Supports supports, Supplier<List<Rule>> rules) {
         this.kb = kb;
         this.options = options;
         this.supports = supports;
-        this.rule = rule;
         this.rules = rules;
     }
 
@@ -140,7 +137,7 @@ final class BackwardChainer {
         return switch (p) {
             case Proof.Exists e -> e.instance();
             case Proof.Derivable d -> {
-                String n = HYPO + d.frame() + "#" + System.identityHashCode(d);
+                String n = HYPO + d.frame() + "#" + (++hypotheses);
                 Map<String, Value> slots = new HashMap<>();
                 d.slots().forEach((s, sub) -> slots.put(s, Value.ref(name(sub, hypo))));
                 hypo.put(n, slots);

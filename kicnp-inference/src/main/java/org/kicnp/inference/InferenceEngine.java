@@ -54,20 +54,24 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
     private final ActionCoordinator actions;
     private final ScriptApi scriptApi;
     private final BackwardChainer backward;
-    private final Map<String, Rule> rules = new HashMap<>();
+    private final Map<String, Rule> rules = new LinkedHashMap<>();
     private final Map<String, Long> stamps = new HashMap<>();
     private final List<TraceListener> tracers = new CopyOnWriteArrayList<>();
     private final ConcurrentLinkedQueue<Runnable> inbox = new ConcurrentLinkedQueue<>();
     private final ReentrantLock lock = new ReentrantLock();
-    private final KnowledgeListener listener = cs -> inbox.add(() -> process(cs));
+    private final KnowledgeListener listener = cs -> submit(() -> process(cs));
+    private final Optional<java.util.concurrent.Executor> runner;
+    private final java.util.concurrent.atomic.AtomicBoolean scheduled = new java.util.concurrent.atomic.AtomicBoolean();
     private long stampCounter;
     private long seq;
     private long firings;
     private long names;
     private long actionIds;
 
-    private InferenceEngine(KnowledgeBase kb, EngineOptions options, ScriptHost scripts, ActionSink sink, Clock clock) {
+    private InferenceEngine(KnowledgeBase kb, EngineOptions options, ScriptHost scripts, ActionSink sink, Clock clock,
+                            Optional<java.util.concurrent.Executor> runner) {
         this.kb = kb;
+        this.runner = runner;
         this.options = options;
         this.scripts = scripts;
         this.clock = clock;
@@ -75,7 +79,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
         this.compiler = new RuleCompiler(kb);
         this.network = new MatchNetwork(kb, conditions);
         this.actions = new ActionCoordinator(kb, sink, clock, options.actionTimeout(), this::trace, this::assertFeedback);
-        this.backward = new BackwardChainer(kb, options, supports, rules::get, () -> List.copyOf(rules.values()));
+        this.backward = new BackwardChainer(kb, options, supports, () -> List.copyOf(rules.values()));
         this.scriptApi = new ScriptApi(kb, new ScriptApi.Services() {
             @Override public String newName(String prefix) {
                 return InferenceEngine.this.newName(prefix);
@@ -103,6 +107,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
         private ScriptHost scripts = ScriptHost.NONE;
         private ActionSink sink = ActionSink.NONE;
         private Clock clock = Clock.SYSTEM;
+        private Optional<java.util.concurrent.Executor> runner = Optional.empty();
 
         private Builder(KnowledgeBase kb) {
             this.kb = requireNonNull(kb, "kb");
@@ -128,8 +133,17 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
             return this;
         }
 
+        /**
+         * Runs to quiescence by itself on this executor (give it a single-threaded one) whenever a change or an
+         * action report arrives; without it, the owner calls {@link #runToQuiescence()}.
+         */
+        public Builder runOn(java.util.concurrent.Executor executor) {
+            this.runner = Optional.of(requireNonNull(executor, "executor"));
+            return this;
+        }
+
         public InferenceEngine build() {
-            InferenceEngine e = new InferenceEngine(kb, options, scripts, sink, clock);
+            InferenceEngine e = new InferenceEngine(kb, options, scripts, sink, clock, runner);
             e.attach();
             return e;
         }
@@ -221,6 +235,22 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
         } finally {
             lock.unlock();
         }
+    }
+
+    private void submit(Runnable work) {
+        inbox.add(work);
+        runner.ifPresent(ex -> {
+            if (scheduled.compareAndSet(false, true)) {
+                ex.execute(() -> {
+                    scheduled.set(false);
+                    try {
+                        runToQuiescence();
+                    } catch (RuntimeException e) {
+                        LOG.error("Inference run failed: {}", e.getMessage(), e);
+                    }
+                });
+            }
+        });
     }
 
     private void drain() {
@@ -732,15 +762,15 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
     // ---- actions ----
 
     @Override public void actionStarted(String actionId) {
-        inbox.add(() -> actions.started(actionId));
+        submit(() -> actions.started(actionId));
     }
 
     @Override public void actionEnded(String actionId, String result) {
-        inbox.add(() -> actions.ended(actionId, result));
+        submit(() -> actions.ended(actionId, result));
     }
 
     @Override public void actionFailed(String actionId, String reason) {
-        inbox.add(() -> actions.failed(actionId, reason));
+        submit(() -> actions.failed(actionId, reason));
     }
 
     /** Where the action stands, if the engine issued it. */

@@ -45,4 +45,25 @@ class ThreadingTest {
         assertThat(f.instancesOf("Step3")).hasSize(200);
         assertThat(engineThreads).containsOnly(Thread.currentThread());
     }
+
+    @Test
+    void runOn_singleThreadExecutor_reachesQuiescenceByItselfOnThatThread() throws Exception {
+        Fixture f = ForwardChainingTest.chain3();
+        java.util.concurrent.ExecutorService owner = java.util.concurrent.Executors.newSingleThreadExecutor(
+                r -> new Thread(r, "engine-owner"));
+        try {
+            InferenceEngine e = InferenceEngine.builder(f.kb).runOn(owner).build();
+            List<String> threads = new java.util.concurrent.CopyOnWriteArrayList<>();
+            e.addTraceListener(t -> threads.add(Thread.currentThread().getName()));
+            f.assertFact("s1", "Stimulus");
+            long deadline = System.nanoTime() + 10_000_000_000L;
+            while (f.kb.countInstancesOf("Step3") == 0 && System.nanoTime() < deadline) {
+                Thread.sleep(5);
+            }
+            assertThat(f.instancesOf("Step3")).hasSize(1);
+            assertThat(threads).isNotEmpty().containsOnly("engine-owner");
+        } finally {
+            owner.shutdownNow();
+        }
+    }
 }
