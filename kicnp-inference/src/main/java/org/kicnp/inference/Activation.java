@@ -11,6 +11,15 @@ record Activation(Rule rule, Map<String, String> binding, long recency, long seq
         binding = Map.copyOf(binding);
     }
 
+    /** Activations are told apart by their sequence number, which is unique per engine. */
+    @Override public boolean equals(Object o) {
+        return o instanceof Activation a && a.seq == seq;
+    }
+
+    @Override public int hashCode() {
+        return Long.hashCode(seq);
+    }
+
     /** The refraction key: the frame and its binding, in slot order. */
     String key() {
         return key(rule.frame(), rule, binding);

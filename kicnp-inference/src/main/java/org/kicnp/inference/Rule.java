@@ -9,21 +9,32 @@ import java.util.Optional;
  * priority, depth in the hierarchy and number of conditions.
  */
 record Rule(String frame, int priority, int depth, int conditionCount, List<SlotPattern> required,
-            List<SlotPattern> optional) {
+            List<SlotPattern> optional, List<SlotPattern> patterns, List<String> uniqueSlots) {
     Rule {
         required = List.copyOf(required);
         optional = List.copyOf(optional);
+        patterns = List.copyOf(patterns);
+        uniqueSlots = List.copyOf(uniqueSlots);
     }
 
-    List<SlotPattern> patterns() {
-        return java.util.stream.Stream.concat(required.stream(), optional.stream()).toList();
+    /** A rule; {@code patterns} are the required then the optional slots, the unique ones are the required unique. */
+    static Rule of(String frame, int priority, int depth, int conditionCount, List<SlotPattern> required,
+                   List<SlotPattern> optional) {
+        List<SlotPattern> all = java.util.stream.Stream.concat(required.stream(), optional.stream()).toList();
+        List<String> unique = required.stream().filter(SlotPattern::unique).map(SlotPattern::slot).toList();
+        return new Rule(frame, priority, depth, conditionCount, required, optional, all, unique);
+    }
+
+    /** Rules are compared by identity: one compiled rule per frame version. */
+    @Override public boolean equals(Object o) {
+        return this == o;
+    }
+
+    @Override public int hashCode() {
+        return System.identityHashCode(this);
     }
 
     Optional<SlotPattern> pattern(String slot) {
         return patterns().stream().filter(p -> p.slot().equals(slot)).findFirst();
-    }
-
-    List<String> uniqueSlots() {
-        return patterns().stream().filter(SlotPattern::unique).map(SlotPattern::slot).toList();
     }
 }

@@ -55,7 +55,7 @@ final class RuleCompiler {
         if (required.isEmpty()) {
             return Optional.empty();
         }
-        return Optional.of(new Rule(frameName, frame.get().priority(), kb.ancestors(frameName).size(), conditions,
+        return Optional.of(Rule.of(frameName, frame.get().priority(), kb.ancestors(frameName).size(), conditions,
                 required, optional));
     }
 
