@@ -135,7 +135,8 @@ public final class InferCommand implements Callable<Integer> {
         });
         out.println("Issued " + sent.size() + " action" + (sent.size() == 1 ? "" : "s") + ":");
         for (Action a : sent) {
-            out.println("  " + a.id() + " " + a.robot() + " " + a.name() + " " + a.args() + " by " + a.instance());
+            String via = a.target().equals(a.robot()) ? "" : " (via " + a.target() + ")";
+            out.println("  " + a.id() + " " + a.robot() + via + " " + a.name() + " " + a.args() + " by " + a.instance());
         }
     }
 }

@@ -38,7 +38,7 @@ class InferCommandTest {
         Result r = run("infer", TABLE5, "--assert", NEW_USER);
         assertThat(r.code()).as(r.err()).isZero();
         assertThat(r.out()).contains("(AskUserName) mUser=userA mMouth=RobovieMouth")
-                .contains("RobovieMouth say [How are you! I have never seen you before. What is your name?]");
+                .contains("Robovie (via RobovieMouth) say [How are you! I have never seen you before. What is your name?]");
     }
 
     @Test

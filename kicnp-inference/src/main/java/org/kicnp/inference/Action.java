@@ -5,15 +5,17 @@ import static java.util.Objects.requireNonNull;
 import java.util.List;
 
 /**
- * A command for a robot, issued by a firing ({@code sendmsg} or {@code command} in a script): its id, the robot or
- * target, the action name and arguments, the behavior frame and instance that issued it, and the start time it is
- * released with (one start time for all actions of a synchronization group; 0 until released).
+ * A command for a robot, issued by a firing ({@code sendmsg} or {@code command} in a script): its id, the robot that
+ * performs it, the target frame the script named (a robot, or a part such as a Mouth whose {@code robot} slot names
+ * the robot), the action name and arguments, the behavior frame and instance that issued it, the time allowed for it
+ * (ms), and the start time it is released with (one start time for a synchronization group; 0 until released).
  */
-public record Action(String id, String robot, String name, List<String> args, String frame, String instance,
-                     long startAt) {
+public record Action(String id, String robot, String target, String name, List<String> args, String frame,
+                     String instance, long timeoutMillis, long startAt) {
     public Action {
         requireNonNull(id, "id");
         requireNonNull(robot, "robot");
+        requireNonNull(target, "target");
         requireNonNull(name, "name");
         args = List.copyOf(args);
         requireNonNull(frame, "frame");
@@ -21,7 +23,7 @@ public record Action(String id, String robot, String name, List<String> args, St
     }
 
     Action releasedAt(long time) {
-        return new Action(id, robot, name, args, frame, instance, time);
+        return new Action(id, robot, target, name, args, frame, instance, timeoutMillis, time);
     }
 
     /** Life cycle of an action. */

@@ -119,7 +119,7 @@ final class ActionCoordinator {
         long now = clock.millis();
         for (Tracked t : List.copyOf(actions.values())) {
             if ((t.status == Action.Status.SENT || t.status == Action.Status.STARTED) && now > t.deadline) {
-                finish(t, Action.Status.TIMED_OUT, "no end reported within " + timeout.toMillis() + " ms");
+                finish(t, Action.Status.TIMED_OUT, "no end reported within " + limit(t) + " ms");
             }
         }
     }
@@ -158,9 +158,13 @@ final class ActionCoordinator {
 
     private void send(Tracked t, long startAt) {
         t.action = t.action.releasedAt(startAt);
-        t.deadline = clock.millis() + timeout.toMillis();
+        t.deadline = clock.millis() + limit(t);
         changed(t, Action.Status.SENT, "");
         sink.send(t.action);
+    }
+
+    private long limit(Tracked t) {
+        return t.action.timeoutMillis() > 0 ? t.action.timeoutMillis() : timeout.toMillis();
     }
 
     private boolean restrictedByOther(Tracked t) {

@@ -72,8 +72,7 @@ final class ScriptCalls {
                 switch (e) {
                     case Effect.Create c -> create(c, supporter);
                     case Effect.Destroy x -> target.destroy(x.name(), "destroyed by a script of frame '" + frame + "'");
-                    case Effect.Issue i -> actions.issue(new Action(i.id(), i.robot(), i.action(), i.args(), frame,
-                            instance, 0));
+                    case Effect.Issue i -> actions.issue(action(i, frame, instance));
                     case Effect.Learn l -> kb.put(l.frame());
                 }
             } catch (KnowledgeException | InferenceException ex) {
@@ -81,6 +80,19 @@ final class ScriptCalls {
                 trace(new TraceEvent.ScriptFailed(frame, "effect", instance, ex.getMessage()));
             }
         }
+    }
+
+    /**
+     * The action an issue effect stands for: the robot is the target's {@code robot} slot when it has one (a Mouth
+     * names its robot), else the target itself; the timeout is the behavior frame's {@code timeout} slot (ms) when
+     * it has one, else the engine's default (0 here).
+     */
+    private Action action(Effect.Issue i, String frame, String instance) {
+        String robot = kb.contains(i.robot()) ? kb.value(i.robot(), "robot").map(Value::text).orElse(i.robot())
+                : i.robot();
+        long timeout = kb.contains(frame) ? kb.value(frame, "timeout")
+                .map(v -> v instanceof Value.Int n ? n.value() : 0L).orElse(0L) : 0L;
+        return new Action(i.id(), robot, i.robot(), i.action(), i.args(), frame, instance, timeout, 0);
     }
 
     private void create(Effect.Create c, Optional<String> supporter) {

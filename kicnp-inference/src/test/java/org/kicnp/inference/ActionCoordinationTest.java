@@ -87,6 +87,36 @@ class ActionCoordinationTest {
     }
 
     @Test
+    void timeoutSlot_onBehaviorFrame_overridesTheDefaultTimeout() {
+        Fixture f = twoFrames(null);
+        f.kb.replace(f.kb.require("A").withSlot(Fixture.num("timeout", 1_000)));
+        InferenceEngine e = f.engine();
+        f.assertFact("go", "Go");
+        e.runToQuiescence();
+        f.now += 1_500;
+        e.runToQuiescence();
+        assertThat(e.actionStatus(f.sent.get(0).id())).contains(Action.Status.TIMED_OUT);
+        assertThat(e.actionStatus(f.sent.get(1).id())).contains(Action.Status.SENT);
+        assertThat(f.traced(TraceEvent.ActionChanged.class)).anySatisfy(c ->
+                assertThat(c.detail()).isEqualTo("no end reported within 1000 ms"));
+    }
+
+    @Test
+    void sendmsgToAPart_isPerformedByTheRobotItsRobotSlotNames() {
+        Fixture f = twoFrames(null);
+        f.cls("Mouth", null);
+        f.assertFact("robovie", "Go");
+        f.assertFact("mouth1", "Mouth", "robot", "Robovie");
+        f.scripts.define("cmd-a", g -> Fixture.call(g, "sendmsg", "mouth1", "hello"));
+        InferenceEngine e = f.engine();
+        e.runToQuiescence();
+        assertThat(f.sent).filteredOn(a -> a.name().equals("say")).isNotEmpty().allSatisfy(a -> {
+            assertThat(a.robot()).isEqualTo("Robovie");
+            assertThat(a.target()).isEqualTo("mouth1");
+        });
+    }
+
+    @Test
     void synchronization_releasesLinkedActionsTogetherWithOneStartTime() {
         Fixture f = twoFrames(Relation.Coordination.SYNCHRONIZATION);
         InferenceEngine e = f.engine();

@@ -70,7 +70,8 @@ class ScriptIntegrationTest {
         assertThat(kb.instancesOf("AskUserName")).filteredOn(f -> kb.value(f.name(), "mMouth")
                 .equals(java.util.Optional.of(Value.ref("RobovieMouth")))).hasSize(1);
         assertThat(sent).anySatisfy(a -> {
-            assertThat(a.robot()).isEqualTo("RobovieMouth");
+            assertThat(a.target()).isEqualTo("RobovieMouth");
+            assertThat(a.robot()).isEqualTo("Robovie");
             assertThat(a.name()).isEqualTo("say");
             assertThat(a.args()).containsExactly("How are you! I have never seen you before. What is your name?");
         });
