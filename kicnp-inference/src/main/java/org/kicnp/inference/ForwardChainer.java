@@ -109,6 +109,10 @@ final class ForwardChainer {
                             factRemoved(r.before_());
                         }
                         classChanged(r.name());
+                        if (r.frame().isClass() && r.before_().isClass() && (!r.before_().parent()
+                                .equals(r.frame().parent()) || !r.before_().slots().equals(r.frame().slots()))) {
+                            kb.instancesOf(r.name()).forEach(i -> rematch(i.name(), "class '" + r.name() + "' changed"));
+                        }
                     }
                 }
                 case FrameEvent.Removed rm -> {
@@ -166,6 +170,18 @@ final class ForwardChainer {
         if (!reactive || !kb.contains(name)) {
             return;
         }
+        rematch(name, "'" + name + "' changed");
+    }
+
+    /**
+     * Matches an instance again after it (or its class) changed: it leaves every memory, derived instances that rest
+     * on it are re-checked (and retracted when a condition no longer holds), and it enters again as a recent fact.
+     */
+    private void rematch(String name, String why) {
+        Optional<Frame> now = kb.frame(name);
+        if (now.isEmpty() || !now.get().isInstance()) {
+            return;
+        }
         trace(new TraceEvent.FactChanged(name));
         network.retract(name);
         agenda.withdrawFact(name);
@@ -176,11 +192,11 @@ final class ForwardChainer {
                         Set<String> all = new LinkedHashSet<>(List.of(dep));
                         all.addAll(supports.closure(dep));
                         retract(all, "the condition of slot '" + slot + "' of '" + d.frame()
-                                + "' no longer holds after '" + name + "' changed");
+                                + "' no longer holds after " + why);
                     }));
         }
         stamps.put(name, ++stampCounter);
-        network.insert(name, after.parent().orElseThrow()).forEach(this::consider);
+        network.insert(name, now.get().parent().orElseThrow()).forEach(this::consider);
     }
 
     private static Set<String> changedSlots(Frame before, Frame after) {

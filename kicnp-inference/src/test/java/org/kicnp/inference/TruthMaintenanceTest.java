@@ -127,6 +127,36 @@ class TruthMaintenanceTest {
     }
 
     @Test
+    void classEdit_whenInheritedDefaultChanges_rechecksItsInstances() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("Order").slot(Slot.builder("drink", DataType.STRING).defaultValue(Value.of("tea"))
+                .build()).build());
+        f.kb.add(Frame.classFrame("ServeTea").slot(Fixture.inst("mOrder", "Order", ".drink == \"tea\"")).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("o1", "Order");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("ServeTea")).hasSize(1);
+        f.kb.replace(f.kb.require("Order").withSlot(Slot.builder("drink", DataType.STRING)
+                .defaultValue(Value.of("coffee")).build()));
+        e.runToQuiescence();
+        assertThat(f.instancesOf("ServeTea")).isEmpty();
+    }
+
+    @Test
+    void classEdit_whenClassMovesUnderKnownUser_itsInstancesAreGreeted() {
+        Fixture f = Fixture.paper();
+        f.kb.add(Frame.classFrame("Taro").parent("User").build());
+        InferenceEngine e = f.engine();
+        f.assertFact("mouth1", "Mouth");
+        f.assertFact("face1", "Taro");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Greeting")).isEmpty();
+        f.kb.replace(f.kb.require("Taro").toBuilder().parent("KnownUser").build());
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Greeting")).hasSize(1);
+    }
+
+    @Test
     void hotEdit_whenNewBehaviorFrameIsAdded_matchesInstancesAlreadyThere() {
         Fixture f = Fixture.paper();
         InferenceEngine e = f.engine();
