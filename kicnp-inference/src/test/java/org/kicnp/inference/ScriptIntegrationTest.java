@@ -158,6 +158,18 @@ class ScriptIntegrationTest {
     }
 
     @Test
+    void syntaxError_failsTheFiringWithAMessageNamingFrameAndSlot() {
+        KnowledgeBase kb = small("sendmsg(s.mMouth, 'unclosed);", null);
+        InferenceEngine e = engine(kb);
+        fact(kb, "u1", "User");
+        e.runToQuiescence();
+        assertThat(kb.instancesOf("Talk")).isEmpty();
+        assertThat(trace).filteredOn(t -> t instanceof TraceEvent.ScriptFailed).singleElement()
+                .satisfies(t -> assertThat(((TraceEvent.ScriptFailed) t).message())
+                        .contains("'onInstantiate'").contains("'Talk'"));
+    }
+
+    @Test
     void demons_onNeededComputesMissingValue_onAddedAndOnRemovedRunWhenSlotChanges() {
         KnowledgeBase kb = small("1", null);
         kb.replace(kb.require("User").withSlot(Slot.builder("nick", DataType.STRING)
