@@ -21,8 +21,10 @@ public final class GraalScriptHost implements ScriptHost {
         this.runtime = requireNonNull(runtime, "runtime");
     }
 
+    /** Runs the script; a result of {@code undefined} or {@code null} comes back as Java {@code null}. */
     @Override public Object run(String frame, String slot, String source, Map<String, Object> globals) {
-        return runtime.run(compile(frame, slot, source), adapt(globals));
+        Object result = runtime.run(compile(frame, slot, source), adapt(globals));
+        return result == ScriptRuntime.UNDEFINED ? null : result;
     }
 
     @Override public boolean test(String frame, String slot, String source, Map<String, Object> globals) {

@@ -137,9 +137,11 @@ final class ScriptCalls {
         return Optional.empty();
     }
 
-
     /** Runs the onAdded / onRemoved demons of the slots an instance change touched. */
     void runDemons(Frame before, Frame after, Set<String> changed) {
+        if (!kb.contains(after.name())) {
+            return;
+        }
         for (String slot : changed) {
             Optional<Value> was = before.ownSlot(slot).flatMap(Slot::effectiveValue);
             Optional<Value> now = after.ownSlot(slot).flatMap(Slot::effectiveValue);
@@ -178,7 +180,6 @@ final class ScriptCalls {
         apply(effects, e.get().declaredBy(), instance, Optional.empty());
         return out == null ? Optional.empty() : Optional.of(ScriptApi.toValue(out, e.get().slot().type()));
     }
-
 
     private void trace(TraceEvent e) {
         tracer.accept(e);

@@ -20,7 +20,7 @@ public interface ScriptHost {
         }
     };
 
-    /** Runs a script; returns its result as plain Java (null for none is not passed on by the engine). */
+    /** Runs a script; returns its result as plain Java, or null when it has none. */
     Object run(String frame, String slot, String source, Map<String, Object> globals);
 
     /** Evaluates a script condition to true or false. */

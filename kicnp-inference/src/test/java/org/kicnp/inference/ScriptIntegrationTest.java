@@ -175,11 +175,14 @@ class ScriptIntegrationTest {
         kb.replace(kb.require("User").withSlot(Slot.builder("nick", DataType.STRING)
                 .onNeeded("'nick-' + s.name").onAdded("sendmsg('log', 'added ' + s.nick)")
                 .onRemoved("sendmsg('log', 'removed')").reactive(false).build()));
+        kb.replace(kb.require("User").withSlot(Slot.builder("mood", DataType.STRING).onNeeded("void 0").build()));
         InferenceEngine e = engine(kb);
         fact(kb, "u1", "User", Slot.ofValue("name", DataType.STRING, Value.of("Ann")));
         e.runToQuiescence();
         assertThat(e.read("u1", "nick")).contains(Value.of("nick-Ann"));
         assertThat(e.read("u1", "name")).contains(Value.of("Ann"));
+        assertThat(e.read("u1", "age")).isEmpty();
+        assertThat(e.read("u1", "mood")).isEmpty();
         int fired = trace.stream().filter(t -> t instanceof TraceEvent.Fired).toList().size();
 
         kb.replace(kb.require("u1").withSlot(Slot.ofValue("nick", DataType.STRING, Value.of("A"))));
