@@ -61,6 +61,13 @@ class InferCommandTest {
     }
 
     @Test
+    void infer_help_describesTheOptions() {
+        Result r = run("infer", "--help");
+        assertThat(r.code()).isZero();
+        assertThat(r.out()).contains("--assert").contains("--trace").contains("--ask");
+    }
+
+    @Test
     void infer_whenKnowledgeBaseIsMissing_failsNamingThePath() {
         Result r = run("infer", "no-such-dir");
         assertThat(r.code()).isEqualTo(1);

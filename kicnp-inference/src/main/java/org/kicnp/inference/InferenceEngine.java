@@ -214,6 +214,14 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
         }
     }
 
+    /**
+     * Lets time-based work happen: on an engine that {@link Builder#runOn runs by itself}, schedules a run, which
+     * times out overdue actions; call it from a timer. On a hand-driven engine, {@link #runToQuiescence()} does this.
+     */
+    public void tick() {
+        submit(() -> { });
+    }
+
     /** Activations waiting on the agenda (after the queued changes are processed). */
     public int agendaSize() {
         lock.lock();

@@ -66,4 +66,36 @@ class ThreadingTest {
             owner.shutdownNow();
         }
     }
+
+    @Test
+    void tick_onSelfRunningEngine_timesOutOverdueActions() throws Exception {
+        Fixture f = new Fixture();
+        f.cls("Go", null);
+        f.kb.add(Frame.classFrame("A").slot(Fixture.inst("mGo", "Go")).slot(Fixture.str("onInstantiate", "cmd"))
+                .build());
+        f.scripts.define("cmd", g -> Fixture.call(g, "command", "PINO", "walk"));
+        java.util.concurrent.atomic.AtomicLong now = new java.util.concurrent.atomic.AtomicLong(1_000);
+        java.util.concurrent.ExecutorService owner = java.util.concurrent.Executors.newSingleThreadExecutor();
+        try {
+            InferenceEngine e = InferenceEngine.builder(f.kb).scripts(f.scripts).clock(now::get).runOn(owner)
+                    .options(EngineOptions.defaults().withActionTimeout(java.time.Duration.ofSeconds(1))).build();
+            f.assertFact("go", "Go");
+            await(() -> e.actions().size() == 1);
+            String id = e.actions().getFirst().id();
+            now.addAndGet(5_000);
+            assertThat(e.actionStatus(id)).contains(Action.Status.SENT);
+            e.tick();
+            await(() -> e.actionStatus(id).equals(java.util.Optional.of(Action.Status.TIMED_OUT)));
+            assertThat(e.actionStatus(id)).contains(Action.Status.TIMED_OUT);
+        } finally {
+            owner.shutdownNow();
+        }
+    }
+
+    private static void await(java.util.function.BooleanSupplier condition) throws InterruptedException {
+        long deadline = System.nanoTime() + 10_000_000_000L;
+        while (!condition.getAsBoolean() && System.nanoTime() < deadline) {
+            Thread.sleep(5);
+        }
+    }
 }
