@@ -99,6 +99,22 @@ final class ActionCoordinator {
         syncBuffer.clear();
     }
 
+    /** Fails every action of the instance that is still held (not yet sent), with the reason. */
+    void withdraw(String instance, String reason) {
+        for (Tracked t : List.copyOf(held)) {
+            if (t.action.instance().equals(instance)) {
+                held.remove(t);
+                finish(t, Action.Status.FAILED, reason);
+            }
+        }
+        for (Tracked t : List.copyOf(syncBuffer)) {
+            if (t.action.instance().equals(instance)) {
+                syncBuffer.remove(t);
+                finish(t, Action.Status.FAILED, reason);
+            }
+        }
+    }
+
     void started(String id) {
         Tracked t = known(id);
         if (t.status == Action.Status.SENT) {

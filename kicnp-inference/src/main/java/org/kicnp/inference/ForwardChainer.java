@@ -147,6 +147,7 @@ final class ForwardChainer {
         Set<String> orphans = supports.closure(name);
         Optional<Derivation> d = supports.release(name);
         if (d.isPresent()) {
+            scripts.retracted(name);
             boolean failed = supports.takeFailed(name);
             if (!failed) {
                 kb.frame(d.get().frame()).flatMap(c -> kb.value(c.name(), "onDestroy")).ifPresent(src ->

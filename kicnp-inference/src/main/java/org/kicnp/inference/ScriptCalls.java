@@ -73,7 +73,7 @@ final class ScriptCalls {
                     case Effect.Create c -> create(c, supporter);
                     case Effect.Destroy x -> target.destroy(x.name(), "destroyed by a script of frame '" + frame + "'");
                     case Effect.Issue i -> actions.issue(action(i, frame, instance));
-                    case Effect.Learn l -> kb.put(l.frame());
+                    case Effect.Learn l -> learn(l.frame());
                 }
             } catch (KnowledgeException | InferenceException ex) {
                 LOG.warn("An effect of a script of frame '{}' failed: {}", frame, ex.getMessage());
@@ -93,6 +93,20 @@ final class ScriptCalls {
         long timeout = kb.contains(frame) ? kb.value(frame, "timeout")
                 .map(v -> v instanceof Value.Int n ? n.value() : 0L).orElse(0L) : 0L;
         return new Action(i.id(), robot, i.robot(), i.action(), i.args(), frame, instance, timeout, 0);
+    }
+
+    /** Adds or updates a learned frame; a declared or runtime frame of that name is never overwritten. */
+    private void learn(Frame f) {
+        Optional<Frame> existing = kb.frame(f.name());
+        if (existing.isPresent() && !existing.get().learned()) {
+            throw new InferenceException("learn() cannot replace frame '" + f.name() + "': it was not learned.");
+        }
+        kb.put(f);
+    }
+
+    /** A derived instance was retracted: actions it issued that are still held will not be sent. */
+    void retracted(String instance) {
+        actions.withdraw(instance, "the instance '" + instance + "' that issued it was retracted");
     }
 
     private void create(Effect.Create c, Optional<String> supporter) {

@@ -71,6 +71,20 @@ class ActionCoordinationTest {
     }
 
     @Test
+    void succession_whenFollowerIsRetractedWhileHeld_itsActionIsFailedNotSent() {
+        Fixture f = twoFrames(Relation.Coordination.SUCCESSION);
+        InferenceEngine e = f.engine();
+        f.assertFact("go", "Go");
+        e.runToQuiescence();
+        String follower = e.actions().get(1).id();
+        e.destroy(e.actions().get(1).instance());
+        e.actionEnded(f.sent.getFirst().id(), "ok");
+        e.runToQuiescence();
+        assertThat(f.sent).hasSize(1);
+        assertThat(e.actionStatus(follower)).contains(Action.Status.FAILED);
+    }
+
+    @Test
     void timeout_whenNoEndIsReported_timesOutAndFailsTheFollower() {
         Fixture f = twoFrames(Relation.Coordination.SUCCESSION);
         InferenceEngine e = f.engine(EngineOptions.defaults().withActionTimeout(Duration.ofSeconds(5)));

@@ -141,6 +141,18 @@ class ScriptIntegrationTest {
     }
 
     @Test
+    void learn_neverOverwritesADeclaredFrame() {
+        KnowledgeBase kb = small("learn('Mouth', 'KnownUser', {})", null);
+        InferenceEngine e = engine(kb);
+        fact(kb, "u1", "User");
+        e.runToQuiescence();
+        assertThat(kb.require("Mouth").parent()).isEmpty();
+        assertThat(trace).filteredOn(t -> t instanceof TraceEvent.ScriptFailed).singleElement()
+                .satisfies(t -> assertThat(((TraceEvent.ScriptFailed) t).message())
+                        .isEqualTo("learn() cannot replace frame 'Mouth': it was not learned."));
+    }
+
+    @Test
     void endlessLoop_isStoppedByTheTimeBound_andTheEngineCarriesOn() {
         KnowledgeBase kb = small("sendmsg(s.mMouth, 'before'); while (true) {}", null);
         InferenceEngine e = engine(kb);
