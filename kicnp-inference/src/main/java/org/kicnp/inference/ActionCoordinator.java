@@ -17,7 +17,8 @@ import org.kicnp.core.SemanticLink;
  * Follows every issued action through its life cycle and turns the coordination links of behavior frames into
  * guarantees: succession (wait for the predecessor frames' unfinished actions to end; fail if one fails),
  * synchronization (actions of linked frames are released together at quiescence with one start time) and restriction
- * (while an action of a frame with a restriction link out of it runs, other robots' actions are held, in order). Owned by the engine thread.
+ * (while an action of a frame with a restriction link out of it runs, other robots' actions are held, in order).
+ * Owned by the engine thread.
  */
 final class ActionCoordinator {
     private final KnowledgeBase kb;

@@ -2,6 +2,7 @@ package org.kicnp.inference;
 
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -76,7 +77,7 @@ final class BackwardChainer {
         if (depth < options.maxProofDepth()) {
             for (Rule r : rules.get()) {
                 if (!using.contains(r.frame()) && kb.isA(r.frame(), cls)) {
-                    Set<String> next = new java.util.HashSet<>(using);
+                    Set<String> next = new HashSet<>(using);
                     next.add(r.frame());
                     out.addAll(derive(r, Map.of(), depth + 1, next, hypo, conds));
                 }
@@ -111,7 +112,7 @@ final class BackwardChainer {
         if (k == options.size()) {
             Map<String, String> binding = new LinkedHashMap<>();
             chosen.forEach((s, p) -> binding.put(s, name(p, hypo)));
-            if (new java.util.HashSet<>(binding.values()).size() < binding.size() || exists(r, binding)) {
+            if (new HashSet<>(binding.values()).size() < binding.size() || exists(r, binding)) {
                 return;
             }
             List<String> assumptions = new ArrayList<>();

@@ -2,6 +2,7 @@ package org.kicnp.inference;
 
 import static java.util.Objects.requireNonNull;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -24,7 +25,7 @@ public record Derivation(String instance, String frame, Map<String, String> bind
 
     /** The instances this one rests on: its binding, and the creating instance for a scripted creation. */
     List<String> supports() {
-        List<String> out = new java.util.ArrayList<>(binding.values());
+        List<String> out = new ArrayList<>(binding.values());
         createdBy.ifPresent(out::add);
         return out;
     }

@@ -1,6 +1,8 @@
 package org.kicnp.inference;
 
+import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Set;
 
 /** The answer to "why does this instance exist?": a tree back to asserted instances (the stimuli). */
 public sealed interface Explanation {
@@ -22,12 +24,12 @@ public sealed interface Explanation {
 
     /** The stimuli this explanation rests on, in order, without repeats. */
     default List<String> stimuli() {
-        java.util.LinkedHashSet<String> out = new java.util.LinkedHashSet<>();
+        LinkedHashSet<String> out = new LinkedHashSet<>();
         collect(this, out);
         return List.copyOf(out);
     }
 
-    private static void collect(Explanation e, java.util.Set<String> out) {
+    private static void collect(Explanation e, Set<String> out) {
         switch (e) {
             case Asserted a -> out.add(a.instance());
             case Derived d -> d.supports().forEach(s -> collect(s, out));

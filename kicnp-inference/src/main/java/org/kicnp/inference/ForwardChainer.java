@@ -1,6 +1,8 @@
 package org.kicnp.inference;
 
 import java.util.ArrayList;
+import java.util.Collection;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
@@ -281,7 +283,7 @@ final class ForwardChainer {
         r.required().forEach(p -> full.put(p.slot(), a.binding().get(p.slot())));
         fillOptional(r, full);
         String name = newName(r.frame());
-        String trigger = full.values().stream().max(java.util.Comparator.comparingLong(f -> stamps.getOrDefault(f, 0L)))
+        String trigger = full.values().stream().max(Comparator.comparingLong(f -> stamps.getOrDefault(f, 0L)))
                 .orElseThrow();
         Derivation d = new Derivation(name, r.frame(), full, checked(r, full), ++firings, trigger, Optional.empty());
         supports.markFired(a.key(), a.binding().values());
@@ -401,7 +403,7 @@ final class ForwardChainer {
         removeQuietly(names, reason);
     }
 
-    private void removeQuietly(java.util.Collection<String> names, String reason) {
+    private void removeQuietly(Collection<String> names, String reason) {
         List<String> live = names.stream().filter(kb::contains).toList();
         if (live.isEmpty()) {
             return;

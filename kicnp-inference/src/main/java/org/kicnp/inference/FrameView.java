@@ -2,6 +2,7 @@ package org.kicnp.inference;
 
 import java.util.AbstractMap;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -53,7 +54,7 @@ final class FrameView extends AbstractMap<String, Object> {
                     e.slot().effectiveValue().ifPresent(v -> entries.put(e.slot().name(), toJava(v)));
                 }
             });
-            entries = java.util.Collections.unmodifiableMap(entries);
+            entries = Collections.unmodifiableMap(entries);
         }
         return entries.entrySet();
     }

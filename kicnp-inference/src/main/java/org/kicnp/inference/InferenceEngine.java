@@ -4,9 +4,11 @@ import static java.util.Objects.requireNonNull;
 
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
@@ -288,7 +290,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
         lock.lock();
         try {
             drain();
-            return why(instance, new java.util.HashSet<>());
+            return why(instance, new HashSet<>());
         } finally {
             lock.unlock();
         }
@@ -391,7 +393,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
         Action a = t.action;
         Frame f = Frame.instance(FEEDBACK_CLASS + "-" + a.id(), FEEDBACK_CLASS).provenance(Provenance.RUNTIME)
                 .slot(str("action", a.id())).slot(str("robot", a.robot())).slot(str("name", a.name()))
-                .slot(str("status", t.status.name().toLowerCase(java.util.Locale.ROOT))).slot(str("result", t.detail))
+                .slot(str("status", t.status.name().toLowerCase(Locale.ROOT))).slot(str("result", t.detail))
                 .slot(str("frame", a.frame())).slot(str("issuedBy", a.instance())).build();
         try {
             kb.put(f);

@@ -2,6 +2,7 @@ package org.kicnp.inference;
 
 import java.util.List;
 import java.util.Optional;
+import java.util.stream.Stream;
 
 /**
  * A behavior frame compiled for matching: its required instance slots (which must all be bound to fire), its
@@ -20,7 +21,7 @@ record Rule(String frame, int priority, int depth, int conditionCount, List<Slot
     /** A rule; {@code patterns} are the required then the optional slots, the unique ones are the required unique. */
     static Rule of(String frame, int priority, int depth, int conditionCount, List<SlotPattern> required,
                    List<SlotPattern> optional) {
-        List<SlotPattern> all = java.util.stream.Stream.concat(required.stream(), optional.stream()).toList();
+        List<SlotPattern> all = Stream.concat(required.stream(), optional.stream()).toList();
         List<String> unique = required.stream().filter(SlotPattern::unique).map(SlotPattern::slot).toList();
         return new Rule(frame, priority, depth, conditionCount, required, optional, all, unique);
     }

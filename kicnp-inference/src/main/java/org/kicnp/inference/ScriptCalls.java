@@ -1,6 +1,7 @@
 package org.kicnp.inference;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -127,7 +128,7 @@ final class ScriptCalls {
         Map<String, Object> m = new LinkedHashMap<>();
         m.put(FrameView.NAME, f.name());
         f.slots().forEach(s -> s.effectiveValue().ifPresent(v -> m.put(s.name(), v.text())));
-        return java.util.Collections.unmodifiableMap(m);
+        return Collections.unmodifiableMap(m);
     }
 
     /** Why a script condition of the binding fails, if one does: false, or it threw. */
@@ -138,7 +139,7 @@ final class ScriptCalls {
                 binding.forEach((slot, fact) -> view.put(slot, new FrameView(kb, fact, 0)));
                 try {
                     Map<String, Object> g = new LinkedHashMap<>();
-                    g.put("s", java.util.Collections.unmodifiableMap(view));
+                    g.put("s", Collections.unmodifiableMap(view));
                     if (!host.test(r.frame(), p.slot(), s.source(), g)) {
                         return Optional.of("the script condition of slot '" + p.slot() + "' is false");
                     }
