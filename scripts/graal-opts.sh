@@ -13,8 +13,9 @@
 #                                            runtime is a named module that may open JVMCI
 # Application classes stay on the class path; copies of the same jars there are harmless (named modules win).
 #
-# Usage:  java $(graal_opts kicnp-cli/target) -cp "$CP" org.kicnp.cli.Main ...
-# (word splitting is intended; the paths must not contain spaces).
+# It prints one flag per line, so paths may contain spaces when read into an array:
+#   mapfile -t opts < <(graal_opts kicnp-cli/target); java "${opts[@]}" -cp "$CP" org.kicnp.cli.Main ...
+# ($(graal_opts ...) unquoted also works when the paths have no spaces).
 
 graal_opts() {
     local target="${1:?usage: graal_opts <module-target-dir>}"
@@ -22,11 +23,11 @@ graal_opts() {
         return 0
     fi
     local compiler="$target/graal/compiler/compiler.jar"
-    if [[ ! -f "$compiler" ]]; then
+    if [[ ! -f "$compiler" || ! -d "$target/graal/modules" ]]; then
         return 0
     fi
     local modules
-    modules=$(find "$target/graal/modules" -maxdepth 1 -name '*.jar' 2>/dev/null | sort | paste -sd: -)
+    modules=$( (find "$target/graal/modules" -maxdepth 1 -name '*.jar' | sort | paste -sd: -) 2>/dev/null || true)
     if [[ "$modules" != */polyglot.jar* || "$modules" != */truffle-runtime.jar* || "$modules" != */truffle-compiler.jar* ]]; then
         return 0
     fi
@@ -38,7 +39,6 @@ graal_opts() {
     if ! grep -q 'jdk\.internal\.vm\.ci' "$home/release" 2>/dev/null; then
         return 0
     fi
-    printf '%s\n' "-XX:+UnlockExperimentalVMOptions -XX:+EnableJVMCI --upgrade-module-path=$compiler" \
-        "--module-path=$modules --add-modules=ALL-MODULE-PATH --enable-native-access=ALL-UNNAMED,org.graalvm.truffle" \
-        | paste -sd' ' -
+    printf '%s\n' -XX:+UnlockExperimentalVMOptions -XX:+EnableJVMCI "--upgrade-module-path=$compiler" \
+        "--module-path=$modules" --add-modules=ALL-MODULE-PATH --enable-native-access=ALL-UNNAMED,org.graalvm.truffle
 }
