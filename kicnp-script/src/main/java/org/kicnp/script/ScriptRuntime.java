@@ -62,7 +62,7 @@ public final class ScriptRuntime implements AutoCloseable {
                 .build();
         this.pool = new ContextPool(new Sandbox(engine, config, new ScriptOutput(false), new ScriptOutput(true)),
                 config.maxIdleContexts());
-        this.watchdog = new Watchdog();
+        this.watchdog = new Watchdog(Watchdog.tickFor(config.timeLimit()));
         this.cache = Collections.synchronizedMap(new LinkedHashMap<>(64, 0.75f, true) {
             @Override protected boolean removeEldestEntry(Map.Entry<Key, CompiledScript> eldest) {
                 return size() > CACHE_SIZE;
@@ -74,7 +74,22 @@ public final class ScriptRuntime implements AutoCloseable {
     public static ScriptRuntime create(ScriptConfig config) {
         ScriptRuntime runtime = new ScriptRuntime(requireNonNull(config, "config"));
         runtime.warmUp();
+        LOG.debug("Script runtime started on {} ({}).", runtime.engine.getImplementationName(),
+                runtime.compilerEnabled() ? "Graal compiler enabled" : "interpreter only");
         return runtime;
+    }
+
+    /**
+     * Whether scripts are compiled to machine code by the Graal compiler ({@code false} when the JVM was started
+     * without it and GraalJS only interprets; docs/scripting.md says how to enable it).
+     */
+    public boolean compilerEnabled() {
+        return !"Interpreted".equalsIgnoreCase(engine.getImplementationName());
+    }
+
+    /** The polyglot engine's implementation name, for diagnostics ({@code Interpreted} without the compiler). */
+    public String engineName() {
+        return engine.getImplementationName();
     }
 
     /** The configuration this runtime enforces. */

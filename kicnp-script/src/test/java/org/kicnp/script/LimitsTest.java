@@ -5,6 +5,8 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.time.Duration;
 import java.util.Map;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
 
 import org.junit.jupiter.api.Test;
 
@@ -47,6 +49,32 @@ class LimitsTest {
             for (int i = 0; i < 20; i++) {
                 assertThat(runtime.run(fine, Map.of())).isEqualTo(4950L);
             }
+        }
+    }
+
+    @Test
+    void run_whenOneThreadLoopsForever_otherThreadsKeepRunning() throws Exception {
+        try (ScriptRuntime runtime = ScriptRuntime.create(ScriptConfig.defaults()
+                .withTimeLimit(Duration.ofMillis(500)).withStatementLimit(Long.MAX_VALUE))) {
+            CompiledScript loop = runtime.compile(LOOP, "while (true) {}");
+            CompiledScript quick = runtime.compile(LOOP, "s.a + s.b");
+            CompletableFuture<Throwable> spinner = CompletableFuture.supplyAsync(() -> {
+                try {
+                    runtime.run(loop, Map.of());
+                    return null;
+                } catch (ScriptTimeoutException e) {
+                    return e;
+                }
+            });
+
+            int runs = 0;
+            while (!spinner.isDone()) {
+                assertThat(runtime.run(quick, Map.of("s", Map.of("a", runs, "b", 1)))).isEqualTo(runs + 1L);
+                runs++;
+            }
+
+            assertThat(spinner.get(5, TimeUnit.SECONDS)).isInstanceOf(ScriptTimeoutException.class);
+            assertThat(runs).isGreaterThan(10);
         }
     }
 }

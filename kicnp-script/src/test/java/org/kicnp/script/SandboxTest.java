@@ -11,7 +11,7 @@ import org.graalvm.polyglot.HostAccess;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.ValueSource;
+import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.api.Test;
 
 class SandboxTest {
@@ -30,38 +30,40 @@ class SandboxTest {
         runtime.close();
     }
 
-    @ParameterizedTest
-    @ValueSource(strings = {
-        "Java.type('java.io.File')",
-        "Java.type('java.lang.System').exit(3)",
-        "Java.type('java.lang.Runtime').getRuntime().exec('true')",
-        "Java.type('java.lang.Thread')",
-        "Java.type('java.lang.Class').forName('java.io.File')",
-        "java.lang.System.exit(3)",
-        "Packages.java.lang.System.exit(3)",
-        "load('/etc/passwd')",
-        "require('fs')",
-        "Polyglot.eval('python', '1')",
-        "Polyglot.eval('js', '1')",
-        "Polyglot.import('x')",
-        "process.env.HOME",
-        "read('/etc/passwd')",
-        "readFully('/etc/passwd')",
-        "readline()",
-        "quit(3)",
-        "exit(3)",
-        "new Worker('x.js')",
-        "importScripts('/etc/passwd')",
-        "Java.type('java.lang.Math').class.forName('java.io.File')",
-        "Java.type('java.lang.Math').getClass()",
-        "Java.type('java.lang.Math').class.getClassLoader()",
-    })
-    void run_whenScriptReachesOutsideTheSandbox_failsAndRuntimeKeepsWorking(String attempt) {
+    @ParameterizedTest(name = "{0}")
+    @CsvSource(delimiter = '|', quoteCharacter = '"', textBlock = """
+        Java.type('java.io.File')                                  | Access to host class java.io.File is not allowed
+        Java.type('java.lang.System').exit(3)                      | Access to host class java.lang.System is not allowed
+        Java.type('java.lang.Runtime').getRuntime().exec('true')   | Access to host class java.lang.Runtime is not allowed
+        Java.type('java.lang.ProcessBuilder')                      | Access to host class java.lang.ProcessBuilder is not allowed
+        Java.type('java.lang.Thread')                              | Access to host class java.lang.Thread is not allowed
+        Java.type('java.lang.Class').forName('java.io.File')       | Access to host class java.lang.Class is not allowed
+        Java.type('java.lang.reflect.Method')                      | Access to host class java.lang.reflect.Method is not allowed
+        java.lang.System.exit(3)                                   | System.exit is not a function
+        Packages.java.lang.System.exit(3)                          | System.exit is not a function
+        Java.addToClasspath('/tmp')                                | Host class loading is not allowed
+        Java.type('java.lang.Math').class.forName('java.io.File')  | Unknown identifier: forName
+        Java.type('java.lang.Math').class.getMethods()             | Unknown identifier: getMethods
+        Java.type('java.lang.Math').getClass()                     | Unknown identifier: getClass
+        load('/etc/passwd')                                        | Operation is not allowed for: /etc/passwd
+        require('fs')                                              | ReferenceError: require is not defined
+        Polyglot.eval('python', '1')                               | ReferenceError: Polyglot is not defined
+        Polyglot.eval('js', '1')                                   | ReferenceError: Polyglot is not defined
+        process.env.HOME                                           | ReferenceError: process is not defined
+        read('/etc/passwd')                                        | ReferenceError: read is not defined
+        readFully('/etc/passwd')                                   | ReferenceError: readFully is not defined
+        readline()                                                 | ReferenceError: readline is not defined
+        quit(3)                                                    | ReferenceError: quit is not defined
+        exit(3)                                                    | ReferenceError: exit is not defined
+        new Worker('x.js')                                         | ReferenceError: Worker is not defined
+        """)
+    void run_whenScriptReachesOutsideTheSandbox_failsClearlyAndRuntimeKeepsWorking(String attempt, String reason) {
         CompiledScript script = runtime.compile(ID, attempt);
 
         assertThatThrownBy(() -> runtime.run(script, Map.of()))
                 .isInstanceOf(ScriptFailedException.class)
-                .hasMessageStartingWith("Script in slot 'onInstantiate' of frame 'Intruder' failed");
+                .hasMessageStartingWith("Script in slot 'onInstantiate' of frame 'Intruder' failed at line 1: ")
+                .hasMessageContaining(reason);
         assertThat(runtime.run(runtime.compile(ID, "1 + 1"), Map.of())).isEqualTo(2L);
     }
 

@@ -131,4 +131,46 @@ class ScriptRuntimeTest {
                 .hasCause(boom)
                 .hasMessageContaining("mouth is busy");
     }
+
+    @Test
+    void run_whenHostFunctionRunsAnotherScript_nestedRunUsesItsOwnContext() {
+        CompiledScript inner = runtime.compile(new ScriptId("Inner", "onAdded"), "'inner sees ' + s.x");
+        CompiledScript outer = runtime.compile(GREETING, "let before = s.x; Fire() + ' and outer still sees ' + s.x + before");
+
+        Object result = runtime.run(outer, Map.of("s", Map.of("x", "A"),
+                "Fire", Proxies.function(args -> runtime.run(inner, Map.of("s", Map.of("x", "B"))))));
+
+        assertThat(result).isEqualTo("inner sees B and outer still sees AA");
+    }
+
+    @Test
+    void run_whenScriptDefinesVar_doesNotLeakIntoTheNextRunsGlobals() {
+        runtime.run(runtime.compile(GREETING, "var leaked = 1; s.x"), Map.of("s", Map.of("x", 1)));
+
+        for (int i = 0; i < 20; i++) {
+            assertThat(runtime.run(runtime.compile(GREETING, "typeof s"), Map.of())).isEqualTo("undefined");
+        }
+    }
+
+    @Test
+    void run_whenScriptCompiledByAnotherRuntime_refuses() {
+        try (ScriptRuntime other = ScriptRuntime.create(ScriptConfig.defaults())) {
+            CompiledScript foreign = other.compile(GREETING, "1");
+
+            assertThatThrownBy(() -> runtime.run(foreign, Map.of()))
+                    .isInstanceOf(IllegalArgumentException.class)
+                    .hasMessage("The script Greeting.onInstantiate was compiled by another script runtime.");
+        }
+    }
+
+    @Test
+    void run_whenRuntimeClosed_refuses() {
+        ScriptRuntime closed = ScriptRuntime.create(ScriptConfig.defaults());
+        CompiledScript script = closed.compile(GREETING, "1");
+        closed.close();
+
+        assertThatThrownBy(() -> closed.run(script, Map.of()))
+                .isInstanceOf(IllegalStateException.class)
+                .hasMessage("The script runtime is closed.");
+    }
 }
