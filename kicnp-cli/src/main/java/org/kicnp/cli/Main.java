@@ -14,6 +14,7 @@ import picocli.CommandLine.Command;
         subcommands = {
             CommandLine.HelpCommand.class,
             RobotsCommand.class,
+            InferCommand.class,
         })
 public final class Main implements Runnable {
     @CommandLine.Spec
