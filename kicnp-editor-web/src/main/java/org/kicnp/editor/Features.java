@@ -1,0 +1,58 @@
+package org.kicnp.editor;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import org.kicnp.core.KnowledgeBase;
+
+/**
+ * The parts of the API that lean on other components: XML import/export (the paper's format) and the script
+ * syntax check. Each is a seam so the editor runs, read-only in those respects, when a component is left out;
+ * an absent feature answers 501 with a sentence saying so, and {@code GET /api/session} tells the page.
+ */
+record Features(Xml xml, Scripts scripts) {
+
+    /** XML export and all-or-nothing import. */
+    interface Xml {
+        boolean available();
+
+        Reply exportXml(KnowledgeBase kb);
+
+        /** Imports the XML text in {@code body.xml}; answers what was imported. */
+        Object importXml(KnowledgeBase kb, JsonNode body);
+    }
+
+    /** Syntax check of a script before it is saved. */
+    interface Scripts {
+        boolean available();
+
+        /** Checks {@code body.source}; answers {@code {ok, message, line, column}}. */
+        Object check(JsonNode body);
+    }
+
+    static Xml noXml() {
+        return new Xml() {
+            @Override public boolean available() {
+                return false;
+            }
+
+            @Override public Reply exportXml(KnowledgeBase kb) {
+                throw new ApiException(501, "XML export is not available in this build of the editor.");
+            }
+
+            @Override public Object importXml(KnowledgeBase kb, JsonNode body) {
+                throw new ApiException(501, "XML import is not available in this build of the editor.");
+            }
+        };
+    }
+
+    static Scripts noScripts() {
+        return new Scripts() {
+            @Override public boolean available() {
+                return false;
+            }
+
+            @Override public Object check(JsonNode body) {
+                throw new ApiException(501, "The script check is not available in this build of the editor.");
+            }
+        };
+    }
+}
