@@ -1,0 +1,122 @@
+// End-to-end test of the knowledge editor in a real headless Chromium, driven by Playwright.
+// Started by org.kicnp.editor.EditorBrowserTest, which runs the editor server and passes:
+//   EDITOR_URL (http://127.0.0.1:PORT/), EDITOR_PASSWORD, ARTIFACTS (a directory for screenshots),
+//   CHROMIUM (the browser executable, /usr/bin/chromium by default).
+// Exits 0 when every step passed; otherwise prints the failed step and exits 1.
+import { chromium } from 'playwright-core';
+import { mkdirSync } from 'node:fs';
+import { join } from 'node:path';
+
+const base = process.env.EDITOR_URL;
+const password = process.env.EDITOR_PASSWORD;
+const artifacts = process.env.ARTIFACTS || 'target/e2e';
+mkdirSync(artifacts, { recursive: true });
+
+const problems = [];
+const expectedNetworkErrors = /Failed to load resource: the server responded with a status of (401|409|422)/;
+let step = 'launch';
+
+function check(condition, message) {
+  if (!condition) throw new Error(message);
+}
+
+const browser = await chromium.launch({
+  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+    '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+});
+let failed = false;
+try {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const page = await context.newPage();
+  page.setDefaultTimeout(10000);
+  page.on('console', (m) => {
+    if (m.type() === 'error' && !expectedNetworkErrors.test(m.text())) problems.push('console: ' + m.text());
+  });
+  page.on('pageerror', (e) => problems.push('page error: ' + e.message));
+  page.on('request', (r) => {
+    if (!r.url().startsWith(base.replace(/\/$/, '')) && !r.url().startsWith(base.replace('http', 'ws').replace(/\/$/, ''))) {
+      problems.push('request outside the editor: ' + r.url());
+    }
+  });
+
+  step = 'open the hierarchy';
+  await page.goto(base);
+  const tree = page.locator('#tree');
+  await tree.locator('[data-frame="AskUserName"]').waitFor();
+  check(await tree.locator('.frame-button.instance[data-frame="Robovie"]').count() === 1, 'Robovie is not shown as an instance');
+  check(await tree.locator('[data-frame="Taro"] .learned-mark').count() === 1, 'the learned frame Taro is not marked');
+  check(await tree.locator('[data-frame="Greeting"] .link-mark').count() === 1, 'Greeting\'s semantic link is not shown');
+  await page.locator('#live:not(.off)').waitFor();
+  await page.screenshot({ path: join(artifacts, '01-hierarchy.png') });
+
+  step = 'search the hierarchy';
+  await page.fill('#search', 'user');
+  check(await tree.locator('.frame-button.match').count() === 4, 'search for "user" did not mark 4 frames');
+  check(await tree.locator('[data-frame="Robovie"]').count() === 0, 'search did not hide Robovie');
+  await page.fill('#search', '');
+
+  step = 'log in with a wrong password';
+  await page.fill('#login-password', 'not the password');
+  await page.press('#login-password', 'Enter');
+  await page.locator('#login-error').waitFor({ state: 'visible' });
+  check((await page.textContent('#login-error')).includes('Wrong password'), 'wrong password not refused in words');
+  check(await page.isVisible('#login-form'), 'login form vanished after a wrong password');
+
+  step = 'log in';
+  await page.fill('#login-password', password);
+  await page.click('#login-button');
+  await page.locator('#session-info').waitFor({ state: 'visible' });
+
+  step = 'open a frame with the keyboard';
+  await tree.locator('[data-frame="AskUserName"]').focus();
+  await page.keyboard.press('Enter');
+  await page.locator('#frame-title', { hasText: 'AskUserName' }).waitFor();
+  const inherited = page.locator('tr.inherited[data-slot-name="mfunction"]');
+  await inherited.waitFor();
+  check((await inherited.textContent()).includes('from Speech'), 'inherited slot does not name Speech');
+  check(await page.locator('#slot-table thead th').count() === 14, 'the slot table does not show every Table 2 facet');
+
+  step = 'edit a slot into a validation error';
+  await page.fill('input[aria-label="mUser argument"]', 'Martian');
+  await page.fill('input[aria-label="mUser role"]', 'the visitor asked for a name');
+  await page.click('#save-button');
+  await page.locator('#frame-errors').waitFor({ state: 'visible' });
+  const errorText = await page.textContent('#frame-errors');
+  check(errorText.includes("'Martian'"), 'the validation error does not name the unknown class: ' + errorText);
+  check(await page.locator('tr.own.invalid[data-slot-name="mUser"]').count() === 1, 'the faulty slot row is not marked');
+  await page.screenshot({ path: join(artifacts, '02-validation-error.png'), fullPage: true });
+
+  step = 'fix and save';
+  await page.fill('input[aria-label="mUser argument"]', 'KnownUser');
+  await page.click('#save-button');
+  await page.locator('#frame-notice', { hasText: 'Saved AskUserName' }).waitFor();
+  check(await page.isHidden('#frame-errors'), 'the error box stayed after a good save');
+
+  step = 'edit a script slot';
+  await page.click('button[aria-label="Edit script onInstantiate"]');
+  const script = page.locator('textarea[id$="-value"]');
+  await script.waitFor();
+  check(await page.locator('.code pre .tok-fn').count() > 0, 'the script is not highlighted');
+
+  step = 'reload and find the change';
+  await page.reload();
+  await page.locator('#frame-title', { hasText: 'AskUserName' }).waitFor();
+  check(await page.inputValue('input[aria-label="mUser argument"]') === 'KnownUser', 'the argument did not survive a reload');
+  check(await page.inputValue('input[aria-label="mUser role"]') === 'the visitor asked for a name', 'the role did not survive a reload');
+  await page.click('button[aria-label="Edit script onInstantiate"]');
+  await page.locator('.code pre').first().waitFor();
+  await page.screenshot({ path: join(artifacts, '03-slot-table.png') });
+  await page.screenshot({ path: join(artifacts, '03-slot-table-full.png'), fullPage: true });
+
+  step = 'no console errors';
+  check(problems.length === 0, problems.join('\n'));
+  console.log('editor e2e: all steps passed');
+} catch (e) {
+  failed = true;
+  console.error('editor e2e failed at step "' + step + '": ' + e.message);
+  if (problems.length) console.error(problems.join('\n'));
+} finally {
+  await browser.close();
+}
+process.exit(failed ? 1 : 0);
