@@ -93,11 +93,19 @@ try {
   await page.locator('#frame-notice', { hasText: 'Saved AskUserName' }).waitFor();
   check(await page.isHidden('#frame-errors'), 'the error box stayed after a good save');
 
-  step = 'edit a script slot';
+  step = 'edit a script slot: a syntax error is caught before saving';
   await page.click('button[aria-label="Edit script onInstantiate"]');
   const script = page.locator('textarea[id$="-value"]');
   await script.waitFor();
   check(await page.locator('.code pre .tok-fn').count() > 0, 'the script is not highlighted');
+  const revision = await page.textContent('#frame-meta');
+  await script.fill('sendmsg(s.mMouth, "What is your name?";');
+  await page.click('#save-button');
+  await page.locator('#frame-errors', { hasText: 'syntax error' }).waitFor();
+  check(await page.textContent('#frame-meta') === revision, 'a script with a syntax error was saved');
+  await script.fill('sendmsg(s.mMouth, “What is your name?”);');
+  await page.click('#save-button');
+  await page.locator('#frame-notice', { hasText: 'Saved AskUserName' }).waitFor();
 
   step = 'reload and find the change';
   await page.reload();

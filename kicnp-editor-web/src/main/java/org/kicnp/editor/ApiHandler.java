@@ -97,7 +97,11 @@ final class ApiHandler extends Handler.Abstract {
             case "logout" -> only(m, "POST", () -> login.logout(r));
             case "status" -> only(m, "GET", () -> ok(status()));
             case "frames" -> frames(r, s, m);
-            case "export" -> only(m, "GET", () -> features.xml().exportXml(kb));
+            case "export" -> only(m, "GET", () -> {
+                Reply xml = features.xml().exportXml(kb);
+                return r.query("download").isPresent()
+                        ? xml.withHeader("Content-Disposition", "attachment; filename=\"knowledge.xml\"") : xml;
+            });
             case "import" -> only(m, "POST", () -> ok(features.xml().importXml(kb, r.body())));
             case "scripts" -> s.length == 2 && s[1].equals("check")
                     ? only(m, "POST", () -> ok(features.scripts().check(r.body())))
@@ -203,6 +207,7 @@ final class ApiHandler extends Handler.Abstract {
         response.getHeaders().put(HttpHeader.CACHE_CONTROL, "no-store");
         response.getHeaders().put(new HttpField("X-Content-Type-Options", "nosniff"));
         reply.cookies().forEach(c -> Response.addCookie(response, c));
+        reply.headers().forEach((name, value) -> response.getHeaders().put(name, value));
         response.write(true, BufferUtil.toBuffer(reply.body().getBytes(StandardCharsets.UTF_8)), callback);
     }
 }

@@ -1,11 +1,11 @@
 package org.kicnp.editor;
 
-/** The features this build of the editor has; filled in as the XML and script components join the build. */
+/** The features of this build of the editor: XML transfer through kicnp-core, the script check through kicnp-script. */
 final class EditorFeatures {
     private EditorFeatures() {
     }
 
     static Features available() {
-        return new Features(Features.noXml(), Features.noScripts());
+        return new Features(new XmlTransfer(), new ScriptCheck());
     }
 }

@@ -28,12 +28,15 @@ public final class EditorServer implements AutoCloseable {
     private final ServerConnector connector;
     private final KnowledgeBase kb;
     private final EventHub events;
+    private final Features features;
 
-    private EditorServer(Server server, ServerConnector connector, KnowledgeBase kb, EventHub events) {
+    private EditorServer(Server server, ServerConnector connector, KnowledgeBase kb, EventHub events,
+            Features features) {
         this.server = server;
         this.connector = connector;
         this.kb = kb;
         this.events = events;
+        this.features = features;
     }
 
     /**
@@ -84,7 +87,7 @@ public final class EditorServer implements AutoCloseable {
             throw new EditorException("The editor could not start on " + config.host() + ":" + config.port() + ": "
                     + e.getMessage(), e);
         }
-        EditorServer editor = new EditorServer(server, connector, kb, events);
+        EditorServer editor = new EditorServer(server, connector, kb, events, features);
         LOG.info("Knowledge editor at http://{}:{}/ ({})", config.host(), editor.port(),
                 sessions.editingPossible() ? "editing after login" : "read-only: no editor.password set");
         return editor;
@@ -95,10 +98,17 @@ public final class EditorServer implements AutoCloseable {
         return connector.getLocalPort();
     }
 
-    /** Stops the server and stops listening to the knowledge base. */
+    /** Stops the server, stops listening to the knowledge base and closes the script runtime if one was started. */
     @Override public void close() {
         kb.removeListener(events);
         stopQuietly(server);
+        if (features.scripts() instanceof AutoCloseable c) {
+            try {
+                c.close();
+            } catch (Exception e) {
+                LOG.warn("The editor's script checker did not close cleanly", e);
+            }
+        }
     }
 
     private static void stopQuietly(Server server) {

@@ -49,6 +49,7 @@ class EditorBrowserTest {
         Slot mUser = kb.require("AskUserName").ownSlot("mUser").orElseThrow();
         assertThat(mUser.argument()).contains("KnownUser");
         assertThat(mUser.role()).contains("the visitor asked for a name");
+        assertThat(kb.value("AskUserName", "onInstantiate").map(v -> v.text())).contains("sendmsg(s.mMouth, “What is your name?”);");
         assertThat(artifacts.resolve("03-slot-table.png")).exists();
     }
 
