@@ -13,6 +13,7 @@ import picocli.CommandLine.Command;
         description = "K-ICNP: a multi-robot management platform on a frame knowledge base.",
         subcommands = {
             CommandLine.HelpCommand.class,
+            InferCommand.class,
         })
 public final class Main implements Runnable {
     @CommandLine.Spec
