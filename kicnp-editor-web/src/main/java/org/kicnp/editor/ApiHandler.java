@@ -103,6 +103,7 @@ final class ApiHandler extends Handler.Abstract {
                         ? xml.withHeader("Content-Disposition", "attachment; filename=\"knowledge.xml\"") : xml;
             });
             case "import" -> only(m, "POST", () -> ok(features.xml().importXml(kb, r.body())));
+            case "inference" -> inference(r, s, m);
             case "scripts" -> s.length == 2 && s[1].equals("check")
                     ? only(m, "POST", () -> ok(features.scripts().check(r.body())))
                     : notFound(r);
@@ -131,6 +132,20 @@ final class ApiHandler extends Handler.Abstract {
             return only(m, "POST", () -> ok(frames.rename(name, r.body())));
         }
         return notFound(r);
+    }
+
+    private Reply inference(ApiRequest r, String[] s, String m) {
+        Features.Inference engine = features.inference();
+        if (s.length == 1) {
+            return only(m, "GET", () -> ok(engine.status()));
+        }
+        return switch (s[1]) {
+            case "why" -> s.length == 3 ? only(m, "GET", () -> ok(engine.why(s[2]))) : notFound(r);
+            case "ask" -> only(m, "GET", () -> ok(engine.ask(r.query("class").orElseThrow(() ->
+                    new ApiException(400, "Asking needs the class to ask about: ?class=Name.")))));
+            case "run" -> only(m, "POST", () -> ok(engine.run()));
+            default -> notFound(r);
+        };
     }
 
     private Map<String, Object> status() {

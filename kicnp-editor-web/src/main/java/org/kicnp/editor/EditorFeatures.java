@@ -6,6 +6,6 @@ final class EditorFeatures {
     }
 
     static Features available() {
-        return new Features(new XmlTransfer(), new ScriptCheck());
+        return new Features(new XmlTransfer(), new ScriptCheck(), Features.noInference());
     }
 }

@@ -13,6 +13,7 @@ import org.eclipse.jetty.server.handler.ContextHandler;
 import org.eclipse.jetty.util.thread.QueuedThreadPool;
 import org.eclipse.jetty.websocket.server.WebSocketUpgradeHandler;
 import org.kicnp.core.KnowledgeBase;
+import org.kicnp.inference.InferenceEngine;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -48,6 +49,17 @@ public final class EditorServer implements AutoCloseable {
         return start(config, kb, EditorFeatures.available());
     }
 
+    /**
+     * Starts the editor with a view of the inference engine running over {@code kb}: live instances, agenda,
+     * explanations, questions, runs, and the trace pushed over {@code /api/events}.
+     *
+     * @throws EditorException when the port cannot be bound
+     */
+    public static EditorServer start(EditorConfig config, KnowledgeBase kb, InferenceEngine engine) {
+        requireNonNull(engine, "engine");
+        return start(config, kb, EditorFeatures.available().withInference(new InferenceResource(engine, kb)));
+    }
+
     static EditorServer start(EditorConfig config, KnowledgeBase kb, Features features) {
         requireNonNull(config, "config");
         requireNonNull(kb, "kb");
@@ -79,10 +91,12 @@ public final class EditorServer implements AutoCloseable {
         context.setHandler(ws);
         server.setHandler(context);
         kb.addListener(events);
+        features.inference().attach(events);
         try {
             server.start();
         } catch (Exception e) {
             kb.removeListener(events);
+            features.inference().close();
             stopQuietly(server);
             throw new EditorException("The editor could not start on " + config.host() + ":" + config.port() + ": "
                     + e.getMessage(), e);
@@ -101,6 +115,7 @@ public final class EditorServer implements AutoCloseable {
     /** Stops the server, stops listening to the knowledge base and closes the script runtime if one was started. */
     @Override public void close() {
         kb.removeListener(events);
+        features.inference().close();
         stopQuietly(server);
         if (features.scripts() instanceof AutoCloseable c) {
             try {

@@ -4,11 +4,11 @@ import com.fasterxml.jackson.databind.JsonNode;
 import org.kicnp.core.KnowledgeBase;
 
 /**
- * The parts of the API that lean on other components: XML import/export (the paper's format) and the script
- * syntax check. Each is a seam so the editor runs, read-only in those respects, when a component is left out;
+ * The parts of the API that lean on other components: XML import/export (the paper's format), the script
+ * syntax check and the view of a running inference engine. Each is a seam so the editor runs, read-only in those respects, when a component is left out;
  * an absent feature answers 501 with a sentence saying so, and {@code GET /api/session} tells the page.
  */
-record Features(Xml xml, Scripts scripts) {
+record Features(Xml xml, Scripts scripts, Inference inference) {
 
     /** XML export and all-or-nothing import. */
     interface Xml {
@@ -26,6 +26,62 @@ record Features(Xml xml, Scripts scripts) {
 
         /** Checks {@code body.source}; answers {@code {ok, message, line, column}}. */
         Object check(JsonNode body);
+    }
+
+    /** The live view of an inference engine: working memory, agenda, explanations, questions, runs. */
+    interface Inference extends AutoCloseable {
+        boolean available();
+
+        /** Starts forwarding trace events to the page. */
+        void attach(EventHub events);
+
+        Object status();
+
+        Object why(String instance);
+
+        Object ask(String className);
+
+        Object run();
+
+        @Override void close();
+    }
+
+    static Inference noInference() {
+        return new Inference() {
+            @Override public boolean available() {
+                return false;
+            }
+
+            @Override public void attach(EventHub events) {
+            }
+
+            @Override public Object status() {
+                throw unavailable();
+            }
+
+            @Override public Object why(String instance) {
+                throw unavailable();
+            }
+
+            @Override public Object ask(String className) {
+                throw unavailable();
+            }
+
+            @Override public Object run() {
+                throw unavailable();
+            }
+
+            @Override public void close() {
+            }
+
+            private ApiException unavailable() {
+                return new ApiException(501, "No inference engine is attached to this editor.");
+            }
+        };
+    }
+
+    Features withInference(Inference i) {
+        return new Features(xml, scripts, i);
     }
 
     static Xml noXml() {

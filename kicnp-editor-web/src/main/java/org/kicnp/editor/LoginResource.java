@@ -38,7 +38,7 @@ final class LoginResource {
         out.put("editingPossible", sessions.editingPossible());
         out.put("xml", features.xml().available());
         out.put("scripts", features.scripts().available());
-        out.put("inference", false);
+        out.put("inference", features.inference().available());
         return out;
     }
 
