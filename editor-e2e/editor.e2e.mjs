@@ -117,6 +117,18 @@ try {
   await page.screenshot({ path: join(artifacts, '03-slot-table.png') });
   await page.screenshot({ path: join(artifacts, '03-slot-table-full.png'), fullPage: true });
 
+  step = 'inference view: run, see the derived instance, ask why, read the trace';
+  await page.click('#inference-button');
+  await page.locator('#inference-panel').waitFor({ state: 'visible' });
+  await page.click('#run-button');
+  const derivedRow = page.locator('#wm-rows tr', { hasText: 'derived' }).filter({ hasText: 'AskUserName' });
+  await derivedRow.waitFor();
+  await derivedRow.locator('button', { hasText: 'Why?' }).click();
+  await page.locator('#why-tree', { hasText: 'made by AskUserName' }).waitFor();
+  check((await page.textContent('#why-tree')).includes('visitor1'), 'why does not rest on visitor1');
+  await page.locator('#trace-log li.Fired').first().waitFor();
+  await page.screenshot({ path: join(artifacts, '04-inference.png') });
+
   step = 'no console errors';
   check(problems.length === 0, problems.join('\n'));
   console.log('editor e2e: all steps passed');

@@ -12,12 +12,18 @@ import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
+import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Provenance;
 import org.kicnp.core.Slot;
+import org.kicnp.inference.GraalScriptHost;
+import org.kicnp.inference.InferenceEngine;
+import org.kicnp.script.ScriptConfig;
+import org.kicnp.script.ScriptRuntime;
 
 /**
  * The page in a real headless Chromium: the Playwright script {@code editor-e2e/editor.e2e.mjs} drives it against
- * a real editor server on an ephemeral loopback port. Skipped, with a message, only when Chromium (or Node.js to
+ * a real editor server (with an inference engine attached) on an ephemeral loopback port. Skipped, with a message, only when Chromium (or Node.js to
  * drive it) is not installed; screenshots are kept under {@code target/e2e/}.
  */
 class EditorBrowserTest {
@@ -37,7 +43,12 @@ class EditorBrowserTest {
         }
 
         KnowledgeBase kb = SampleKnowledge.create();
-        try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
+        kb.add(Frame.instance("visitor1", "KnownUser").provenance(Provenance.RUNTIME).build());
+        kb.add(Frame.instance("mouth1", "Mouth").provenance(Provenance.RUNTIME).build());
+        try (ScriptRuntime scripts = ScriptRuntime.create(ScriptConfig.defaults());
+                InferenceEngine engine = InferenceEngine.builder(kb).scripts(new GraalScriptHost(scripts)).build();
+                EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD),
+                        kb, engine)) {
             Map<String, String> env = Map.of("EDITOR_URL", "http://127.0.0.1:" + server.port() + "/",
                     "EDITOR_PASSWORD", PASSWORD, "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString());
             Path log = artifacts.resolve("browser.log");
@@ -51,6 +62,7 @@ class EditorBrowserTest {
         assertThat(mUser.role()).contains("the visitor asked for a name");
         assertThat(kb.value("AskUserName", "onInstantiate").map(v -> v.text())).contains("sendmsg(s.mMouth, “What is your name?”);");
         assertThat(artifacts.resolve("03-slot-table.png")).exists();
+        assertThat(kb.instancesOf("AskUserName")).hasSize(1);
     }
 
     private static int run(Path dir, List<String> command, Map<String, String> env, Path log, int seconds)

@@ -89,6 +89,12 @@
     box.hidden = false;
   }
 
+  const PANELS = ['welcome', 'import-panel', 'create-panel', 'frame-panel', 'inference-panel'];
+
+  function showMain(id) {
+    for (const p of PANELS) show(p, p === id);
+  }
+
   function notice(text) {
     const n = $('frame-notice');
     n.textContent = text;
@@ -114,6 +120,8 @@
     $('export-button').disabled = !s.xml;
     $('export-button').title = !s.xml ? 'XML export is not available in this build' : 'Download every frame as XML';
     $('new-frame-button').disabled = !s.loggedIn;
+    $('inference-button').hidden = !s.inference;
+    $('run-button').disabled = !s.loggedIn;
     document.body.classList.toggle('readonly', !s.loggedIn);
     if (state.frame) renderFrame();
   }
@@ -240,14 +248,11 @@
       setFrame(frame);
       if (!keepNotice) notice('');
       showErrors('frame-errors', null);
-      show('welcome', false);
-      show('import-panel', false);
-      show('create-panel', false);
-      show('frame-panel', true);
+      showMain('frame-panel');
       renderTree();
       history.replaceState(null, '', '#' + enc(name));
     } catch (e) {
-      show('welcome', true);
+      showMain('welcome');
       showErrors('frame-errors', e);
     }
   }
@@ -569,10 +574,7 @@
   // ---- create, rename, delete ----
 
   function startCreate(parent) {
-    show('welcome', false);
-    show('frame-panel', false);
-    show('import-panel', false);
-    show('create-panel', true);
+    showMain('create-panel');
     showErrors('create-errors', null);
     $('create-name').value = '';
     $('create-parent').value = parent || '';
@@ -616,8 +618,7 @@
       state.dirty = false;
       state.selected = null;
       state.frame = null;
-      show('frame-panel', false);
-      show('welcome', true);
+      showMain('welcome');
       await loadFrames();
     } catch (e) {
       show('delete-confirm', false);
@@ -628,10 +629,7 @@
   // ---- import / export ----
 
   function startImport() {
-    show('welcome', false);
-    show('frame-panel', false);
-    show('create-panel', false);
-    show('import-panel', true);
+    showMain('import-panel');
     showErrors('import-errors', null);
     $('import-text').focus();
   }
@@ -639,13 +637,99 @@
   async function applyImport() {
     try {
       const r = await api('POST', '/api/import', { xml: $('import-text').value });
-      show('import-panel', false);
       await loadFrames();
-      show('welcome', true);
+      showMain('welcome');
       $('welcome').querySelector('p').textContent = 'Imported ' + r.count + ' frame(s).';
     } catch (e) {
       showErrors('import-errors', e);
     }
+  }
+
+  // ---- inference ----
+
+  let inferenceTimer = null;
+
+  function scheduleInferenceReload() {
+    clearTimeout(inferenceTimer);
+    inferenceTimer = setTimeout(() => loadInference().catch(() => {}), 300);
+  }
+
+  async function openInference() {
+    if (state.dirty && !window.confirm('Discard the unsaved changes to ' + state.selected + '?')) return;
+    state.dirty = false;
+    showMain('inference-panel');
+    await loadInference();
+  }
+
+  async function loadInference() {
+    try {
+      const s = await api('GET', '/api/inference');
+      $('inference-meta').textContent = 'agenda ' + s.agenda + ' · ' + s.instances.length
+        + ' instance(s) in working memory · ' + s.actions + ' action(s) issued';
+      $('wm-rows').replaceChildren(...(s.instances.length ? s.instances.map((i) => el('tr', {},
+        el('td', {}, el('button', { type: 'button', class: 'chip', text: i.name, onclick: () => openFrame(i.name) })),
+        el('td', { text: i.className }),
+        el('td', { text: i.derived ? 'derived' : 'asserted' }),
+        el('td', {}, el('button', {
+          type: 'button', class: 'small ghost', text: 'Why?', 'aria-label': 'Why does ' + i.name + ' exist?',
+          onclick: () => why(i.name)
+        }))))
+        : [el('tr', {}, el('td', { colspan: '4', class: 'muted', text: 'Working memory is empty.' }))]));
+      showErrors('inference-errors', null);
+    } catch (e) {
+      showErrors('inference-errors', e);
+    }
+  }
+
+  async function runInference() {
+    try {
+      const r = await api('POST', '/api/inference/run', {});
+      await loadInference();
+      $('inference-meta').textContent += ' · last run: ' + r.firings + ' firing(s)';
+    } catch (e) {
+      showErrors('inference-errors', e);
+    }
+  }
+
+  async function why(instance) {
+    try {
+      const e = await api('GET', '/api/inference/why/' + enc(instance));
+      $('why-tree').replaceChildren(el('ul', {}, explanationItem(e)));
+    } catch (err) {
+      showErrors('inference-errors', err);
+    }
+  }
+
+  function explanationItem(e) {
+    if (e.type === 'asserted') {
+      return el('li', {}, el('span', { class: 'what', text: e.instance }),
+        el('span', { class: 'how', text: ' asserted as ' + e.className }));
+    }
+    const d = e.derivation;
+    const binding = Object.entries(d.binding).map(([k, v]) => k + '=' + v).join(', ');
+    return el('li', {}, el('span', { class: 'what', text: e.instance }),
+      el('span', { class: 'how', text: ' made by ' + d.frame + ' (firing #' + d.firing + '; ' + binding + ')' }),
+      e.supports.length ? el('ul', {}, e.supports.map(explanationItem)) : null);
+  }
+
+  async function askInference(event) {
+    event.preventDefault();
+    try {
+      const answers = await api('GET', '/api/inference/ask?class=' + enc($('ask-class').value.trim()));
+      $('ask-answers').replaceChildren(...(answers.length ? answers.map((a) => el('li', {
+        text: (a.instance || '(new ' + a.className + ')') + (a.derivable ? ' — derivable' : ' — exists')
+          + (Object.keys(a.slots).length ? ': ' + Object.entries(a.slots).map(([k, v]) => k + '=' + v).join(', ') : '')
+      })) : [el('li', { class: 'muted', text: 'No instance exists or could be derived.' })]));
+    } catch (e) {
+      showErrors('inference-errors', e);
+    }
+  }
+
+  function addTrace(event) {
+    const log = $('trace-log');
+    log.append(el('li', { class: event.event }, el('span', { class: 'ev', text: event.event }), ' ', event.text));
+    while (log.children.length > 300) log.firstChild.remove();
+    log.scrollTop = log.scrollHeight;
   }
 
   // ---- live updates ----
@@ -671,6 +755,9 @@
       } else if (event.type === 'change') {
         setVersion(event.version);
         applyChanges(event.events);
+        if (!$('inference-panel').hidden) scheduleInferenceReload();
+      } else if (event.type === 'trace') {
+        addTrace(event);
       }
     };
   }
@@ -722,7 +809,7 @@
     $('new-frame-button').addEventListener('click', () => startCreate(''));
     $('new-child-button').addEventListener('click', () => startCreate(state.frame.name));
     $('create-form').addEventListener('submit', create);
-    $('create-cancel').addEventListener('click', () => { show('create-panel', false); show(state.frame ? 'frame-panel' : 'welcome', true); });
+    $('create-cancel').addEventListener('click', () => showMain(state.frame ? 'frame-panel' : 'welcome'));
     $('save-button').addEventListener('click', save);
     $('revert-button').addEventListener('click', () => { setFrame(state.frame); showErrors('frame-errors', null); });
     $('add-slot-button').addEventListener('click', () => {
@@ -750,7 +837,11 @@
     $('delete-cancel').addEventListener('click', () => show('delete-confirm', false));
     $('export-button').addEventListener('click', () => { window.location.assign('/api/export?download=true'); });
     $('import-button').addEventListener('click', startImport);
-    $('import-cancel').addEventListener('click', () => { show('import-panel', false); show('welcome', true); });
+    $('import-cancel').addEventListener('click', () => showMain(state.frame ? 'frame-panel' : 'welcome'));
+    $('inference-button').addEventListener('click', openInference);
+    $('inference-refresh').addEventListener('click', loadInference);
+    $('run-button').addEventListener('click', runInference);
+    $('ask-form').addEventListener('submit', askInference);
     $('import-apply').addEventListener('click', applyImport);
     $('import-file').addEventListener('change', async (e) => {
       const file = e.target.files[0];
