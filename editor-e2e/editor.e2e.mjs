@@ -107,6 +107,32 @@ try {
   await page.click('#save-button');
   await page.locator('#frame-notice', { hasText: 'Saved AskUserName' }).waitFor();
 
+  step = 'live update: a frame another user creates appears without a reload';
+  const other = await browser.newContext();
+  const login = await other.request.post(base + 'api/login', { data: { password } });
+  check(login.ok(), 'the second user could not log in');
+  const created = await other.request.post(base + 'api/frames',
+    { data: { name: 'PINO', kind: 'INSTANCE', parent: 'HumanoidRobot' } });
+  check(created.status() === 201, 'the second user could not create PINO: ' + created.status());
+  await tree.locator('[data-frame="PINO"]').waitFor();
+  await other.close();
+
+  step = 'create a sub-frame and delete it';
+  await tree.locator('[data-frame="Robot"]').click();
+  await page.locator('#frame-title', { hasText: 'Robot' }).waitFor();
+  await page.click('#new-child-button');
+  await page.fill('#create-name', 'Scout');
+  check(await page.inputValue('#create-parent') === 'Robot', 'a new sub-frame does not default to its parent');
+  await page.press('#create-name', 'Enter');
+  await page.locator('#frame-title', { hasText: 'Scout' }).waitFor();
+  await tree.locator('[data-frame="Scout"]').waitFor();
+  await page.click('#delete-button');
+  await page.click('#delete-apply');
+  await page.locator('#welcome').waitFor({ state: 'visible' });
+  await tree.locator('[data-frame="Scout"]').waitFor({ state: 'detached' });
+  await tree.locator('[data-frame="AskUserName"]').click();
+  await page.locator('#frame-title', { hasText: 'AskUserName' }).waitFor();
+
   step = 'reload and find the change';
   await page.reload();
   await page.locator('#frame-title', { hasText: 'AskUserName' }).waitFor();

@@ -166,7 +166,8 @@ final class ApiHandler extends Handler.Abstract {
      */
     private static void checkWriteIsSafe(Request request) {
         String type = request.getHeaders().get(HttpHeader.CONTENT_TYPE);
-        if (type == null || !type.toLowerCase(Locale.ROOT).startsWith("application/json")) {
+        boolean bodyless = request.getMethod().equals("DELETE") && type == null;
+        if (!bodyless && (type == null || !type.toLowerCase(Locale.ROOT).startsWith("application/json"))) {
             throw new ApiException(415, "Changes must be sent as JSON (Content-Type: application/json).");
         }
         String origin = request.getHeaders().get(HttpHeader.ORIGIN);

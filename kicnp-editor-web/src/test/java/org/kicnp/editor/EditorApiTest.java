@@ -263,6 +263,16 @@ class EditorApiTest {
         assertThat(after.statusCode()).isEqualTo(401);
     }
 
+    @Test void delete_withoutBodyOrContentType_worksWhenLoggedIn() {
+        http.login(PASSWORD);
+
+        HttpResponse<String> r = http.send(java.net.http.HttpRequest.newBuilder(
+                java.net.URI.create("http://127.0.0.1:" + server.port() + "/api/frames/Taro")).DELETE());
+
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(200);
+        assertThat(kb.contains("Taro")).isFalse();
+    }
+
     @Test void bearerToken_allowsEditingWithoutCookie() {
         HttpResponse<String> r = http.send(http.jsonRequest("/api/frames/Taro")
                 .header("Authorization", "Bearer " + PASSWORD).DELETE());

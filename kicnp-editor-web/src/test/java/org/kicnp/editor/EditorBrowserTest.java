@@ -63,6 +63,8 @@ class EditorBrowserTest {
         assertThat(kb.value("AskUserName", "onInstantiate").map(v -> v.text())).contains("sendmsg(s.mMouth, “What is your name?”);");
         assertThat(artifacts.resolve("03-slot-table.png")).exists();
         assertThat(kb.instancesOf("AskUserName")).hasSize(1);
+        assertThat(kb.contains("PINO")).isTrue();
+        assertThat(kb.contains("Scout")).isFalse();
     }
 
     private static int run(Path dir, List<String> command, Map<String, String> env, Path log, int seconds)
