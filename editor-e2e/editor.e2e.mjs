@@ -133,6 +133,22 @@ try {
   await tree.locator('[data-frame="AskUserName"]').click();
   await page.locator('#frame-title', { hasText: 'AskUserName' }).waitFor();
 
+  step = 'import XML: an error is shown with its line, a good file is imported';
+  await page.click('#import-button');
+  await page.fill('#import-text', '<KNOWLEDGEBASE>\n  <FRAME><NAME>AIBO</NAME><ISA>RobotDog</ISA></FRAME>\n</KNOWLEDGEBASE>');
+  await page.click('#import-apply');
+  await page.locator('#import-errors', { hasText: 'line 2' }).waitFor();
+  await page.fill('#import-text', '<KNOWLEDGEBASE>\n  <FRAME><NAME>AIBO</NAME><ISA>Robot</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>\n</KNOWLEDGEBASE>');
+  await page.click('#import-apply');
+  await page.locator('#welcome-text', { hasText: 'Imported 1 frame' }).waitFor();
+  await tree.locator('[data-frame="AIBO"]').waitFor();
+
+  step = 'export XML as a download';
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#export-button')]);
+  check(download.suggestedFilename() === 'knowledge.xml', 'the export is not named knowledge.xml');
+  await tree.locator('[data-frame="AskUserName"]').click();
+  await page.locator('#frame-title', { hasText: 'AskUserName' }).waitFor();
+
   step = 'reload and find the change';
   await page.reload();
   await page.locator('#frame-title', { hasText: 'AskUserName' }).waitFor();

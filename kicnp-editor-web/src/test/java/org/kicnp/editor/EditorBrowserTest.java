@@ -65,6 +65,7 @@ class EditorBrowserTest {
         assertThat(kb.instancesOf("AskUserName")).hasSize(1);
         assertThat(kb.contains("PINO")).isTrue();
         assertThat(kb.contains("Scout")).isFalse();
+        assertThat(kb.require("AIBO").parent()).contains("Robot");
     }
 
     private static int run(Path dir, List<String> command, Map<String, String> env, Path log, int seconds)

@@ -80,7 +80,7 @@
       return;
     }
     box.append(el('p', { text: error.message }));
-    const list = (error.problems || []).filter((p) => p.message !== error.message || (error.problems.length > 1));
+    const list = (error.problems || []).filter((p) => p.message !== error.message || p.line || error.problems.length > 1);
     if (list.length) {
       box.append(el('ul', {}, list.map((p) => el('li', {
         text: (p.line ? 'line ' + p.line + ', column ' + p.column + ': ' : '') + p.message
@@ -156,7 +156,18 @@
     renderNameLists();
   }
 
+  function renderStats() {
+    const count = (p) => String(state.frames.filter(p).length);
+    const stat = (label, value) => el('div', {}, el('dt', { text: label }), el('dd', { text: value }));
+    $('stats').replaceChildren(
+      stat('Frames', String(state.frames.length)),
+      stat('Classes', count((f) => f.kind === 'CLASS')),
+      stat('Instances', count((f) => f.kind === 'INSTANCE')),
+      stat('Learned', count((f) => f.learned)));
+  }
+
   function renderNameLists() {
+    renderStats();
     $('class-names').replaceChildren(...state.frames.filter((f) => f.kind === 'CLASS')
       .map((f) => el('option', { value: f.name })));
     $('frame-names').replaceChildren(...state.frames.map((f) => el('option', { value: f.name })));
@@ -639,7 +650,7 @@
       const r = await api('POST', '/api/import', { xml: $('import-text').value });
       await loadFrames();
       showMain('welcome');
-      $('welcome').querySelector('p').textContent = 'Imported ' + r.count + ' frame(s).';
+      $('welcome-text').textContent = 'Imported ' + r.count + ' frame(s); ' + r.changed + ' were new or changed.';
     } catch (e) {
       showErrors('import-errors', e);
     }
