@@ -10,6 +10,7 @@ import org.kicnp.core.ChangeSet;
 import org.kicnp.core.FrameEvent;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.KnowledgeListener;
+import org.kicnp.core.UnknownFrameException;
 
 /**
  * Pushes knowledge-base changes to every connected page as JSON over the {@code /api/events} WebSocket. Each
@@ -79,8 +80,14 @@ final class EventHub implements KnowledgeListener {
             case FrameEvent.Replaced r -> "replaced";
             case FrameEvent.Removed r -> "removed";
         };
-        FrameViews.Summary row = e instanceof FrameEvent.Removed ? null : kb.frame(e.name())
-                .map(f -> FrameViews.summary(kb, f)).orElse(null);
+        FrameViews.Summary row = null;
+        if (!(e instanceof FrameEvent.Removed)) {
+            try {
+                row = kb.frame(e.name()).map(f -> FrameViews.summary(kb, f)).orElse(null);
+            } catch (UnknownFrameException gone) {
+                // Removed by a later batch before this one was delivered; that batch's event says so.
+            }
+        }
         return new Event(kind, e.name(), row);
     }
 }

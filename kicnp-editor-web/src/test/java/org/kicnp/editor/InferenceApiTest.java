@@ -15,7 +15,9 @@ import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletionStage;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.kicnp.core.Frame;
@@ -30,15 +32,22 @@ import org.kicnp.script.ScriptRuntime;
 class InferenceApiTest {
     private static final ObjectMapper JSON = new ObjectMapper();
 
+    private static ScriptRuntime scripts;
     private KnowledgeBase kb;
-    private ScriptRuntime scripts;
     private InferenceEngine engine;
     private EditorServer server;
     private Http http;
 
+    @BeforeAll static void startScripts() {
+        scripts = ScriptRuntime.create(ScriptConfig.defaults());
+    }
+
+    @AfterAll static void stopScripts() {
+        scripts.close();
+    }
+
     @BeforeEach void start() {
         kb = SampleKnowledge.create();
-        scripts = ScriptRuntime.create(ScriptConfig.defaults());
         engine = InferenceEngine.builder(kb).scripts(new GraalScriptHost(scripts)).build();
         server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword("pw"), kb, engine);
         http = new Http(server.port());
@@ -48,7 +57,6 @@ class InferenceApiTest {
     @AfterEach void stop() {
         server.close();
         engine.close();
-        scripts.close();
     }
 
     private void setUpUserAndMouth() {

@@ -206,10 +206,6 @@
     }
   }
 
-  function list(frames, ctx) {
-    return el('ul', {}, frames.filter((f) => !ctx.visible || ctx.visible.has(f.name)).map((f) => item(f, ctx)));
-  }
-
   function item(f, ctx) {
     const kids = ctx.children.get(f.name) || [];
     const query = ctx.query;
@@ -244,6 +240,19 @@
     f.hasLinks ? el('i', { class: 'link-mark', title: 'has semantic links', text: '⇄' }) : null,
     kids.length && !open ? el('span', { class: 'count', text: String(kids.length) }) : null);
     return el('li', {}, el('div', { class: 'node' }, twisty, button), kids.length && open ? list(kids, ctx) : null);
+  }
+
+  // A class with thousands of runtime instances shows the first ones; the search box finds the others.
+  const MAX_CHILDREN_SHOWN = 200;
+
+  function list(frames, ctx) {
+    const shown = frames.filter((f) => !ctx.visible || ctx.visible.has(f.name));
+    const ul = el('ul', {}, shown.slice(0, MAX_CHILDREN_SHOWN).map((f) => item(f, ctx)));
+    if (shown.length > MAX_CHILDREN_SHOWN) {
+      ul.append(el('li', { class: 'muted small-text more', text: '… ' + (shown.length - MAX_CHILDREN_SHOWN)
+        + ' more; use the search box' }));
+    }
+    return ul;
   }
 
   // ---- one frame ----
@@ -778,6 +787,19 @@
     $('kb-version').textContent = 'knowledge base version ' + v;
   }
 
+  let treeRenderPending = false;
+
+  // Bursts of changes (an inference run, an import) re-render the tree once per animation frame, not per event.
+  function scheduleTreeRender() {
+    if (treeRenderPending) return;
+    treeRenderPending = true;
+    requestAnimationFrame(() => {
+      treeRenderPending = false;
+      renderTree();
+      renderNameLists();
+    });
+  }
+
   function applyChanges(events) {
     let touchedSelected = false;
     for (const e of events) {
@@ -791,8 +813,7 @@
     const order = state.frames.map((f) => f.name);
     for (const n of state.byName.keys()) if (!order.includes(n)) order.push(n);
     state.frames = order.filter((n) => state.byName.has(n)).map((n) => state.byName.get(n));
-    renderTree();
-    renderNameLists();
+    scheduleTreeRender();
     if (touchedSelected && state.frame) {
       if (touchedSelected.kind === 'removed') {
         const stale = $('stale-note');
