@@ -149,6 +149,26 @@ try {
   await tree.locator('[data-frame="AskUserName"]').click();
   await page.locator('#frame-title', { hasText: 'AskUserName' }).waitFor();
 
+  step = 'a frame someone else saved meanwhile is never overwritten';
+  await tree.locator('[data-frame="Greeting"]').click();
+  await page.locator('#frame-title', { hasText: 'Greeting' }).waitFor();
+  await page.fill('input[aria-label="mUser role"]', 'my edit');
+  const rival = await browser.newContext();
+  await rival.request.post(base + 'api/login', { data: { password } });
+  const theirs = await (await rival.request.get(base + 'api/frames/Greeting')).json();
+  theirs.expectedRevision = theirs.revision;
+  theirs.slots[0].role = 'their edit';
+  const put = await rival.request.put(base + 'api/frames/Greeting', { data: theirs });
+  check(put.status() === 200, 'the rival could not save Greeting: ' + put.status());
+  await rival.close();
+  await page.locator('#stale-note', { hasText: 'Someone else changed Greeting' }).waitFor();
+  await page.click('#save-button');
+  await page.locator('#frame-errors', { hasText: 'was changed by someone else' }).waitFor();
+  await page.click('#stale-note button');
+  await page.waitForFunction(() => document.querySelector('input[aria-label="mUser role"]').value === 'their edit');
+  await tree.locator('[data-frame="AskUserName"]').click();
+  await page.locator('#frame-title', { hasText: 'AskUserName' }).waitFor();
+
   step = 'reload and find the change';
   await page.reload();
   await page.locator('#frame-title', { hasText: 'AskUserName' }).waitFor();

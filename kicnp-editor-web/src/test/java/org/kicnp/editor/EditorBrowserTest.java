@@ -66,6 +66,7 @@ class EditorBrowserTest {
         assertThat(kb.contains("PINO")).isTrue();
         assertThat(kb.contains("Scout")).isFalse();
         assertThat(kb.require("AIBO").parent()).contains("Robot");
+        assertThat(kb.require("Greeting").ownSlot("mUser").flatMap(Slot::role)).contains("their edit");
     }
 
     private static int run(Path dir, List<String> command, Map<String, String> env, Path log, int seconds)
