@@ -28,7 +28,8 @@ import org.slf4j.LoggerFactory;
  * The JSON API under {@code /api/} as a Jetty core handler: routes a request to its resource, enforces the write
  * rules (JSON content type, same origin, logged in) and maps every failure to an HTTP status and a JSON body
  * {@code {"error": sentence, "problems": [...]}}: 400 bad request, 401 not logged in, 403 foreign origin,
- * 404 unknown frame, 409 stale revision, 422 validation problems, 501 feature not in this build.
+ * 404 unknown frame, 409 stale revision, 422 validation problems, 429 too many wrong passwords, 501 feature not in
+ * this build.
  */
 final class ApiHandler extends Handler.Abstract {
     private static final Logger LOG = LoggerFactory.getLogger(ApiHandler.class);
@@ -43,7 +44,7 @@ final class ApiHandler extends Handler.Abstract {
         this.kb = kb;
         this.json = json;
         this.frames = new FrameResource(kb);
-        this.login = new LoginResource(sessions);
+        this.login = new LoginResource(sessions, new LoginThrottle(java.time.Clock.systemUTC()));
         this.features = features;
     }
 

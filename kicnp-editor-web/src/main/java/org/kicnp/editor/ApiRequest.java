@@ -44,6 +44,11 @@ final class ApiRequest {
         return editor;
     }
 
+    /** The client's IP address, for throttling login attempts. */
+    String remoteAddress() {
+        return Request.getRemoteAddr(request);
+    }
+
     Optional<String> query(String name) {
         return Optional.ofNullable(Request.extractQueryParameters(request).getValue(name));
     }

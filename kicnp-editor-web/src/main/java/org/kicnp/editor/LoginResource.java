@@ -9,15 +9,18 @@ import org.eclipse.jetty.server.Request;
 /**
  * Login, logout and "who am I". A correct password opens a session whose token travels in an HttpOnly,
  * SameSite=Strict cookie; scripts may instead send {@code Authorization: Bearer <password>}. A wrong password is
- * refused with a sentence and a short pause that slows guessing.
+ * refused with a sentence and a short pause; repeated wrong passwords from one address are refused for a while
+ * ({@link LoginThrottle}).
  */
 final class LoginResource {
     private static final long WRONG_PASSWORD_PAUSE_MS = 300;
 
     private final Sessions sessions;
+    private final LoginThrottle throttle;
 
-    LoginResource(Sessions sessions) {
+    LoginResource(Sessions sessions, LoginThrottle throttle) {
         this.sessions = sessions;
+        this.throttle = throttle;
     }
 
     boolean editingPossible() {
@@ -46,8 +49,15 @@ final class LoginResource {
         if (!sessions.editingPossible()) {
             throw new ApiException(401, "Editing is disabled: no editor password is configured (editor.password).");
         }
+        String address = r.remoteAddress();
+        long wait = throttle.waitSeconds(address);
+        if (wait > 0) {
+            throw new ApiException(429, "Too many wrong passwords from this address: try again in " + wait
+                    + " seconds.");
+        }
         String password = FrameInput.text(r.body(), "password").orElse("");
         if (!sessions.matches(password)) {
+            throttle.failed(address);
             try {
                 Thread.sleep(WRONG_PASSWORD_PAUSE_MS);
             } catch (InterruptedException e) {
@@ -55,6 +65,7 @@ final class LoginResource {
             }
             throw new ApiException(401, "Wrong password: you were not logged in.");
         }
+        throttle.succeeded(address);
         HttpCookie cookie = HttpCookie.build(ApiRequest.SESSION_COOKIE, sessions.open())
                 .path("/").httpOnly(true).sameSite(HttpCookie.SameSite.STRICT)
                 .maxAge(sessions.lifetime().toSeconds()).build();

@@ -248,6 +248,18 @@ class EditorApiTest {
         assertThat(http.delete("/api/frames/Taro").statusCode()).isEqualTo(401);
     }
 
+    @Test void login_afterRepeatedWrongPasswords_isRefusedForAWhileEvenWithTheRightOne() {
+        for (int i = 0; i < LoginThrottle.MAX_FAILURES; i++) {
+            assertThat(http.login("guess " + i).statusCode()).isEqualTo(401);
+        }
+
+        HttpResponse<String> r = http.login(PASSWORD);
+
+        assertThat(r.statusCode()).isEqualTo(429);
+        assertThat(json(r).get("error").asText()).startsWith("Too many wrong passwords from this address");
+        assertThat(r.headers().firstValue("Set-Cookie")).isEmpty();
+    }
+
     @Test void login_setsHttpOnlyStrictCookie_andLogoutEndsTheSession() {
         HttpResponse<String> r = http.login(PASSWORD);
 
