@@ -106,6 +106,23 @@ final class Validator {
         for (Slot s : f.slots()) {
             checkSlot(f, s);
         }
+        if (f.provenance().durable()) {
+            checkNoRuntimeReferences(f);
+        }
+    }
+
+    /** A durable frame must reload on its own after a restart, when runtime frames are gone. */
+    private void checkNoRuntimeReferences(Frame f) {
+        f.parent().map(view).filter(p -> p.provenance() == Provenance.RUNTIME).ifPresent(p ->
+                problems.add(Problem.of(f.name(), "Frame '" + f.name() + "' is kept on disk but is a kind of '"
+                        + p.name() + "', which exists only at run time.")));
+        for (String r : References.of(f)) {
+            Frame target = view.apply(r);
+            if (target != null && target.provenance() == Provenance.RUNTIME) {
+                problems.add(Problem.of(f.name(), "Frame '" + f.name() + "' is kept on disk but refers to '" + r
+                        + "', which exists only at run time; copy the values it needs instead."));
+            }
+        }
     }
 
     private void checkSlot(Frame f, Slot own) {

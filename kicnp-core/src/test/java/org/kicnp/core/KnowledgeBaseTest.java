@@ -301,4 +301,18 @@ class KnowledgeBaseTest {
         assertThat(kb.countInstancesOf("User")).isEqualTo(4 * perThread);
         assertThat(kb.countInstancesOf("KnownUser") + kb.countInstancesOf("NewUser")).isEqualTo(4 * perThread);
     }
+
+    @Test
+    void add_whenDurableFrameRefersToRuntimeFrame_rejectsBecauseItCouldNotReload() {
+        KnowledgeBase kb = figure1();
+        kb.add(Frame.classFrame("Greeting").parent("Speech").slot(instanceSlot("mUser", "User")).build());
+        kb.add(Frame.instance("face7", "NewUser").provenance(Provenance.RUNTIME).build());
+        assertThatThrownBy(() -> kb.add(Frame.instance("g1", "Greeting").provenance(Provenance.LEARNED)
+                .slot(Slot.ofValue("mUser", DataType.INSTANCE, Value.ref("face7"))).build()))
+                .hasMessage("Frame 'g1' is kept on disk but refers to 'face7', which exists only at run time; "
+                        + "copy the values it needs instead.");
+        kb.add(Frame.instance("g2", "Greeting").provenance(Provenance.RUNTIME)
+                .slot(Slot.ofValue("mUser", DataType.INSTANCE, Value.ref("face7"))).build());
+        assertThat(kb.contains("g2")).isTrue();
+    }
 }
