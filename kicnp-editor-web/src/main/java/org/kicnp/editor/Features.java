@@ -5,8 +5,9 @@ import org.kicnp.core.KnowledgeBase;
 
 /**
  * The parts of the API that lean on other components: XML import/export (the paper's format), the script
- * syntax check and the view of a running inference engine. Each is a seam so the editor runs, read-only in those respects, when a component is left out;
- * an absent feature answers 501 with a sentence saying so, and {@code GET /api/session} tells the page.
+ * syntax check and the view of a running inference engine. Each is a seam so the editor runs without the
+ * component (the inference engine is optional per server); an absent feature answers 501 with a sentence
+ * saying so, and {@code GET /api/session} tells the page.
  */
 record Features(Xml xml, Scripts scripts, Inference inference) {
 

@@ -23,8 +23,9 @@ import org.kicnp.script.ScriptRuntime;
 
 /**
  * The page in a real headless Chromium: the Playwright script {@code editor-e2e/editor.e2e.mjs} drives it against
- * a real editor server (with an inference engine attached) on an ephemeral loopback port. Skipped, with a message, only when Chromium (or Node.js to
- * drive it) is not installed; screenshots are kept under {@code target/e2e/}.
+ * a real editor server (with an inference engine attached) on an ephemeral loopback port. Skipped, with a
+ * message, only when Chromium (or Node.js to drive it) is not installed; screenshots are kept under
+ * {@code target/e2e/}.
  */
 class EditorBrowserTest {
     private static final Path CHROMIUM = Path.of("/usr/bin/chromium");
@@ -60,7 +61,8 @@ class EditorBrowserTest {
         Slot mUser = kb.require("AskUserName").ownSlot("mUser").orElseThrow();
         assertThat(mUser.argument()).contains("KnownUser");
         assertThat(mUser.role()).contains("the visitor asked for a name");
-        assertThat(kb.value("AskUserName", "onInstantiate").map(v -> v.text())).contains("sendmsg(s.mMouth, “What is your name?”);");
+        assertThat(kb.value("AskUserName", "onInstantiate").map(v -> v.text()))
+                .contains("sendmsg(s.mMouth, “What is your name?”);");
         assertThat(artifacts.resolve("03-slot-table.png")).exists();
         assertThat(kb.instancesOf("AskUserName")).hasSize(1);
         assertThat(kb.contains("PINO")).isTrue();

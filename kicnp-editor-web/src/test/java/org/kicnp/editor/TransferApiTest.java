@@ -64,7 +64,8 @@ class TransferApiTest {
         http.login(PASSWORD);
         long version = kb.version();
 
-        HttpResponse<String> r = http.post("/api/import", importBody("<KNOWLEDGEBASE>\n<FRAME>\n  <NAME>Broken</NAME>\n</FRAMES>"));
+        HttpResponse<String> r = http.post("/api/import",
+                importBody("<KNOWLEDGEBASE>\n<FRAME>\n  <NAME>Broken</NAME>\n</FRAMES>"));
 
         assertThat(r.statusCode()).isEqualTo(422);
         JsonNode p = json(r).get("problems").get(0);
