@@ -21,13 +21,18 @@ final class StaticResources extends Handler.Abstract {
     static final String CSP = "default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' data:; "
             + "connect-src 'self'; font-src 'self'; base-uri 'none'; form-action 'none'; frame-ancestors 'none'";
     private static final String ROOT = "org/kicnp/editor/web/";
-    private static final Map<String, String> FILES = Map.of(
-            "/", "index.html",
-            "/index.html", "index.html",
-            "/editor.js", "editor.js",
-            "/highlight.js", "highlight.js",
-            "/editor.css", "editor.css",
-            "/favicon.svg", "favicon.svg");
+    private static final Map<String, String> FILES = Map.ofEntries(
+            Map.entry("/", "index.html"),
+            Map.entry("/index.html", "index.html"),
+            Map.entry("/editor.css", "editor.css"),
+            Map.entry("/favicon.svg", "favicon.svg"),
+            Map.entry("/editor.js", "editor.js"),
+            Map.entry("/base.js", "base.js"),
+            Map.entry("/tree.js", "tree.js"),
+            Map.entry("/frame.js", "frame.js"),
+            Map.entry("/slots.js", "slots.js"),
+            Map.entry("/inference.js", "inference.js"),
+            Map.entry("/highlight.js", "highlight.js"));
     private static final Map<String, String> TYPES = Map.of(
             "html", "text/html; charset=utf-8",
             "js", "text/javascript; charset=utf-8",
