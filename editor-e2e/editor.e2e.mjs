@@ -56,6 +56,14 @@ try {
   check(await tree.locator('[data-frame="Robovie"]').count() === 0, 'search did not hide Robovie');
   await page.fill('#search', '');
 
+  step = 'read-only before login: a frame opens but cannot be edited';
+  await tree.locator('[data-frame="Greeting"]').click();
+  await page.locator('#frame-title', { hasText: 'Greeting' }).waitFor();
+  check(await page.isDisabled('#save-button'), 'Save is enabled without a login');
+  check(await page.isDisabled('input[aria-label="mUser argument"]'), 'slot inputs are editable without a login');
+  check(await page.isVisible('#readonly-note'), 'the read-only note is not shown');
+  await page.screenshot({ path: join(artifacts, '00-read-only.png') });
+
   step = 'log in with a wrong password';
   await page.fill('#login-password', 'not the password');
   await page.press('#login-password', 'Enter');
