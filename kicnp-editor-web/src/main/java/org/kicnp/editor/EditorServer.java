@@ -89,7 +89,7 @@ public final class EditorServer implements AutoCloseable {
         });
         ws.setHandler(new Handler.Sequence(new ApiHandler(kb, json, sessions, features), new StaticResources()));
         context.setHandler(ws);
-        server.setHandler(context);
+        server.setHandler(new HostGuard(config.host(), context));
         kb.addListener(events);
         features.inference().attach(events);
         try {

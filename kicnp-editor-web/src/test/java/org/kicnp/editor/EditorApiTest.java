@@ -306,6 +306,18 @@ class EditorApiTest {
         assertThat(kb.contains("X")).isFalse();
     }
 
+    @Test void request_namingAForeignHost_isRefused_againstDnsRebinding() throws Exception {
+        try (java.net.Socket socket = new java.net.Socket("127.0.0.1", server.port())) {
+            socket.getOutputStream().write(("GET /api/frames HTTP/1.1\r\nHost: evil.example:" + server.port()
+                    + "\r\nConnection: close\r\n\r\n").getBytes(java.nio.charset.StandardCharsets.US_ASCII));
+            String answer = new String(socket.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+
+            assertThat(answer).startsWith("HTTP/1.1 421").doesNotContain("AskUserName");
+        }
+        assertThat(http.send(java.net.http.HttpRequest.newBuilder(java.net.URI.create(
+                "http://localhost:" + server.port() + "/api/frames"))).statusCode()).isEqualTo(200);
+    }
+
     @Test void readOnlyEditor_withoutPassword_refusesLogin() {
         try (EditorServer readOnly = EditorServer.start(EditorConfig.defaults().withPort(0), kb)) {
             Http other = new Http(readOnly.port());
