@@ -1,0 +1,31 @@
+package org.kicnp.core.xml;
+
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Optional;
+
+/** A FRAME element as read, before mapping: its simple items by tag, its links and slots, and where it starts. */
+record FrameElement(SourceLocation location, EnumMap<FrameTag, Located> items, List<LinkElement> linksTo,
+        List<LinkElement> linksFrom, List<SlotElement> slots) {
+
+    /** The item if it is given and not empty or NULL. */
+    Optional<Located> present(FrameTag tag) {
+        Located l = items.get(tag);
+        return l == null || l.absent() ? Optional.empty() : Optional.of(l);
+    }
+
+    /** The stripped NAME text, or empty when the frame has none. */
+    Optional<String> name() {
+        return present(FrameTag.NAME).map(Located::stripped);
+    }
+
+    /** Whether every slot names its TYPE, so the frame can be mapped without looking at other frames. */
+    boolean selfTyped() {
+        for (SlotElement s : slots) {
+            if (s.present(SlotTag.TYPE).isEmpty()) {
+                return false;
+            }
+        }
+        return true;
+    }
+}

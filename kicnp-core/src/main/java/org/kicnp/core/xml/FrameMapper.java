@@ -1,0 +1,301 @@
+package org.kicnp.core.xml;
+
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import java.util.Set;
+import org.kicnp.core.Condition;
+import org.kicnp.core.ConditionParser;
+import org.kicnp.core.ConditionSyntaxException;
+import org.kicnp.core.DataType;
+import org.kicnp.core.Frame;
+import org.kicnp.core.FrameKind;
+import org.kicnp.core.InvalidFrameException;
+import org.kicnp.core.Provenance;
+import org.kicnp.core.Relation;
+import org.kicnp.core.Slot;
+import org.kicnp.core.Value;
+
+/**
+ * Maps a {@link FrameElement} to a {@link Frame}: parses booleans, types, values and conditions, and reports each
+ * thing it cannot map at the element that says it. Checks that need other frames (parents, argument classes) are
+ * left to the knowledge base's batch validation; only an untyped slot's type is looked up elsewhere.
+ */
+final class FrameMapper {
+
+    /** Finds the type a slot is declared with on a frame or above it. */
+    interface TypeLookup {
+        Optional<DataType> declaredType(String frame, String slot);
+    }
+
+    private final Interner interner;
+    private final TypeLookup types;
+    private final List<LoadError> errors;
+    private String source;
+
+    FrameMapper(Interner interner, TypeLookup types, List<LoadError> errors) {
+        this.interner = interner;
+        this.types = types;
+        this.errors = errors;
+    }
+
+    /** Maps the frame, or answers empty after adding what is wrong to the errors. */
+    Optional<Frame> map(FrameElement e) {
+        source = e.location().source();
+        int before = errors.size();
+        Optional<Located> nameItem = e.present(FrameTag.NAME);
+        if (nameItem.isEmpty()) {
+            error(e.location(), "A FRAME needs a NAME.");
+            return Optional.empty();
+        }
+        String name = interner.intern(nameItem.get().stripped());
+        boolean instance = flag(e.items().get(FrameTag.ISINSTANCE), false);
+        Frame.Builder b = Frame.builder(name, instance ? FrameKind.INSTANCE : FrameKind.CLASS);
+        e.present(FrameTag.ISA).ifPresent(p -> b.parent(interner.intern(p.stripped())));
+        boolean learned = flag(e.items().get(FrameTag.LEARNED), false);
+        boolean runtime = flag(e.items().get(FrameTag.RUNTIME), false);
+        if (learned && runtime) {
+            error(e.items().get(FrameTag.RUNTIME).at(source), "Frame '" + name + "' cannot be both LEARNED and RUNTIME.");
+        }
+        b.provenance(runtime ? Provenance.RUNTIME : learned ? Provenance.LEARNED : Provenance.DECLARED);
+        e.present(FrameTag.PRIORITY).ifPresent(p -> {
+            try {
+                b.priority(Integer.parseInt(p.stripped()));
+            } catch (NumberFormatException x) {
+                error(p.at(source), "The PRIORITY of frame '" + name + "' is '" + p.stripped()
+                        + "', which is not a whole number.");
+            }
+        });
+        e.present(FrameTag.HASPART).ifPresent(p -> names(p, "HASPART", "PART").forEach(b::part));
+        for (LinkElement l : e.linksTo()) {
+            link(name, l, "SEMANTICLINKTO").ifPresent(lk -> b.linkTo(lk.relation(), lk.frame()));
+        }
+        for (LinkElement l : e.linksFrom()) {
+            link(name, l, "SEMANTICLINKFROM").ifPresent(lk -> b.linkFrom(lk.relation(), lk.frame()));
+        }
+        Set<String> slotNames = new HashSet<>();
+        for (SlotElement s : e.slots()) {
+            slot(name, e, s).ifPresent(slot -> {
+                if (slotNames.add(slot.name())) {
+                    b.slot(slot);
+                } else {
+                    error(slotAt(s), "Frame '" + name + "' has a second slot named '" + slot.name()
+                            + "'; slot names must be unique within a frame.");
+                }
+            });
+        }
+        if (errors.size() > before) {
+            return Optional.empty();
+        }
+        try {
+            return Optional.of(b.build());
+        } catch (InvalidFrameException x) {
+            error(nameItem.get().at(source), x.getMessage());
+            return Optional.empty();
+        }
+    }
+
+    private Optional<org.kicnp.core.SemanticLink> link(String frame, LinkElement l, String list) {
+        SourceLocation at = new SourceLocation(source, l.line(), l.column());
+        if (l.target().isEmpty() || l.target().get().absent()) {
+            error(at, "A LINK in " + list + " of frame '" + frame + "' needs a TARGET.");
+            return Optional.empty();
+        }
+        if (l.relation().isEmpty() || l.relation().get().absent()) {
+            error(at, "A LINK in " + list + " of frame '" + frame + "' needs a RELATION (SYNCHRONIZATION, "
+                    + "SUCCESSION, RESTRICTION or a name of your own).");
+            return Optional.empty();
+        }
+        Relation r = Relation.parse(l.relation().get().stripped());
+        return Optional.of(new org.kicnp.core.SemanticLink(r, interner.intern(l.target().get().stripped())));
+    }
+
+    private Optional<Slot> slot(String frame, FrameElement fe, SlotElement s) {
+        SourceLocation at = slotAt(s);
+        Optional<Located> nameItem = s.present(SlotTag.NAME);
+        if (nameItem.isEmpty()) {
+            error(at, "A SLOT of frame '" + frame + "' needs a NAME.");
+            return Optional.empty();
+        }
+        String name = interner.intern(nameItem.get().stripped());
+        String where = "Slot '" + name + "' of frame '" + frame + "'";
+        int before = errors.size();
+        DataType type = type(fe, s, name, where);
+        if (type == null) {
+            return Optional.empty();
+        }
+        Slot.Builder b = Slot.builder(name, type);
+        Optional<String> argument = s.present(SlotTag.ARGUMENT).map(a -> interner.intern(a.stripped()));
+        argument.ifPresent(b::argument);
+        s.present(SlotTag.CONDITION).ifPresent(c -> condition(c, where).ifPresent(b::condition));
+        Optional<Located> value = present(s, SlotTag.VALUE, type);
+        Optional<Located> dflt = present(s, SlotTag.DEFAULT, type);
+        if (value.isPresent() && dflt.isPresent()) {
+            error(dflt.get().at(source), where + " has both a VALUE and a DEFAULT; the paper allows one or the other "
+                    + "(Table 2).");
+        } else {
+            value.ifPresent(v -> value(v, type, argument, where, "VALUE").ifPresent(b::value));
+            dflt.ifPresent(v -> value(v, type, argument, where, "DEFAULT").ifPresent(b::defaultValue));
+        }
+        b.required(flag(s.facets().get(SlotTag.REQUIRED), false));
+        b.shared(flag(s.facets().get(SlotTag.SHARED), true));
+        b.unique(flag(s.facets().get(SlotTag.UNIQUE), false));
+        b.reactive(flag(s.facets().get(SlotTag.REACTIVE), true));
+        s.present(SlotTag.ROLE).ifPresent(r -> b.role(interner.intern(r.stripped())));
+        s.present(SlotTag.FROM).ifPresent(r -> b.from(interner.intern(r.stripped())));
+        s.present(SlotTag.FRAMERELATED).ifPresent(r -> b.frameRelated(interner.intern(r.stripped())));
+        s.present(SlotTag.FRAMELISTRELATED).ifPresent(r -> b.frameListRelated(names(r, "FRAMELISTRELATED", "ITEM")));
+        s.present(SlotTag.ONNEEDED).ifPresent(d -> b.onNeeded(d.text()));
+        s.present(SlotTag.ONADDED).ifPresent(d -> b.onAdded(d.text()));
+        s.present(SlotTag.ONREMOVED).ifPresent(d -> b.onRemoved(d.text()));
+        if (errors.size() > before) {
+            return Optional.empty();
+        }
+        try {
+            return Optional.of(b.build());
+        } catch (InvalidFrameException x) {
+            error(at, x.getMessage());
+            return Optional.empty();
+        }
+    }
+
+    /** A VALUE or DEFAULT that says something; for a list, {@code []} says "the empty list". */
+    private static Optional<Located> present(SlotElement s, SlotTag tag, DataType type) {
+        Located l = s.facets().get(tag);
+        if (l == null) {
+            return Optional.empty();
+        }
+        if (type == DataType.LIST && l.items().isEmpty() && l.stripped().equals("[]")) {
+            return Optional.of(l);
+        }
+        return l.absent() ? Optional.empty() : Optional.of(l);
+    }
+
+    private DataType type(FrameElement fe, SlotElement s, String name, String where) {
+        Optional<Located> t = s.present(SlotTag.TYPE);
+        if (t.isPresent()) {
+            Optional<DataType> parsed = DataType.parse(t.get().stripped());
+            if (parsed.isEmpty()) {
+                error(t.get().at(source), where + " has TYPE '" + t.get().stripped() + "', which is not a data type; "
+                        + "use TYPE_INSTANCE, TYPE_STR, TYPE_INT, TYPE_FLOAT, TYPE_BOOL, TYPE_FRAME or TYPE_LIST.");
+                return null;
+            }
+            return parsed.get();
+        }
+        Optional<DataType> inherited = fe.present(FrameTag.ISA)
+                .flatMap(p -> types.declaredType(p.stripped(), name));
+        if (inherited.isEmpty()) {
+            error(slotAt(s), where + " has no TYPE, and no frame above it declares a slot '" + name + "'.");
+            return null;
+        }
+        return inherited.get();
+    }
+
+    private Optional<Condition> condition(Located c, String where) {
+        try {
+            return Optional.of(ConditionParser.parse(c.text()));
+        } catch (ConditionSyntaxException x) {
+            errors.add(LoadError.at(conditionAt(c, x.column()), where + ": " + x.getMessage()));
+            return Optional.empty();
+        }
+    }
+
+    /** The place in the file of character {@code column} (1-based) of the condition after leading blanks. */
+    private SourceLocation conditionAt(Located c, int column) {
+        if (c.textColumn() <= 0) {
+            return c.at(source);
+        }
+        String raw = c.text();
+        int lead = 0;
+        while (lead < raw.length() && Character.isWhitespace(raw.charAt(lead))) {
+            lead++;
+        }
+        int target = Math.min(raw.length(), lead + column - 1);
+        int line = c.textLine();
+        int col = c.textColumn();
+        for (int i = 0; i < target; i++) {
+            if (raw.charAt(i) == '\n') {
+                line++;
+                col = 1;
+            } else {
+                col++;
+            }
+        }
+        return new SourceLocation(source, line, col);
+    }
+
+    private Optional<Value> value(Located v, DataType type, Optional<String> argument, String where, String what) {
+        try {
+            if (type == DataType.LIST) {
+                if (v.items().isEmpty() && !v.stripped().equals("[]")) {
+                    throw new IllegalArgumentException("A list value is written as ITEM elements, not as text.");
+                }
+                DataType itemType = argument.map(a -> DataType.parse(a).orElse(DataType.INSTANCE))
+                        .orElse(DataType.STRING);
+                List<Value> items = new ArrayList<>(v.items().size());
+                for (Located item : v.items()) {
+                    items.add(scalar(itemType, item));
+                }
+                return Optional.of(new Value.Lst(items));
+            }
+            if (!v.items().isEmpty()) {
+                throw new IllegalArgumentException("ITEM elements are only for TYPE_LIST slots.");
+            }
+            return Optional.of(scalar(type, v));
+        } catch (IllegalArgumentException x) {
+            error(v.at(source), where + " has a " + what + " that does not fit its type " + type.xmlName() + ": "
+                    + x.getMessage());
+            return Optional.empty();
+        }
+    }
+
+    private Value scalar(DataType type, Located v) {
+        return switch (type) {
+            case STRING -> new Value.Str(v.text().length() <= 16 ? interner.intern(v.text()) : v.text());
+            case INSTANCE, FRAME -> Value.ref(interner.intern(v.stripped()));
+            case LIST -> throw new IllegalArgumentException("lists inside lists are not supported.");
+            default -> Value.parse(type, v.stripped());
+        };
+    }
+
+    private List<String> names(Located l, String tag, String child) {
+        if (l.items().isEmpty()) {
+            error(l.at(source), tag + " lists its frames as " + child + " elements, not as text.");
+            return List.of();
+        }
+        List<String> out = new ArrayList<>(l.items().size());
+        for (Located item : l.items()) {
+            if (item.absent()) {
+                error(item.at(source), "An empty " + child + " in " + tag + "; give a frame name.");
+            } else {
+                out.add(interner.intern(item.stripped()));
+            }
+        }
+        return out;
+    }
+
+    /** Reads TRUE/FALSE (any case), or the words of the paper's Table 3 ("Checked", "No"); absent gives the default. */
+    boolean flag(Located l, boolean dflt) {
+        if (l == null || l.absent()) {
+            return dflt;
+        }
+        return switch (l.stripped().toUpperCase(Locale.ROOT)) {
+            case "TRUE", "CHECKED", "YES", "\u2713", "\u2714" -> true;
+            case "FALSE", "NO", "UNCHECKED" -> false;
+            default -> {
+                error(l.at(source), "'" + l.stripped() + "' is not a boolean; write TRUE or FALSE.");
+                yield dflt;
+            }
+        };
+    }
+
+    private SourceLocation slotAt(SlotElement s) {
+        return new SourceLocation(source, s.line(), s.column());
+    }
+
+    private void error(SourceLocation at, String message) {
+        errors.add(LoadError.at(at, message));
+    }
+}

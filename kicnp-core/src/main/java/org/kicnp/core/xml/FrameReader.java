@@ -1,0 +1,349 @@
+package org.kicnp.core.xml;
+
+import java.util.ArrayList;
+import java.util.EnumMap;
+import java.util.List;
+import java.util.function.Consumer;
+import javax.xml.stream.Location;
+import javax.xml.stream.XMLStreamConstants;
+import javax.xml.stream.XMLStreamException;
+import javax.xml.stream.XMLStreamReader;
+
+/**
+ * Reads one knowledge document with StAX into {@link FrameElement}s, handing each to a sink as soon as its FRAME
+ * element ends, so a large file is never held as a tree. Structural mistakes (unknown or repeated elements, stray
+ * text, attributes) are collected with their location and reading goes on; malformed XML ends the document.
+ */
+final class FrameReader {
+    private static final String XSI = "http://www.w3.org/2001/XMLSchema-instance";
+
+    private final XMLStreamReader r;
+    private final String source;
+    private final List<LoadError> errors;
+    private final Consumer<FrameElement> sink;
+
+    private FrameReader(XMLStreamReader r, String source, List<LoadError> errors, Consumer<FrameElement> sink) {
+        this.r = r;
+        this.source = source;
+        this.errors = errors;
+        this.sink = sink;
+    }
+
+    /** Reads the document, adding what is wrong to {@code errors} and every readable frame to {@code sink}. */
+    static void read(XMLStreamReader reader, String source, List<LoadError> errors, Consumer<FrameElement> sink) {
+        FrameReader fr = new FrameReader(reader, source, errors, sink);
+        try {
+            fr.document();
+        } catch (XMLStreamException e) {
+            errors.add(fr.syntaxError(e));
+        } finally {
+            try {
+                reader.close();
+            } catch (XMLStreamException ignored) {
+                // Nothing useful to report: the document has been read or has already failed.
+            }
+        }
+    }
+
+    private void document() throws XMLStreamException {
+        boolean sawRoot = false;
+        while (r.hasNext()) {
+            int event = r.next();
+            switch (event) {
+                case XMLStreamConstants.DTD -> {
+                    error(r.getLocation(), "DTDs are not allowed in knowledge files; remove the DOCTYPE declaration.");
+                    return;
+                }
+                case XMLStreamConstants.START_ELEMENT -> {
+                    sawRoot = true;
+                    root();
+                }
+                default -> { }
+            }
+        }
+        if (!sawRoot) {
+            errors.add(new LoadError(source, 1, 1, "The document has no root element; expected KNOWLEDGEBASE or FRAME."));
+        }
+    }
+
+    private void root() throws XMLStreamException {
+        String tag = r.getLocalName();
+        checkRootAttributes();
+        switch (tag) {
+            case "KNOWLEDGEBASE" -> {
+                while (nextChild("KNOWLEDGEBASE")) {
+                    if (r.getLocalName().equals("FRAME")) {
+                        noAttributes();
+                        sink.accept(frame());
+                    } else {
+                        unknown("KNOWLEDGEBASE", "FRAME");
+                    }
+                }
+            }
+            case "FRAME" -> sink.accept(frame());
+            default -> {
+                error(r.getLocation(), "The root element is '" + tag + "'; a knowledge file holds KNOWLEDGEBASE or "
+                        + "a single FRAME.");
+                skip();
+            }
+        }
+    }
+
+    private FrameElement frame() throws XMLStreamException {
+        SourceLocation at = here();
+        EnumMap<FrameTag, Located> items = new EnumMap<>(FrameTag.class);
+        List<LinkElement> to = new ArrayList<>(0);
+        List<LinkElement> from = new ArrayList<>(0);
+        List<SlotElement> slots = new ArrayList<>(8);
+        boolean slotList = false;
+        boolean sawTo = false;
+        boolean sawFrom = false;
+        while (nextChild("FRAME")) {
+            String tag = r.getLocalName();
+            noAttributes();
+            switch (tag) {
+                case "SLOTLIST" -> {
+                    if (slotList) {
+                        repeated("FRAME", tag);
+                    } else {
+                        slotList = true;
+                        slotList(slots);
+                    }
+                }
+                case "SEMANTICLINKTO" -> {
+                    if (sawTo) {
+                        repeated("FRAME", tag);
+                    } else {
+                        sawTo = true;
+                        links(tag, to);
+                    }
+                }
+                case "SEMANTICLINKFROM" -> {
+                    if (sawFrom) {
+                        repeated("FRAME", tag);
+                    } else {
+                        sawFrom = true;
+                        links(tag, from);
+                    }
+                }
+                default -> {
+                    FrameTag t = FrameTag.of(tag);
+                    if (t == null) {
+                        unknown("FRAME", "NAME, ISA, ISINSTANCE, DESCENDANTS, HASPART, SEMANTICLINKTO, "
+                                + "SEMANTICLINKFROM, LEARNED, RUNTIME, PRIORITY or SLOTLIST");
+                    } else if (items.containsKey(t)) {
+                        repeated("FRAME", tag);
+                    } else {
+                        items.put(t, leaf(tag, t.childTags()));
+                    }
+                }
+            }
+        }
+        return new FrameElement(at, items, to, from, slots);
+    }
+
+    private void slotList(List<SlotElement> slots) throws XMLStreamException {
+        while (nextChild("SLOTLIST")) {
+            noAttributes();
+            if (r.getLocalName().equals("SLOT")) {
+                slots.add(slot());
+            } else {
+                unknown("SLOTLIST", "SLOT");
+            }
+        }
+    }
+
+    private SlotElement slot() throws XMLStreamException {
+        Location start = r.getLocation();
+        EnumMap<SlotTag, Located> facets = new EnumMap<>(SlotTag.class);
+        while (nextChild("SLOT")) {
+            String tag = r.getLocalName();
+            noAttributes();
+            SlotTag t = SlotTag.of(tag);
+            if (t == null) {
+                unknown("SLOT", "NAME, TYPE, CONDITION, ARGUMENT, VALUE, DEFAULT, REQUIRED, SHARED, UNIQUE, ROLE, "
+                        + "FROM, FRAMERELATED, FRAMELISTRELATED, ONNEEDED, ONADDED, ONREMOVED or REACTIVE");
+            } else if (facets.containsKey(t)) {
+                repeated("SLOT", tag);
+            } else {
+                facets.put(t, leaf(tag, t.childTags()));
+            }
+        }
+        return new SlotElement(start.getLineNumber(), start.getColumnNumber(), facets);
+    }
+
+    private void links(String list, List<LinkElement> out) throws XMLStreamException {
+        while (nextChild(list)) {
+            noAttributes();
+            if (!r.getLocalName().equals("LINK")) {
+                unknown(list, "LINK");
+                continue;
+            }
+            Location start = r.getLocation();
+            Located relation = null;
+            Located target = null;
+            while (nextChild("LINK")) {
+                String tag = r.getLocalName();
+                noAttributes();
+                if (tag.equals("RELATION") && relation == null) {
+                    relation = leaf(tag, List.of());
+                } else if (tag.equals("TARGET") && target == null) {
+                    target = leaf(tag, List.of());
+                } else if (tag.equals("RELATION") || tag.equals("TARGET")) {
+                    repeated("LINK", tag);
+                } else {
+                    unknown("LINK", "RELATION and TARGET");
+                }
+            }
+            out.add(new LinkElement(start.getLineNumber(), start.getColumnNumber(),
+                    java.util.Optional.ofNullable(relation), java.util.Optional.ofNullable(target)));
+        }
+    }
+
+    /** Reads a simple element: text, or (where {@code childTags} allows) child elements that hold text. */
+    private Located leaf(String tag, List<String> childTags) throws XMLStreamException {
+        Location start = r.getLocation();
+        String text = "";
+        StringBuilder more = null;
+        int textLine = -1;
+        int textColumn = -1;
+        List<Located> items = List.of();
+        while (true) {
+            int event = r.next();
+            switch (event) {
+                case XMLStreamConstants.CHARACTERS, XMLStreamConstants.CDATA, XMLStreamConstants.SPACE -> {
+                    if (textLine < 0) {
+                        Location l = r.getLocation();
+                        textLine = l.getLineNumber();
+                        textColumn = l.getColumnNumber();
+                        text = r.getText();
+                    } else {
+                        if (more == null) {
+                            more = new StringBuilder(text);
+                        }
+                        more.append(r.getText());
+                    }
+                }
+                case XMLStreamConstants.START_ELEMENT -> {
+                    String child = r.getLocalName();
+                    noAttributes();
+                    if (childTags.contains(child)) {
+                        if (items.isEmpty()) {
+                            items = new ArrayList<>();
+                        }
+                        items.add(leaf(child, List.of()));
+                    } else {
+                        unknown(tag, childTags.isEmpty() ? "text only" : String.join(" or ", childTags));
+                    }
+                }
+                case XMLStreamConstants.END_ELEMENT -> {
+                    if (more != null) {
+                        text = more.toString();
+                    }
+                    if (!items.isEmpty() && !text.isBlank()) {
+                        error(start, "Element " + tag + " mixes text with " + String.join("/", childTags)
+                                + " elements; give one or the other.");
+                    }
+                    return new Located(text, items, start.getLineNumber(), start.getColumnNumber(),
+                            textLine < 0 ? start.getLineNumber() : textLine, textLine < 0 ? 0 : textColumn);
+                }
+                default -> { }
+            }
+        }
+    }
+
+    /** Moves to the next child element of {@code parent}; false at its end. Reports stray text other than NULL. */
+    private boolean nextChild(String parent) throws XMLStreamException {
+        while (true) {
+            int event = r.next();
+            switch (event) {
+                case XMLStreamConstants.START_ELEMENT -> {
+                    return true;
+                }
+                case XMLStreamConstants.END_ELEMENT -> {
+                    return false;
+                }
+                case XMLStreamConstants.CHARACTERS, XMLStreamConstants.CDATA -> {
+                    String t = r.getText().strip();
+                    if (!t.isEmpty() && !Located.isNull(t)) {
+                        error(r.getLocation(), "Text '" + abbreviate(t) + "' is not allowed directly inside "
+                                + parent + ".");
+                    }
+                }
+                default -> { }
+            }
+        }
+    }
+
+    private void unknown(String parent, String expected) throws XMLStreamException {
+        error(r.getLocation(), "Unknown element '" + r.getLocalName() + "' in " + parent + "; expected " + expected
+                + ".");
+        skip();
+    }
+
+    private void repeated(String parent, String tag) throws XMLStreamException {
+        error(r.getLocation(), parent + " has more than one " + tag + " element; give it once.");
+        skip();
+    }
+
+    /** Skips the current element and everything inside it. */
+    private void skip() throws XMLStreamException {
+        int depth = 1;
+        while (depth > 0) {
+            int event = r.next();
+            if (event == XMLStreamConstants.START_ELEMENT) {
+                depth++;
+            } else if (event == XMLStreamConstants.END_ELEMENT) {
+                depth--;
+            }
+        }
+    }
+
+    private void noAttributes() {
+        if (r.getAttributeCount() > 0) {
+            error(r.getLocation(), "Element " + r.getLocalName() + " has attribute '" + r.getAttributeLocalName(0)
+                    + "'; the format uses elements only.");
+        }
+    }
+
+    private void checkRootAttributes() {
+        for (int i = 0; i < r.getAttributeCount(); i++) {
+            if (!XSI.equals(r.getAttributeNamespace(i))) {
+                error(r.getLocation(), "Element " + r.getLocalName() + " has attribute '" + r.getAttributeLocalName(i)
+                        + "'; only xsi: schema attributes are allowed on the root.");
+            }
+        }
+    }
+
+    private SourceLocation here() {
+        Location l = r.getLocation();
+        return new SourceLocation(source, l.getLineNumber(), l.getColumnNumber());
+    }
+
+    private void error(Location l, String message) {
+        errors.add(new LoadError(source, l.getLineNumber(), l.getColumnNumber(), message));
+    }
+
+    private LoadError syntaxError(XMLStreamException e) {
+        Location l = e.getLocation();
+        String msg = e.getMessage() == null ? "unreadable XML" : e.getMessage();
+        int cut = msg.indexOf("\n at [");
+        if (cut >= 0) {
+            msg = msg.substring(0, cut);
+        }
+        msg = msg.strip();
+        if (msg.startsWith("ParseError at [")) {
+            int m = msg.indexOf("Message: ");
+            msg = m >= 0 ? msg.substring(m + 9) : msg;
+        }
+        if (!msg.endsWith(".")) {
+            msg = msg + ".";
+        }
+        return new LoadError(source, l == null ? 1 : l.getLineNumber(), l == null ? 1 : l.getColumnNumber(),
+                "The XML is not well-formed: " + msg);
+    }
+
+    private static String abbreviate(String t) {
+        return t.length() <= 40 ? t : t.substring(0, 37) + "...";
+    }
+}

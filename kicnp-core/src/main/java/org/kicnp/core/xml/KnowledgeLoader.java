@@ -1,0 +1,182 @@
+package org.kicnp.core.xml;
+
+import static java.util.Objects.requireNonNull;
+
+import java.io.IOException;
+import java.nio.file.FileVisitResult;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.SimpleFileVisitor;
+import java.nio.file.attribute.BasicFileAttributes;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.kicnp.core.BatchRejectedException;
+import org.kicnp.core.Change;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Problem;
+
+/**
+ * Reads knowledge files in the paper's XML format (Table 4) and loads them into a {@link KnowledgeBase}. All files of
+ * one call are read and mapped together, so a frame may name a parent defined in another file; then they are added
+ * in one batch, so a load either adds every frame or changes nothing. Every error is reported with its file, line and
+ * column in one {@link KnowledgeXmlException}.
+ */
+public final class KnowledgeLoader {
+
+    private KnowledgeLoader() {
+    }
+
+    /**
+     * The knowledge files named by the arguments: a file stands for itself, a directory for every {@code *.xml}
+     * file below it (recursively, sorted by path, skipping hidden files and directories such as {@code .kicnp}).
+     *
+     * @throws KnowledgeXmlException naming every path that does not exist
+     */
+    public static List<Path> expand(List<Path> filesOrDirs) {
+        requireNonNull(filesOrDirs, "filesOrDirs");
+        List<Path> out = new ArrayList<>();
+        List<LoadError> errors = new ArrayList<>();
+        Set<Path> seen = new HashSet<>();
+        for (Path p : filesOrDirs) {
+            if (Files.isDirectory(p)) {
+                for (Path f : xmlFilesBelow(p, errors)) {
+                    if (seen.add(f.toAbsolutePath().normalize())) {
+                        out.add(f);
+                    }
+                }
+            } else if (Files.isRegularFile(p)) {
+                if (seen.add(p.toAbsolutePath().normalize())) {
+                    out.add(p);
+                }
+            } else {
+                errors.add(new LoadError(p.toString(), 1, 1, "No such file or directory: '" + p + "'."));
+            }
+        }
+        if (!errors.isEmpty()) {
+            throw new KnowledgeXmlException(errors);
+        }
+        return out;
+    }
+
+    /**
+     * Reads and maps the frames of all the files without changing anything. Slots that leave out their TYPE take it
+     * from the nearest declaration up the ISA chain, among the frames being read and then in {@code context}.
+     *
+     * @throws KnowledgeXmlException listing every error found
+     */
+    public static List<SourcedFrame> parse(List<Path> filesOrDirs, KnowledgeBase context) {
+        return sourced(parseFiles(filesOrDirs, context));
+    }
+
+    /**
+     * Reads frames from text, such as a frame sent over the network or saved in the editor.
+     *
+     * @param sourceName what errors name as the source, e.g. {@code editor}
+     * @throws KnowledgeXmlException listing every error found
+     */
+    public static List<SourcedFrame> parseText(String xml, String sourceName, KnowledgeBase context) {
+        requireNonNull(xml, "xml");
+        requireNonNull(sourceName, "sourceName");
+        requireNonNull(context, "context");
+        LoadSession session = new LoadSession(context);
+        session.readText(xml, sourceName);
+        return sourced(session.finish());
+    }
+
+    /**
+     * Reads all the files and adds their frames to {@code kb} in one batch. On any error (in the XML, in a value, or
+     * against the frame model, such as an unknown parent or an IS-A cycle) nothing is added.
+     *
+     * @return the frames added, in file order
+     * @throws KnowledgeXmlException listing every error, each at the element it concerns
+     */
+    public static List<SourcedFrame> load(KnowledgeBase kb, List<Path> filesOrDirs) {
+        requireNonNull(kb, "kb");
+        List<ParsedFrame> parsed = parseFiles(filesOrDirs, kb);
+        List<Change> adds = new ArrayList<>(parsed.size());
+        for (ParsedFrame p : parsed) {
+            adds.add(new Change.Add(p.sourced().frame()));
+        }
+        try {
+            kb.apply(adds);
+        } catch (BatchRejectedException e) {
+            throw locate(e, parsed);
+        }
+        return sourced(parsed);
+    }
+
+    private static List<ParsedFrame> parseFiles(List<Path> filesOrDirs, KnowledgeBase context) {
+        requireNonNull(context, "context");
+        List<Path> files = expand(filesOrDirs);
+        LoadSession session = new LoadSession(context);
+        for (Path f : files) {
+            session.readFile(f);
+        }
+        return session.finish();
+    }
+
+    /** Points each problem of a rejected batch at the element it concerns: the slot, the ISA, or the frame. */
+    private static KnowledgeXmlException locate(BatchRejectedException e, List<ParsedFrame> parsed) {
+        Map<String, ParsedFrame> byName = new HashMap<>(parsed.size() * 2);
+        for (ParsedFrame p : parsed) {
+            byName.put(p.sourced().frame().name(), p);
+        }
+        List<LoadError> errors = new ArrayList<>(e.problems().size());
+        for (Problem problem : e.problems()) {
+            ParsedFrame p = byName.get(problem.frame());
+            SourceLocation at;
+            if (p == null) {
+                at = new SourceLocation("(knowledge base)", 1, 1);
+            } else if (problem.slot().isPresent()) {
+                at = p.slot(problem.slot().get());
+            } else if (problem.message().contains("' is a kind of '") && p.isa().isPresent()) {
+                at = p.isa().get();
+            } else {
+                at = p.sourced().location();
+            }
+            errors.add(LoadError.at(at, problem.message()));
+        }
+        errors.sort(java.util.Comparator.comparing(LoadError::source).thenComparingInt(LoadError::line)
+                .thenComparingInt(LoadError::column));
+        return new KnowledgeXmlException(errors);
+    }
+
+    private static List<SourcedFrame> sourced(List<ParsedFrame> parsed) {
+        List<SourcedFrame> out = new ArrayList<>(parsed.size());
+        for (ParsedFrame p : parsed) {
+            out.add(p.sourced());
+        }
+        return List.copyOf(out);
+    }
+
+    private static List<Path> xmlFilesBelow(Path dir, List<LoadError> errors) {
+        List<Path> files = new ArrayList<>();
+        try {
+            Files.walkFileTree(dir, new SimpleFileVisitor<>() {
+                @Override public FileVisitResult preVisitDirectory(Path d, BasicFileAttributes attrs) {
+                    return !d.equals(dir) && hidden(d) ? FileVisitResult.SKIP_SUBTREE : FileVisitResult.CONTINUE;
+                }
+
+                @Override public FileVisitResult visitFile(Path f, BasicFileAttributes attrs) {
+                    String name = f.getFileName().toString();
+                    if (attrs.isRegularFile() && name.endsWith(".xml") && !hidden(f)) {
+                        files.add(f);
+                    }
+                    return FileVisitResult.CONTINUE;
+                }
+            });
+        } catch (IOException e) {
+            errors.add(new LoadError(dir.toString(), 1, 1, "The directory cannot be read: " + e.getMessage() + "."));
+        }
+        files.sort(null);
+        return files;
+    }
+
+    private static boolean hidden(Path p) {
+        return p.getFileName() != null && p.getFileName().toString().startsWith(".");
+    }
+}

@@ -1,0 +1,258 @@
+package org.kicnp.core.xml;
+
+import static java.util.Objects.requireNonNull;
+
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.io.StringWriter;
+import java.io.UncheckedIOException;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.List;
+import org.kicnp.core.Condition;
+import org.kicnp.core.Frame;
+import org.kicnp.core.SemanticLink;
+import org.kicnp.core.Slot;
+import org.kicnp.core.Value;
+
+/**
+ * Writes frames in the paper's XML format (Table 4). Deterministic: the same frames give byte-identical output
+ * (UTF-8, two-space indentation, {@code \n} line ends). REQUIRED, SHARED and UNIQUE are always written, as the paper
+ * does; every other facet only when it differs from its default. DESCENDANTS are derived and never written. Frames
+ * of {@link org.kicnp.core.Provenance#RUNTIME} provenance are written like declared frames.
+ */
+public final class KnowledgeXmlWriter {
+    private static final String HEADER = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    private static final String[] INDENT = new String[12];
+
+    static {
+        for (int i = 0; i < INDENT.length; i++) {
+            INDENT[i] = "  ".repeat(i);
+        }
+    }
+
+    private final Writer out;
+
+    private KnowledgeXmlWriter(Writer out) {
+        this.out = out;
+    }
+
+    /** Writes a KNOWLEDGEBASE document holding the frames in the given order; flushes but does not close. */
+    public static void write(List<Frame> frames, Writer out) {
+        requireNonNull(frames, "frames");
+        requireNonNull(out, "out");
+        try {
+            Writer w = out instanceof BufferedWriter || out instanceof StringWriter ? out : new BufferedWriter(out, 1 << 16);
+            KnowledgeXmlWriter x = new KnowledgeXmlWriter(w);
+            w.write(HEADER);
+            w.write("<KNOWLEDGEBASE>\n");
+            for (Frame f : frames) {
+                x.frame(f, 1);
+            }
+            w.write("</KNOWLEDGEBASE>\n");
+            w.flush();
+        } catch (IOException e) {
+            throw new UncheckedIOException("Writing frames as XML failed: " + e.getMessage(), e);
+        }
+    }
+
+    /** Writes a KNOWLEDGEBASE file, replacing it atomically: readers see the old file or the whole new one. */
+    public static void write(List<Frame> frames, Path file) {
+        requireNonNull(file, "file");
+        Path abs = file.toAbsolutePath();
+        Path tmp = abs.resolveSibling("." + abs.getFileName() + ".tmp");
+        try {
+            try (BufferedWriter w = Files.newBufferedWriter(tmp, StandardCharsets.UTF_8)) {
+                write(frames, w);
+            }
+            try {
+                Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+            } catch (java.nio.file.AtomicMoveNotSupportedException e) {
+                Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING);
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException("Frames could not be written to '" + file + "': " + e.getMessage(), e);
+        } finally {
+            try {
+                Files.deleteIfExists(tmp);
+            } catch (IOException ignored) {
+                // The temporary file is hidden and rewritten by the next save.
+            }
+        }
+    }
+
+    /** A document whose root is the single FRAME element, as the paper prints one. */
+    public static String toXml(Frame frame) {
+        requireNonNull(frame, "frame");
+        StringWriter sw = new StringWriter(1024);
+        try {
+            sw.write(HEADER);
+            new KnowledgeXmlWriter(sw).frame(frame, 0);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        return sw.toString();
+    }
+
+    private void frame(Frame f, int d) throws IOException {
+        open("FRAME", d);
+        element("NAME", f.name(), d + 1);
+        if (f.parent().isPresent()) {
+            element("ISA", f.parent().get(), d + 1);
+        }
+        element("ISINSTANCE", f.isInstance() ? "TRUE" : "FALSE", d + 1);
+        if (f.learned()) {
+            element("LEARNED", "TRUE", d + 1);
+        }
+        if (f.priority() != 0) {
+            element("PRIORITY", Integer.toString(f.priority()), d + 1);
+        }
+        if (!f.parts().isEmpty()) {
+            open("HASPART", d + 1);
+            for (String p : f.parts()) {
+                element("PART", p, d + 2);
+            }
+            close("HASPART", d + 1);
+        }
+        links("SEMANTICLINKTO", f.linksTo(), d + 1);
+        links("SEMANTICLINKFROM", f.linksFrom(), d + 1);
+        if (!f.slots().isEmpty()) {
+            open("SLOTLIST", d + 1);
+            for (Slot s : f.slots()) {
+                slot(f, s, d + 2);
+            }
+            close("SLOTLIST", d + 1);
+        }
+        close("FRAME", d);
+    }
+
+    private void links(String tag, List<SemanticLink> links, int d) throws IOException {
+        if (links.isEmpty()) {
+            return;
+        }
+        open(tag, d);
+        for (SemanticLink l : links) {
+            open("LINK", d + 1);
+            element("RELATION", l.relation().name(), d + 2);
+            element("TARGET", l.frame(), d + 2);
+            close("LINK", d + 1);
+        }
+        close(tag, d);
+    }
+
+    private void slot(Frame f, Slot s, int d) throws IOException {
+        String where = "slot '" + s.name() + "' of frame '" + f.name() + "'";
+        open("SLOT", d);
+        element("NAME", s.name(), d + 1);
+        element("TYPE", s.type().xmlName(), d + 1);
+        if (!(s.condition() instanceof Condition.Any)) {
+            text("CONDITION", s.condition().text(), d + 1, where);
+        }
+        if (s.argument().isPresent()) {
+            text("ARGUMENT", s.argument().get(), d + 1, where);
+        }
+        if (s.value().isPresent()) {
+            value("VALUE", s.value().get(), d + 1, where);
+        }
+        if (s.defaultValue().isPresent()) {
+            value("DEFAULT", s.defaultValue().get(), d + 1, where);
+        }
+        element("REQUIRED", s.required() ? "TRUE" : "FALSE", d + 1);
+        element("SHARED", s.shared() ? "TRUE" : "FALSE", d + 1);
+        element("UNIQUE", s.unique() ? "TRUE" : "FALSE", d + 1);
+        if (s.role().isPresent()) {
+            text("ROLE", s.role().get(), d + 1, where);
+        }
+        if (s.from().isPresent()) {
+            text("FROM", s.from().get(), d + 1, where);
+        }
+        if (s.frameRelated().isPresent()) {
+            text("FRAMERELATED", s.frameRelated().get(), d + 1, where);
+        }
+        if (!s.frameListRelated().isEmpty()) {
+            open("FRAMELISTRELATED", d + 1);
+            for (String r : s.frameListRelated()) {
+                text("ITEM", r, d + 2, where);
+            }
+            close("FRAMELISTRELATED", d + 1);
+        }
+        if (s.onNeeded().isPresent()) {
+            text("ONNEEDED", s.onNeeded().get(), d + 1, where);
+        }
+        if (s.onAdded().isPresent()) {
+            text("ONADDED", s.onAdded().get(), d + 1, where);
+        }
+        if (s.onRemoved().isPresent()) {
+            text("ONREMOVED", s.onRemoved().get(), d + 1, where);
+        }
+        if (!s.reactive()) {
+            element("REACTIVE", "FALSE", d + 1);
+        }
+        close("SLOT", d);
+    }
+
+    private void value(String tag, Value v, int d, String where) throws IOException {
+        if (!(v instanceof Value.Lst list)) {
+            text(tag, v.text(), d, where);
+            return;
+        }
+        if (list.items().isEmpty()) {
+            element(tag, "[]", d);
+            return;
+        }
+        open(tag, d);
+        for (Value item : list.items()) {
+            if (item instanceof Value.Lst) {
+                throw new org.kicnp.core.KnowledgeException("The " + where + " holds a list inside a list, which the XML "
+                        + "format cannot write.");
+            }
+            text("ITEM", item.text(), d + 1, where);
+        }
+        close(tag, d);
+    }
+
+    private void open(String tag, int d) throws IOException {
+        indent(d);
+        out.write('<');
+        out.write(tag);
+        out.write(">\n");
+    }
+
+    private void close(String tag, int d) throws IOException {
+        indent(d);
+        out.write("</");
+        out.write(tag);
+        out.write(">\n");
+    }
+
+    /** An element whose text is known to need no escaping (names checked by the frame model, keywords, numbers). */
+    private void element(String tag, String text, int d) throws IOException {
+        indent(d);
+        out.write('<');
+        out.write(tag);
+        out.write('>');
+        out.write(text);
+        out.write("</");
+        out.write(tag);
+        out.write(">\n");
+    }
+
+    /** An element holding free text: escaped, or in CDATA when it holds markup characters or line breaks. */
+    private void text(String tag, String text, int d, String where) throws IOException {
+        indent(d);
+        out.write('<');
+        out.write(tag);
+        out.write('>');
+        XmlText.write(out, text, where);
+        out.write("</");
+        out.write(tag);
+        out.write(">\n");
+    }
+
+    private void indent(int d) throws IOException {
+        out.write(d < INDENT.length ? INDENT[d] : "  ".repeat(d));
+    }
+}

@@ -1,0 +1,211 @@
+package org.kicnp.core.xml;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.StringReader;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import javax.xml.stream.XMLInputFactory;
+import javax.xml.stream.XMLStreamException;
+import javax.xml.stream.XMLStreamReader;
+import org.kicnp.core.DataType;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Slot;
+
+/**
+ * The state of one load: documents are read one after another and each frame is mapped as soon as it is read, unless
+ * one of its slots leaves out its TYPE; those frames wait until every document is read, because the declaration they
+ * inherit the type from may come later. Frame names are checked for duplicates across all documents.
+ */
+final class LoadSession {
+    private final KnowledgeBase context;
+    private final XMLInputFactory factory = SecureXml.inputFactory();
+    private final long maxBytes = SecureXml.maxFileBytes();
+    private final List<LoadError> errors = new ArrayList<>();
+    private final Interner interner = new Interner();
+    private final FrameMapper mapper = new FrameMapper(interner, this::declaredType, errors);
+    private final List<ParsedFrame> parsed = new ArrayList<>();
+    private final List<FrameElement> pending = new ArrayList<>();
+    private final List<Integer> pendingSlots = new ArrayList<>();
+    private final Map<String, Frame> byName = new HashMap<>();
+    private final Map<String, FrameElement> unmapped = new HashMap<>();
+    private final Map<String, SourceLocation> seen = new HashMap<>();
+    private final Map<String, Located> descendants = new HashMap<>();
+
+    LoadSession(KnowledgeBase context) {
+        this.context = context;
+    }
+
+    void readFile(Path file) {
+        String source = file.toString();
+        try {
+            long size = Files.size(file);
+            if (size > maxBytes) {
+                errors.add(new LoadError(source, 1, 1, "The file is " + size + " bytes, more than the limit of "
+                        + maxBytes + " bytes (system property " + SecureXml.MAX_BYTES_PROPERTY + ")."));
+                return;
+            }
+            try (InputStream in = Files.newInputStream(file)) {
+                read(factory.createXMLStreamReader(source, in), source);
+            }
+        } catch (IOException e) {
+            errors.add(new LoadError(source, 1, 1, "The file cannot be read: " + e.getMessage() + "."));
+        } catch (XMLStreamException e) {
+            errors.add(new LoadError(source, 1, 1, "The file cannot be read as XML: " + e.getMessage()));
+        }
+    }
+
+    void readText(String xml, String source) {
+        if (xml.length() > maxBytes) {
+            errors.add(new LoadError(source, 1, 1, "The text is " + xml.length() + " characters, more than the limit of "
+                    + maxBytes + " (system property " + SecureXml.MAX_BYTES_PROPERTY + ")."));
+            return;
+        }
+        try {
+            read(factory.createXMLStreamReader(new StringReader(xml)), source);
+        } catch (XMLStreamException e) {
+            errors.add(new LoadError(source, 1, 1, "The text cannot be read as XML: " + e.getMessage()));
+        }
+    }
+
+    private void read(XMLStreamReader reader, String source) {
+        FrameReader.read(reader, source, errors, this::accept);
+    }
+
+    private void accept(FrameElement e) {
+        Optional<String> name = e.name();
+        if (name.isPresent()) {
+            SourceLocation first = seen.putIfAbsent(name.get(), e.location());
+            if (first != null) {
+                errors.add(LoadError.at(e.location(), "Frame '" + name.get() + "' is defined twice: here and at "
+                        + first + "."));
+                return;
+            }
+            e.present(FrameTag.DESCENDANTS).ifPresent(d -> descendants.put(name.get(), d));
+        }
+        if (e.selfTyped()) {
+            mapper.map(e).ifPresent(f -> add(f, e));
+        } else {
+            name.ifPresent(n -> unmapped.put(n, e));
+            pending.add(e);
+            pendingSlots.add(parsed.size());
+            parsed.add(null);
+        }
+    }
+
+    private void add(Frame f, FrameElement e) {
+        byName.put(f.name(), f);
+        parsed.add(located(f, e));
+    }
+
+    /** Maps the frames that waited for their slot types, checks DESCENDANTS, and answers every frame in file order. */
+    List<ParsedFrame> finish() {
+        for (int i = 0; i < pending.size(); i++) {
+            FrameElement e = pending.get(i);
+            int index = pendingSlots.get(i);
+            mapper.map(e).ifPresent(f -> {
+                byName.put(f.name(), f);
+                parsed.set(index, located(f, e));
+            });
+        }
+        descendants.forEach(this::checkDescendants);
+        if (!errors.isEmpty()) {
+            throw new KnowledgeXmlException(errors);
+        }
+        return parsed;
+    }
+
+    private static ParsedFrame located(Frame f, FrameElement e) {
+        SourceLocation at = e.location();
+        List<SourceLocation> slots = new ArrayList<>(e.slots().size());
+        for (SlotElement s : e.slots()) {
+            slots.add(new SourceLocation(at.source(), s.line(), s.column()));
+        }
+        Optional<SourceLocation> isa = e.present(FrameTag.ISA).map(l -> l.at(at.source()));
+        return new ParsedFrame(new SourcedFrame(f, at), isa, slots);
+    }
+
+    /** A non-empty DESCENDANTS item must name exactly the sub-frames the hierarchy gives the frame. */
+    private void checkDescendants(String name, Located declared) {
+        Set<String> listed = new LinkedHashSet<>();
+        for (Located item : declared.items()) {
+            listed.add(item.stripped());
+        }
+        if (declared.items().isEmpty()) {
+            errors.add(LoadError.at(declared.at(sourceOf(name)), "DESCENDANTS of frame '" + name
+                    + "' lists its frames as FRAME or ITEM elements, not as text."));
+            return;
+        }
+        Set<String> derived = new LinkedHashSet<>();
+        if (context.contains(name)) {
+            context.children(name).forEach(c -> derived.add(c.name()));
+        }
+        for (ParsedFrame p : parsed) {
+            if (p != null && p.sourced().frame().parent().filter(name::equals).isPresent()) {
+                derived.add(p.sourced().frame().name());
+            }
+        }
+        if (!new HashSet<>(listed).equals(new HashSet<>(derived))) {
+            errors.add(LoadError.at(declared.at(sourceOf(name)), "Frame '" + name + "' lists DESCENDANTS "
+                    + quote(listed) + ", but the frames that are a kind of it are " + quote(derived)
+                    + "; descendants are derived from ISA, so list them exactly or leave DESCENDANTS empty."));
+        }
+    }
+
+    private String sourceOf(String name) {
+        return seen.get(name).source();
+    }
+
+    private static String quote(Set<String> names) {
+        return names.isEmpty() ? "none" : "'" + String.join("', '", names) + "'";
+    }
+
+    /** The type of {@code slot} as declared on {@code frame} or the nearest frame above it that declares it. */
+    private Optional<DataType> declaredType(String frame, String slot) {
+        Set<String> visited = new HashSet<>();
+        String current = frame;
+        while (current != null && visited.add(current)) {
+            Frame f = byName.get(current);
+            if (f != null) {
+                Optional<Slot> own = f.ownSlot(slot);
+                if (own.isPresent()) {
+                    return Optional.of(own.get().type());
+                }
+                current = f.parent().orElse(null);
+                continue;
+            }
+            FrameElement e = unmapped.get(current);
+            if (e != null) {
+                for (SlotElement s : e.slots()) {
+                    if (s.present(SlotTag.NAME).filter(n -> n.stripped().equals(slot)).isPresent()) {
+                        Optional<DataType> t = s.present(SlotTag.TYPE).flatMap(l -> DataType.parse(l.stripped()));
+                        if (t.isPresent()) {
+                            return t;
+                        }
+                    }
+                }
+                current = e.present(FrameTag.ISA).map(Located::stripped).orElse(null);
+                continue;
+            }
+            Optional<Frame> known = context.frame(current);
+            if (known.isEmpty()) {
+                return Optional.empty();
+            }
+            Optional<Slot> own = known.get().ownSlot(slot);
+            if (own.isPresent()) {
+                return Optional.of(own.get().type());
+            }
+            current = known.get().parent().orElse(null);
+        }
+        return Optional.empty();
+    }
+}

@@ -1,0 +1,30 @@
+package org.kicnp.core.xml;
+
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * A simple element as read: its raw text, its ITEM-like children (themselves simple elements), where its start tag
+ * is and where its text begins (for pointing into a condition). Empty text or {@code NULL} means "absent".
+ */
+record Located(String text, List<Located> items, int line, int column, int textLine, int textColumn) {
+
+    /** The text without surrounding white space. */
+    String stripped() {
+        return text.strip();
+    }
+
+    /** Whether the element says nothing: empty, white space or {@code NULL}, and no items. */
+    boolean absent() {
+        return items.isEmpty() && isNull(text);
+    }
+
+    SourceLocation at(String source) {
+        return new SourceLocation(source, line, column);
+    }
+
+    static boolean isNull(String text) {
+        String t = text.strip();
+        return t.isEmpty() || t.length() == 4 && t.toUpperCase(Locale.ROOT).equals("NULL");
+    }
+}

@@ -1,0 +1,50 @@
+package org.kicnp.core.xml;
+
+import java.io.IOException;
+import java.io.Writer;
+
+/**
+ * Writes free text as XML element content. Text with {@code <}, {@code &} or a line break goes in CDATA, so scripts
+ * stay readable; other text is escaped. A carriage return would be lost to XML's line-end normalisation inside CDATA,
+ * so such text is escaped with character references instead.
+ */
+final class XmlText {
+    private XmlText() {
+    }
+
+    static void write(Writer out, String text, String where) throws IOException {
+        boolean markup = false;
+        boolean cr = false;
+        for (int i = 0; i < text.length(); i++) {
+            char c = text.charAt(i);
+            if (c == '<' || c == '&' || c == '\n') {
+                markup = true;
+            } else if (c == '\r') {
+                cr = true;
+            } else if (c < 0x20 && c != '\t' || c == 0xFFFE || c == 0xFFFF) {
+                throw new org.kicnp.core.KnowledgeException("The " + where + " holds the character U+"
+                        + String.format("%04X", (int) c) + ", which XML 1.0 cannot represent.");
+            }
+        }
+        if (markup && !cr) {
+            out.write("<![CDATA[");
+            out.write(text.replace("]]>", "]]]]><![CDATA[>"));
+            out.write("]]>");
+            return;
+        }
+        if (!markup && !cr && text.indexOf('>') < 0) {
+            out.write(text);
+            return;
+        }
+        for (int i = 0; i < text.length(); i++) {
+            char c = text.charAt(i);
+            switch (c) {
+                case '<' -> out.write("&lt;");
+                case '>' -> out.write("&gt;");
+                case '&' -> out.write("&amp;");
+                case '\r' -> out.write("&#13;");
+                default -> out.write(c);
+            }
+        }
+    }
+}
