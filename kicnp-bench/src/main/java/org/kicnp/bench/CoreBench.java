@@ -85,16 +85,12 @@ final class CoreBench implements Callable<Integer> {
         for (int i = 0; i < warmup; i++) {
             save(load(source), saved);
         }
-        Samples loadSeconds = new Samples();
-        Samples saveSeconds = new Samples();
+        Timed loads = new Timed();
+        Timed saves = new Timed();
         for (int i = 0; i < rounds; i++) {
             progress(err, "Timed round %d of %d", i + 1, rounds);
-            long start = System.nanoTime();
-            KnowledgeBase kb = load(source);
-            loadSeconds.add((System.nanoTime() - start) / 1e9);
-            start = System.nanoTime();
-            save(kb, saved);
-            saveSeconds.add((System.nanoTime() - start) / 1e9);
+            KnowledgeBase kb = loads.time(() -> load(source));
+            saves.time(() -> save(kb, saved));
         }
 
         progress(err, "Measuring the retained heap of one loaded knowledge base");
@@ -109,7 +105,7 @@ final class CoreBench implements Callable<Integer> {
         QueryTiming.Result query = timing.measure(rounds);
 
         new CoreReport(frames, generator.classCount(), generator.instanceCount(), bytes, warmup, rounds,
-                loadSeconds, saveSeconds, heapMb, query).print(out);
+                loads, saves, heapMb, query).print(out);
         return 0;
     }
 
@@ -130,8 +126,9 @@ final class CoreBench implements Callable<Integer> {
         return kb;
     }
 
-    private static void save(KnowledgeBase kb, Path file) throws IOException {
+    private static KnowledgeBase save(KnowledgeBase kb, Path file) {
         KnowledgeXmlWriter.write(kb.frames(), file);
+        return kb;
     }
 
     private static void progress(PrintWriter err, String format, Object... args) {

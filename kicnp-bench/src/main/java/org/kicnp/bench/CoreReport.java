@@ -22,13 +22,13 @@ final class CoreReport {
     private final long xmlBytes;
     private final int warmup;
     private final int rounds;
-    private final Samples load;
-    private final Samples save;
+    private final Timed load;
+    private final Timed save;
     private final double heapMb;
     private final QueryTiming.Result query;
 
-    CoreReport(int frames, int classes, int instances, long xmlBytes, int warmup, int rounds, Samples load,
-            Samples save, double heapMb, QueryTiming.Result query) {
+    CoreReport(int frames, int classes, int instances, long xmlBytes, int warmup, int rounds, Timed load,
+            Timed save, double heapMb, QueryTiming.Result query) {
         this.frames = frames;
         this.classes = classes;
         this.instances = instances;
@@ -50,10 +50,8 @@ final class CoreReport {
                 Runtime.getRuntime().availableProcessors(),
                 ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
         out.printf(Locale.ROOT, "%-30s %12s %14s  %-4s  %s%n", "measure", "figure", "target", "", "spread");
-        row(out, "load (XML -> knowledge base)", load.median(), "s", LOAD_TARGET_S,
-                String.format(Locale.ROOT, "min %.3f, max %.3f", load.min(), load.max()));
-        row(out, "save (knowledge base -> XML)", save.median(), "s", SAVE_TARGET_S,
-                String.format(Locale.ROOT, "min %.3f, max %.3f", save.min(), save.max()));
+        row(out, "load (XML -> knowledge base)", load.wall().median(), "s", LOAD_TARGET_S, spread(load));
+        row(out, "save (knowledge base -> XML)", save.wall().median(), "s", SAVE_TARGET_S, spread(save));
         row(out, "retained heap", heapMb, "MB", HEAP_TARGET_MB,
                 String.format(Locale.ROOT, "%.0f bytes per frame", heapMb * 1024 * 1024 / frames));
         row(out, "instancesOf per result", query.usPerResult(), "us", QUERY_TARGET_US, "all depths together (below)");
@@ -71,7 +69,12 @@ final class CoreReport {
     String json() {
         return String.format(Locale.ROOT,
                 "{\"frames\": %d, \"load_s\": %s, \"save_s\": %s, \"heap_mb\": %s, \"query_us_per_result\": %s}",
-                frames, number(load.median()), number(save.median()), number(heapMb), number(query.usPerResult()));
+                frames, number(load.wall().median()), number(save.wall().median()), number(heapMb), number(query.usPerResult()));
+    }
+
+    private static String spread(Timed t) {
+        String wall = String.format(Locale.ROOT, "min %.3f, max %.3f", t.wall().min(), t.wall().max());
+        return t.cpu().size() == 0 ? wall : wall + String.format(Locale.ROOT, "; process CPU %.3f s", t.cpu().median());
     }
 
     private static void row(PrintWriter out, String measure, double figure, String unit, double target, String note) {

@@ -80,7 +80,8 @@ public final class ValidateCommand implements Callable<Integer> {
             return 0;
         } catch (KnowledgeXmlException e) {
             List<LoadError> errors = e.errors();
-            errors.forEach(err -> out.println(err.format()));
+            // One error per line, whatever the message holds, so the output stays grep-able.
+            errors.forEach(err -> out.println(err.format().replaceAll("\\R\\s*", " ")));
             long sources = errors.stream().map(LoadError::source).distinct().count();
             out.printf("FAILED: %s in %s (of %s checked)%n", plural(errors.size(), "error"),
                     plural(sources, "file"), plural(files.size(), "file"));

@@ -89,6 +89,22 @@ class ValidateCommandTest {
     }
 
     @Test
+    void validate_whenSeveralFilesHaveErrors_printsOneLinePerErrorThenASummary() throws IOException {
+        Path base = dir.resolve("base.xml");
+        Files.writeString(base, BASE.replace("<ISA>System</ISA>", "<ISA>Sistem</ISA>"));
+        Path greeting = dir.resolve("greeting.xml");
+        Files.writeString(greeting, GREETING.formatted("Conversation"));
+
+        CliRun run = CliRun.of("validate", base.toString(), greeting.toString());
+
+        assertThat(run.exitCode()).isEqualTo(1);
+        assertThat(run.outLines()).filteredOn(l -> l.startsWith(base + ":")).hasSize(3)
+                .allSatisfy(l -> assertThat(l).matches(".*:\\d+:\\d+: .*'Sistem'.*"));
+        assertThat(run.outLines()).filteredOn(l -> l.startsWith(greeting + ":")).hasSize(1);
+        assertThat(run.outLines().get(run.outLines().size() - 1)).isEqualTo("FAILED: 4 errors in 2 files (of 2 files checked)");
+    }
+
+    @Test
     void validate_whenXmlMalformed_reportsTheLineAndFails() throws IOException {
         Path broken = dir.resolve("broken.xml");
         Files.writeString(broken, "<FRAME>\n  <NAME>Oops</NAME>\n  <ISINSTANCE>FALSE</ISINST>\n</FRAME>\n");
