@@ -51,11 +51,11 @@ final class FrameMapper {
             return Optional.empty();
         }
         String name = interner.intern(nameItem.get().stripped());
-        boolean instance = flag(e.items().get(FrameTag.ISINSTANCE), false);
+        boolean instance = flag(e.items().get(FrameTag.ISINSTANCE), "Frame '" + name + "'", "ISINSTANCE", false);
         Frame.Builder b = Frame.builder(name, instance ? FrameKind.INSTANCE : FrameKind.CLASS);
         e.present(FrameTag.ISA).ifPresent(p -> b.parent(interner.intern(p.stripped())));
-        boolean learned = flag(e.items().get(FrameTag.LEARNED), false);
-        boolean runtime = flag(e.items().get(FrameTag.RUNTIME), false);
+        boolean learned = flag(e.items().get(FrameTag.LEARNED), "Frame '" + name + "'", "LEARNED", false);
+        boolean runtime = flag(e.items().get(FrameTag.RUNTIME), "Frame '" + name + "'", "RUNTIME", false);
         if (learned && runtime) {
             error(e.items().get(FrameTag.RUNTIME).at(source), "Frame '" + name + "' cannot be both LEARNED and RUNTIME.");
         }
@@ -139,10 +139,10 @@ final class FrameMapper {
             value.ifPresent(v -> value(v, type, argument, where, "VALUE").ifPresent(b::value));
             dflt.ifPresent(v -> value(v, type, argument, where, "DEFAULT").ifPresent(b::defaultValue));
         }
-        b.required(flag(s.facets().get(SlotTag.REQUIRED), false));
-        b.shared(flag(s.facets().get(SlotTag.SHARED), true));
-        b.unique(flag(s.facets().get(SlotTag.UNIQUE), false));
-        b.reactive(flag(s.facets().get(SlotTag.REACTIVE), true));
+        b.required(flag(s.facets().get(SlotTag.REQUIRED), where, "REQUIRED", false));
+        b.shared(flag(s.facets().get(SlotTag.SHARED), where, "SHARED", true));
+        b.unique(flag(s.facets().get(SlotTag.UNIQUE), where, "UNIQUE", false));
+        b.reactive(flag(s.facets().get(SlotTag.REACTIVE), where, "REACTIVE", true));
         s.present(SlotTag.ROLE).ifPresent(r -> b.role(interner.intern(r.stripped())));
         s.present(SlotTag.FROM).ifPresent(r -> b.from(interner.intern(r.stripped())));
         s.present(SlotTag.FRAMERELATED).ifPresent(r -> b.frameRelated(interner.intern(r.stripped())));
@@ -277,7 +277,7 @@ final class FrameMapper {
     }
 
     /** Reads TRUE/FALSE (any case), or the words of the paper's Table 3 ("Checked", "No"); absent gives the default. */
-    boolean flag(Located l, boolean dflt) {
+    private boolean flag(Located l, String owner, String tag, boolean dflt) {
         if (l == null || l.absent()) {
             return dflt;
         }
@@ -285,7 +285,7 @@ final class FrameMapper {
             case "TRUE", "CHECKED", "YES", "\u2713", "\u2714" -> true;
             case "FALSE", "NO", "UNCHECKED" -> false;
             default -> {
-                error(l.at(source), "'" + l.stripped() + "' is not a boolean; write TRUE or FALSE.");
+                error(l.at(source), owner + " has " + tag + " '" + l.stripped() + "', which is not a boolean; write TRUE or FALSE.");
                 yield dflt;
             }
         };

@@ -325,7 +325,7 @@ final class FrameReader {
     }
 
     private LoadError syntaxError(XMLStreamException e) {
-        Location l = e.getLocation();
+        Location l = e.getLocation() != null ? e.getLocation() : r.getLocation();
         String msg = e.getMessage() == null ? "unreadable XML" : e.getMessage();
         int cut = msg.indexOf("\n at [");
         if (cut >= 0) {
@@ -339,8 +339,8 @@ final class FrameReader {
         if (!msg.endsWith(".")) {
             msg = msg + ".";
         }
-        return new LoadError(source, l == null ? 1 : l.getLineNumber(), l == null ? 1 : l.getColumnNumber(),
-                "The XML is not well-formed: " + msg);
+        return new LoadError(source, l == null ? 1 : Math.max(1, l.getLineNumber()),
+                l == null ? 1 : Math.max(1, l.getColumnNumber()), "The XML is not well-formed: " + msg);
     }
 
     private static String abbreviate(String t) {

@@ -34,7 +34,6 @@ final class SecureXml {
         f.setProperty(XMLInputFactory.RESOLVER, refuse);
         f.setProperty(WstxInputProperties.P_DTD_RESOLVER, refuse);
         f.setProperty(WstxInputProperties.P_ENTITY_RESOLVER, refuse);
-        f.setProperty(WstxInputProperties.P_UNDECLARED_ENTITY_RESOLVER, refuse);
         f.setProperty(WstxInputProperties.P_MAX_ELEMENT_DEPTH, MAX_DEPTH);
         f.setProperty(WstxInputProperties.P_MAX_TEXT_LENGTH, MAX_TEXT);
         f.setProperty(WstxInputProperties.P_MAX_ATTRIBUTE_SIZE, 64 * 1024);

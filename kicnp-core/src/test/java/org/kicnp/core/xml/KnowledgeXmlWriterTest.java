@@ -1,0 +1,203 @@
+package org.kicnp.core.xml;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.kicnp.core.ConditionParser;
+import org.kicnp.core.DataType;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.KnowledgeException;
+import org.kicnp.core.Provenance;
+import org.kicnp.core.Relation;
+import org.kicnp.core.Slot;
+import org.kicnp.core.Value;
+
+class KnowledgeXmlWriterTest {
+    @TempDir Path dir;
+
+    /** Frames that use every item and facet the format has, with text that needs escaping or CDATA. */
+    static List<Frame> everything() {
+        Frame root = Frame.classFrame("Machine").build();
+        Frame robot = Frame.classFrame("Robot").parent("Machine")
+                .part("Arm").part("Head")
+                .linkTo(Relation.Coordination.SYNCHRONIZATION, "Head")
+                .linkTo(new Relation.Named("guards"), "Arm")
+                .linkFrom(Relation.Coordination.RESTRICTION, "Machine")
+                .linkFrom(Relation.Coordination.SUCCESSION, "Head")
+                .priority(-7)
+                .slot(Slot.builder("name", DataType.STRING).required(true).shared(false).unique(true)
+                        .role("who it is").from("agent <robovie> & co").condition(ConditionParser.parse("matches \"R.*\""))
+                        .build())
+                .slot(Slot.builder("speed", DataType.FLOAT).defaultValue(Value.of(1.5))
+                        .condition(ConditionParser.parse("between 0 and 2.5")).build())
+                .slot(Slot.builder("count", DataType.INTEGER).value(Value.of(-42L))
+                        .condition(ConditionParser.parse(">= -100")).reactive(false).build())
+                .slot(Slot.builder("on", DataType.BOOLEAN).value(Value.of(true)).build())
+                .slot(Slot.builder("drink", DataType.STRING).value(Value.of("  tea with \"milk\" ]]> & <sugar>  "))
+                        .condition(ConditionParser.parse("in (\"tea\", \"coffee\", 'it\\'s')")).build())
+                .slot(Slot.builder("crlf", DataType.STRING).value(Value.of("line one\r\nline two\rthree")).build())
+                .slot(Slot.builder("scores", DataType.LIST).argument("TYPE_INT")
+                        .value(new Value.Lst(List.of(Value.of(1L), Value.of(2L), Value.of(3L)))).build())
+                .slot(Slot.builder("tags", DataType.LIST)
+                        .value(new Value.Lst(List.of(Value.of("a b"), Value.of(""), Value.of("<x>")))).build())
+                .slot(Slot.builder("empty", DataType.LIST).argument("TYPE_FLOAT").value(new Value.Lst(List.of())).build())
+                .slot(Slot.builder("friends", DataType.LIST).argument("Machine")
+                        .defaultValue(new Value.Lst(List.of(Value.ref("Arm"), Value.ref("Head")))).build())
+                .slot(Slot.builder("owner", DataType.FRAME).argument("Machine").value(Value.ref("Head"))
+                        .frameRelated("Arm").frameListRelated(List.of("Arm", "Head")).build())
+                .slot(Slot.builder("watch", DataType.STRING)
+                        .condition(ConditionParser.parse("js: s.count < 3 && s.on"))
+                        .onNeeded("return 'x';")
+                        .onAdded("if (a < b && c) {\n  sendmsg(s.mMouth, \"hi ]]> there\");\n}\n")
+                        .onRemoved("log('gone')").build())
+                .slot(Slot.builder("path", DataType.INSTANCE).argument("Machine")
+                        .condition(ConditionParser.parse(".name == owner.name")).build())
+                .build();
+        Frame arm = Frame.classFrame("Arm").parent("Machine").build();
+        Frame head = Frame.classFrame("Head").parent("Machine").build();
+        Frame learned = Frame.instance("user7", "Robot").provenance(Provenance.LEARNED)
+                .slot(Slot.ofValue("name", DataType.STRING, Value.of("Taro"))).build();
+        Frame runtime = Frame.instance("stimulus1", "Robot").provenance(Provenance.RUNTIME).build();
+        return List.of(root, robot, arm, head, learned, runtime);
+    }
+
+    private static String save(List<Frame> frames) {
+        StringWriter out = new StringWriter();
+        KnowledgeXmlWriter.write(frames, out);
+        return out.toString();
+    }
+
+    @Test
+    void write_thenParse_givesEqualFramesForEveryFacet() {
+        List<Frame> frames = everything().subList(0, 5);
+
+        List<Frame> back = KnowledgeLoader.parseText(save(frames), "saved", KnowledgeBase.create()).stream()
+                .map(SourcedFrame::frame).toList();
+
+        assertThat(back).isEqualTo(frames);
+        assertThat(back.get(4).learned()).isTrue();
+    }
+
+    @Test
+    void write_runtimeFrame_isWrittenLikeADeclaredOne() {
+        Frame runtime = everything().get(5);
+
+        Frame back = KnowledgeLoader.parseText(KnowledgeXmlWriter.toXml(runtime), "x", KnowledgeBase.create())
+                .getFirst().frame();
+
+        assertThat(back.provenance()).isEqualTo(Provenance.DECLARED);
+        assertThat(back).isEqualTo(runtime.toBuilder().provenance(Provenance.DECLARED).build());
+    }
+
+    @Test
+    void parse_runtimeElement_marksTheFrameRuntime() {
+        String xml = "<FRAME><NAME>s1</NAME><ISA>X</ISA><ISINSTANCE>TRUE</ISINSTANCE><RUNTIME>TRUE</RUNTIME></FRAME>";
+
+        Frame f = KnowledgeLoader.parseText(xml, "x", KnowledgeBase.create()).getFirst().frame();
+
+        assertThat(f.provenance()).isEqualTo(Provenance.RUNTIME);
+    }
+
+    @Test
+    void write_twice_isByteIdentical() throws Exception {
+        Path a = dir.resolve("a.xml");
+        Path b = dir.resolve("b.xml");
+
+        KnowledgeXmlWriter.write(everything(), a);
+        KnowledgeXmlWriter.write(everything(), b);
+
+        assertThat(Files.readAllBytes(a)).isEqualTo(Files.readAllBytes(b));
+        assertThat(Files.readString(a, StandardCharsets.UTF_8)).isEqualTo(save(everything()));
+    }
+
+    @Test
+    void write_usesThePapersLayout() {
+        Frame f = Frame.classFrame("Greeting").parent("Speech")
+                .slot(Slot.builder("mUser", DataType.INSTANCE).argument("KnownUser").required(true).unique(true).build())
+                .slot(Slot.builder("onInstantiate", DataType.STRING).value(Value.of("Sendmsg(s.mMouth, \u201CHi!\u201D);"))
+                        .unique(true).build())
+                .build();
+
+        assertThat(KnowledgeXmlWriter.toXml(f)).isEqualTo("""
+                <?xml version="1.0" encoding="UTF-8"?>
+                <FRAME>
+                  <NAME>Greeting</NAME>
+                  <ISA>Speech</ISA>
+                  <ISINSTANCE>FALSE</ISINSTANCE>
+                  <SLOTLIST>
+                    <SLOT>
+                      <NAME>mUser</NAME>
+                      <TYPE>TYPE_INSTANCE</TYPE>
+                      <ARGUMENT>KnownUser</ARGUMENT>
+                      <REQUIRED>TRUE</REQUIRED>
+                      <SHARED>TRUE</SHARED>
+                      <UNIQUE>TRUE</UNIQUE>
+                    </SLOT>
+                    <SLOT>
+                      <NAME>onInstantiate</NAME>
+                      <TYPE>TYPE_STR</TYPE>
+                      <VALUE>Sendmsg(s.mMouth, \u201CHi!\u201D);</VALUE>
+                      <REQUIRED>FALSE</REQUIRED>
+                      <SHARED>TRUE</SHARED>
+                      <UNIQUE>TRUE</UNIQUE>
+                    </SLOT>
+                  </SLOTLIST>
+                </FRAME>
+                """);
+    }
+
+    @Test
+    void write_scriptWithMarkup_usesCdataAndSplitsItsEnd() {
+        Frame f = Frame.classFrame("B").slot(Slot.builder("s", DataType.STRING).onAdded("if (a < b) x(\"]]>\");\n")
+                .build()).build();
+
+        assertThat(KnowledgeXmlWriter.toXml(f))
+                .contains("<ONADDED><![CDATA[if (a < b) x(\"]]]]><![CDATA[>\");\n]]></ONADDED>");
+    }
+
+    @Test
+    void toXml_thenParseText_givesTheFrameBack() {
+        Frame robot = everything().get(1);
+
+        List<SourcedFrame> back = KnowledgeLoader.parseText(KnowledgeXmlWriter.toXml(robot), "editor",
+                KnowledgeBase.create());
+
+        assertThat(back).singleElement().satisfies(s -> {
+            assertThat(s.frame()).isEqualTo(robot);
+            assertThat(s.location()).isEqualTo(new SourceLocation("editor", 2, 1));
+        });
+    }
+
+    @Test
+    void write_whenTextHasACharacterXmlCannotHold_saysWhich() {
+        Frame f = Frame.classFrame("B").slot(Slot.ofValue("s", DataType.STRING, Value.of("bell\u0007"))).build();
+
+        assertThatThrownBy(() -> KnowledgeXmlWriter.toXml(f))
+                .isInstanceOf(KnowledgeException.class)
+                .hasMessage("The slot 's' of frame 'B' holds the character U+0007, which XML 1.0 cannot represent.");
+    }
+
+    @Test
+    void loadSaveLoad_ofTheScenario_givesEqualFramesAndIdenticalBytes() throws Exception {
+        KnowledgeBase first = KnowledgeBase.create();
+        KnowledgeLoader.load(first, List.of(ScenarioFilesTest.TABLE5));
+        Path saved = dir.resolve("saved.xml");
+        KnowledgeXmlWriter.write(first.frames(), saved);
+
+        KnowledgeBase second = KnowledgeBase.create();
+        KnowledgeLoader.load(second, List.of(saved));
+        Path again = dir.resolve("again.xml");
+        KnowledgeXmlWriter.write(second.frames(), again);
+
+        assertThat(second.frames()).isEqualTo(first.frames());
+        assertThat(Files.readAllBytes(again)).isEqualTo(Files.readAllBytes(saved));
+    }
+}
