@@ -281,7 +281,14 @@ final class FrameMapper {
         if (l == null || l.absent()) {
             return dflt;
         }
-        return switch (l.stripped().toUpperCase(Locale.ROOT)) {
+        String t = l.stripped();
+        if (t.equalsIgnoreCase("TRUE")) {
+            return true;
+        }
+        if (t.equalsIgnoreCase("FALSE")) {
+            return false;
+        }
+        return switch (t.toUpperCase(Locale.ROOT)) {
             case "TRUE", "CHECKED", "YES", "\u2713", "\u2714" -> true;
             case "FALSE", "NO", "UNCHECKED" -> false;
             default -> {

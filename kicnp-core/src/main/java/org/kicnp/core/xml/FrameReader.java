@@ -15,8 +15,6 @@ import javax.xml.stream.XMLStreamReader;
  * text, attributes) are collected with their location and reading goes on; malformed XML ends the document.
  */
 final class FrameReader {
-    private static final String XSI = "http://www.w3.org/2001/XMLSchema-instance";
-
     private final XMLStreamReader r;
     private final String source;
     private final List<LoadError> errors;
@@ -213,9 +211,14 @@ final class FrameReader {
             switch (event) {
                 case XMLStreamConstants.CHARACTERS, XMLStreamConstants.CDATA, XMLStreamConstants.SPACE -> {
                     if (textLine < 0) {
-                        Location l = r.getLocation();
-                        textLine = l.getLineNumber();
-                        textColumn = l.getColumnNumber();
+                        // Only a condition's errors point inside its text; other elements skip the location.
+                        if (tag.equals("CONDITION")) {
+                            Location l = r.getLocation();
+                            textLine = l.getLineNumber();
+                            textColumn = l.getColumnNumber();
+                        } else {
+                            textLine = 0;
+                        }
                         text = r.getText();
                     } else {
                         if (more == null) {
@@ -245,7 +248,7 @@ final class FrameReader {
                                 + " elements; give one or the other.");
                     }
                     return new Located(text, items, start.getLineNumber(), start.getColumnNumber(),
-                            textLine < 0 ? start.getLineNumber() : textLine, textLine < 0 ? 0 : textColumn);
+                            textLine <= 0 ? start.getLineNumber() : textLine, textLine <= 0 ? 0 : textColumn);
                 }
                 default -> { }
             }
@@ -308,9 +311,10 @@ final class FrameReader {
 
     private void checkRootAttributes() {
         for (int i = 0; i < r.getAttributeCount(); i++) {
-            if (!XSI.equals(r.getAttributeNamespace(i))) {
-                error(r.getLocation(), "Element " + r.getLocalName() + " has attribute '" + r.getAttributeLocalName(i)
-                        + "'; only xsi: schema attributes are allowed on the root.");
+            String name = r.getAttributeLocalName(i);
+            if (!name.startsWith("xmlns") && !name.startsWith("xsi:")) {
+                error(r.getLocation(), "Element " + r.getLocalName() + " has attribute '" + name
+                        + "'; only xmlns and xsi: schema attributes are allowed on the root.");
             }
         }
     }

@@ -26,6 +26,8 @@ import org.kicnp.core.Problem;
  * column in one {@link KnowledgeXmlException}.
  */
 public final class KnowledgeLoader {
+    /** Inputs larger than this are mapped on a second thread while they are read. */
+    static final long PIPELINE_CHARS = 4L * 1024 * 1024;
 
     private KnowledgeLoader() {
     }
@@ -82,9 +84,13 @@ public final class KnowledgeLoader {
         requireNonNull(xml, "xml");
         requireNonNull(sourceName, "sourceName");
         requireNonNull(context, "context");
-        LoadSession session = new LoadSession(context);
-        session.readText(xml, sourceName);
-        return sourced(session.finish());
+        LoadSession session = new LoadSession(context, xml.length() > PIPELINE_CHARS);
+        try {
+            session.readText(xml, sourceName);
+            return sourced(session.finish());
+        } finally {
+            session.abandon();
+        }
     }
 
     /**
@@ -112,11 +118,23 @@ public final class KnowledgeLoader {
     private static List<ParsedFrame> parseFiles(List<Path> filesOrDirs, KnowledgeBase context) {
         requireNonNull(context, "context");
         List<Path> files = expand(filesOrDirs);
-        LoadSession session = new LoadSession(context);
+        long bytes = 0;
         for (Path f : files) {
-            session.readFile(f);
+            try {
+                bytes += Files.size(f);
+            } catch (IOException e) {
+                // Reported with its location when the file is read.
+            }
         }
-        return session.finish();
+        LoadSession session = new LoadSession(context, bytes > PIPELINE_CHARS);
+        try {
+            for (Path f : files) {
+                session.readFile(f);
+            }
+            return session.finish();
+        } finally {
+            session.abandon();
+        }
     }
 
     /** Points each problem of a rejected batch at the element it concerns: the slot, the ISA, or the frame. */

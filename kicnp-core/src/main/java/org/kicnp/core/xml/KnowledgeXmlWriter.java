@@ -2,7 +2,7 @@ package org.kicnp.core.xml;
 
 import static java.util.Objects.requireNonNull;
 
-import java.io.BufferedWriter;
+import java.io.OutputStreamWriter;
 import java.io.IOException;
 import java.io.StringWriter;
 import java.io.UncheckedIOException;
@@ -34,9 +34,9 @@ public final class KnowledgeXmlWriter {
         }
     }
 
-    private final Writer out;
+    private final CharSink out;
 
-    private KnowledgeXmlWriter(Writer out) {
+    private KnowledgeXmlWriter(CharSink out) {
         this.out = out;
     }
 
@@ -45,15 +45,15 @@ public final class KnowledgeXmlWriter {
         requireNonNull(frames, "frames");
         requireNonNull(out, "out");
         try {
-            Writer w = out instanceof BufferedWriter || out instanceof StringWriter ? out : new BufferedWriter(out, 1 << 16);
-            KnowledgeXmlWriter x = new KnowledgeXmlWriter(w);
-            w.write(HEADER);
-            w.write("<KNOWLEDGEBASE>\n");
+            CharSink sink = new CharSink(out);
+            KnowledgeXmlWriter x = new KnowledgeXmlWriter(sink);
+            sink.write(HEADER);
+            sink.write("<KNOWLEDGEBASE>\n");
             for (Frame f : frames) {
                 x.frame(f, 1);
             }
-            w.write("</KNOWLEDGEBASE>\n");
-            w.flush();
+            sink.write("</KNOWLEDGEBASE>\n");
+            sink.flush();
         } catch (IOException e) {
             throw new UncheckedIOException("Writing frames as XML failed: " + e.getMessage(), e);
         }
@@ -65,7 +65,7 @@ public final class KnowledgeXmlWriter {
         Path abs = file.toAbsolutePath();
         Path tmp = abs.resolveSibling("." + abs.getFileName() + ".tmp");
         try {
-            try (BufferedWriter w = Files.newBufferedWriter(tmp, StandardCharsets.UTF_8)) {
+            try (Writer w = new OutputStreamWriter(Files.newOutputStream(tmp), StandardCharsets.UTF_8)) {
                 write(frames, w);
             }
             try {
@@ -89,8 +89,10 @@ public final class KnowledgeXmlWriter {
         requireNonNull(frame, "frame");
         StringWriter sw = new StringWriter(1024);
         try {
-            sw.write(HEADER);
-            new KnowledgeXmlWriter(sw).frame(frame, 0);
+            CharSink sink = new CharSink(sw);
+            sink.write(HEADER);
+            new KnowledgeXmlWriter(sink).frame(frame, 0);
+            sink.flush();
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
@@ -101,7 +103,7 @@ public final class KnowledgeXmlWriter {
         open("FRAME", d);
         element("NAME", f.name(), d + 1);
         if (f.parent().isPresent()) {
-            element("ISA", f.parent().get(), d + 1);
+            text("ISA", f.parent().get(), d + 1, "frame '" + f.name() + "'");
         }
         element("ISINSTANCE", f.isInstance() ? "TRUE" : "FALSE", d + 1);
         if (f.learned()) {
@@ -113,12 +115,12 @@ public final class KnowledgeXmlWriter {
         if (!f.parts().isEmpty()) {
             open("HASPART", d + 1);
             for (String p : f.parts()) {
-                element("PART", p, d + 2);
+                text("PART", p, d + 2, "frame '" + f.name() + "'");
             }
             close("HASPART", d + 1);
         }
-        links("SEMANTICLINKTO", f.linksTo(), d + 1);
-        links("SEMANTICLINKFROM", f.linksFrom(), d + 1);
+        links("SEMANTICLINKTO", f, f.linksTo(), d + 1);
+        links("SEMANTICLINKFROM", f, f.linksFrom(), d + 1);
         if (!f.slots().isEmpty()) {
             open("SLOTLIST", d + 1);
             for (Slot s : f.slots()) {
@@ -129,15 +131,15 @@ public final class KnowledgeXmlWriter {
         close("FRAME", d);
     }
 
-    private void links(String tag, List<SemanticLink> links, int d) throws IOException {
+    private void links(String tag, Frame f, List<SemanticLink> links, int d) throws IOException {
         if (links.isEmpty()) {
             return;
         }
         open(tag, d);
         for (SemanticLink l : links) {
             open("LINK", d + 1);
-            element("RELATION", l.relation().name(), d + 2);
-            element("TARGET", l.frame(), d + 2);
+            text("RELATION", l.relation().name(), d + 2, "frame '" + f.name() + "'");
+            text("TARGET", l.frame(), d + 2, "frame '" + f.name() + "'");
             close("LINK", d + 1);
         }
         close(tag, d);

@@ -7,12 +7,14 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.Comparator;
 import java.util.HashSet;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import java.util.function.Consumer;
 import javax.xml.stream.XMLInputFactory;
 import javax.xml.stream.XMLStreamException;
 import javax.xml.stream.XMLStreamReader;
@@ -30,7 +32,13 @@ final class LoadSession {
     private final KnowledgeBase context;
     private final XMLInputFactory factory = SecureXml.inputFactory();
     private final long maxBytes = SecureXml.maxFileBytes();
+    /** Errors found while mapping (on the mapping thread when there is one) and after. */
     private final List<LoadError> errors = new ArrayList<>();
+    /** Errors found while reading, always on the calling thread. */
+    private final List<LoadError> readErrors = new ArrayList<>();
+    private final List<String> sources = new ArrayList<>();
+    private final Consumer<FrameElement> sink;
+    private final MappingPipeline pipeline;
     private final Interner interner = new Interner();
     private final FrameMapper mapper = new FrameMapper(interner, this::declaredType, errors);
     private final List<ParsedFrame> parsed = new ArrayList<>();
@@ -38,19 +46,32 @@ final class LoadSession {
     private final List<Integer> pendingSlots = new ArrayList<>();
     private final Map<String, Frame> byName = new HashMap<>();
     private final Map<String, FrameElement> unmapped = new HashMap<>();
-    private final Map<String, SourceLocation> seen = new HashMap<>();
+    private final Map<String, SourceLocation> seen = new HashMap<>(1 << 12);
     private final Map<String, Located> descendants = new HashMap<>();
 
-    LoadSession(KnowledgeBase context) {
+    /**
+     * @param pipelined whether to map frames on a second thread while reading, worth it for large inputs only
+     */
+    LoadSession(KnowledgeBase context, boolean pipelined) {
         this.context = context;
+        this.pipeline = pipelined ? new MappingPipeline(this::accept) : null;
+        this.sink = pipelined ? pipeline : this::accept;
+    }
+
+    /** Stops a mapping thread if the load ends early. */
+    void abandon() {
+        if (pipeline != null) {
+            pipeline.abandon();
+        }
     }
 
     void readFile(Path file) {
         String source = file.toString();
+        sources.add(source);
         try {
             long size = Files.size(file);
             if (size > maxBytes) {
-                errors.add(new LoadError(source, 1, 1, "The file is " + size + " bytes, more than the limit of "
+                readErrors.add(new LoadError(source, 1, 1, "The file is " + size + " bytes, more than the limit of "
                         + maxBytes + " bytes (system property " + SecureXml.MAX_BYTES_PROPERTY + ")."));
                 return;
             }
@@ -58,27 +79,28 @@ final class LoadSession {
                 read(factory.createXMLStreamReader(source, in), source);
             }
         } catch (IOException e) {
-            errors.add(new LoadError(source, 1, 1, "The file cannot be read: " + e.getMessage() + "."));
+            readErrors.add(new LoadError(source, 1, 1, "The file cannot be read: " + e.getMessage() + "."));
         } catch (XMLStreamException e) {
-            errors.add(new LoadError(source, 1, 1, "The file cannot be read as XML: " + e.getMessage()));
+            readErrors.add(new LoadError(source, 1, 1, "The file cannot be read as XML: " + e.getMessage()));
         }
     }
 
     void readText(String xml, String source) {
+        sources.add(source);
         if (xml.length() > maxBytes) {
-            errors.add(new LoadError(source, 1, 1, "The text is " + xml.length() + " characters, more than the limit of "
+            readErrors.add(new LoadError(source, 1, 1, "The text is " + xml.length() + " characters, more than the limit of "
                     + maxBytes + " (system property " + SecureXml.MAX_BYTES_PROPERTY + ")."));
             return;
         }
         try {
             read(factory.createXMLStreamReader(new StringReader(xml)), source);
         } catch (XMLStreamException e) {
-            errors.add(new LoadError(source, 1, 1, "The text cannot be read as XML: " + e.getMessage()));
+            readErrors.add(new LoadError(source, 1, 1, "The text cannot be read as XML: " + e.getMessage()));
         }
     }
 
     private void read(XMLStreamReader reader, String source) {
-        FrameReader.read(reader, source, errors, this::accept);
+        FrameReader.read(reader, source, readErrors, sink);
     }
 
     private void accept(FrameElement e) {
@@ -103,12 +125,21 @@ final class LoadSession {
     }
 
     private void add(Frame f, FrameElement e) {
-        byName.put(f.name(), f);
         parsed.add(located(f, e));
     }
 
     /** Maps the frames that waited for their slot types, checks DESCENDANTS, and answers every frame in file order. */
     List<ParsedFrame> finish() {
+        if (pipeline != null) {
+            pipeline.finish();
+        }
+        if (!pending.isEmpty()) {
+            for (ParsedFrame p : parsed) {
+                if (p != null) {
+                    byName.put(p.sourced().frame().name(), p.sourced().frame());
+                }
+            }
+        }
         for (int i = 0; i < pending.size(); i++) {
             FrameElement e = pending.get(i);
             int index = pendingSlots.get(i);
@@ -118,17 +149,32 @@ final class LoadSession {
             });
         }
         descendants.forEach(this::checkDescendants);
-        if (!errors.isEmpty()) {
-            throw new KnowledgeXmlException(errors);
+        if (!errors.isEmpty() || !readErrors.isEmpty()) {
+            throw new KnowledgeXmlException(inDocumentOrder());
         }
         return parsed;
     }
 
+    /** All errors by file (in reading order), line and column, whichever thread found them. */
+    private List<LoadError> inDocumentOrder() {
+        Map<String, Integer> order = new HashMap<>();
+        for (String s : sources) {
+            order.putIfAbsent(s, order.size());
+        }
+        List<LoadError> all = new ArrayList<>(readErrors.size() + errors.size());
+        all.addAll(readErrors);
+        all.addAll(errors);
+        all.sort(Comparator.comparingInt((LoadError e) -> order.getOrDefault(e.source(), Integer.MAX_VALUE))
+                .thenComparingInt(LoadError::line).thenComparingInt(LoadError::column));
+        return all;
+    }
+
     private static ParsedFrame located(Frame f, FrameElement e) {
         SourceLocation at = e.location();
-        List<SourceLocation> slots = new ArrayList<>(e.slots().size());
-        for (SlotElement s : e.slots()) {
-            slots.add(new SourceLocation(at.source(), s.line(), s.column()));
+        long[] slots = new long[e.slots().size()];
+        for (int i = 0; i < slots.length; i++) {
+            SlotElement s = e.slots().get(i);
+            slots[i] = (long) s.line() << 32 | s.column();
         }
         Optional<SourceLocation> isa = e.present(FrameTag.ISA).map(l -> l.at(at.source()));
         return new ParsedFrame(new SourcedFrame(f, at), isa, slots);

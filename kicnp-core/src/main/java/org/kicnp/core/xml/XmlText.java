@@ -1,7 +1,6 @@
 package org.kicnp.core.xml;
 
 import java.io.IOException;
-import java.io.Writer;
 
 /**
  * Writes free text as XML element content. Text with {@code <}, {@code &} or a line break goes in CDATA, so scripts
@@ -12,7 +11,7 @@ final class XmlText {
     private XmlText() {
     }
 
-    static void write(Writer out, String text, String where) throws IOException {
+    static void write(CharSink out, String text, String where) throws IOException {
         boolean markup = false;
         boolean cr = false;
         for (int i = 0; i < text.length(); i++) {
@@ -21,6 +20,13 @@ final class XmlText {
                 markup = true;
             } else if (c == '\r') {
                 cr = true;
+            } else if (Character.isSurrogate(c)) {
+                if (Character.isHighSurrogate(c) && i + 1 < text.length() && Character.isLowSurrogate(text.charAt(i + 1))) {
+                    i++;
+                } else {
+                    throw new org.kicnp.core.KnowledgeException("The " + where + " holds a lone surrogate U+"
+                            + String.format("%04X", (int) c) + ", which is not a character and cannot be written.");
+                }
             } else if (c < 0x20 && c != '\t' || c == 0xFFFE || c == 0xFFFF) {
                 throw new org.kicnp.core.KnowledgeException("The " + where + " holds the character U+"
                         + String.format("%04X", (int) c) + ", which XML 1.0 cannot represent.");

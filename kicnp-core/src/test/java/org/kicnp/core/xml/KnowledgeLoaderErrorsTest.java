@@ -119,9 +119,9 @@ class KnowledgeLoaderErrorsTest {
 
         assertThat(errors).hasSize(3);
         assertThat(errors.get(0)).startsWith(a + ":8:7: Unknown element 'REQIURED' in SLOT; expected NAME, TYPE");
-        assertThat(errors.get(1)).startsWith(a + ":12:3: Unknown element 'COLOUR' in FRAME; expected NAME, ISA");
-        assertThat(errors.get(2)).isEqualTo(a + ":9:7: Slot 's' of frame 'X' has a VALUE that does not fit its "
+        assertThat(errors.get(1)).isEqualTo(a + ":9:7: Slot 's' of frame 'X' has a VALUE that does not fit its "
                 + "type TYPE_INT: 'one' is not an integer.");
+        assertThat(errors.get(2)).startsWith(a + ":12:3: Unknown element 'COLOUR' in FRAME; expected NAME, ISA");
     }
 
     @Test

@@ -138,4 +138,56 @@ class KnowledgeLoaderTest {
         assertThat(move.priority()).isEqualTo(3);
         assertThat(kb.linksInto("Arm")).hasSize(1);
     }
+
+    @Test
+    void parseText_largeInput_isMappedWhileReadingWithTheSameResultAndErrorOrder() {
+        List<Frame> frames = XmlBenchMain.generate(3600);
+        java.io.StringWriter out = new java.io.StringWriter();
+        KnowledgeXmlWriter.write(frames, out);
+        String xml = out.toString();
+        assertThat((long) xml.length()).isGreaterThan(KnowledgeLoader.PIPELINE_CHARS);
+
+        List<SourcedFrame> back = KnowledgeLoader.parseText(xml, "big", KnowledgeBase.create());
+        assertThat(back).extracting(SourcedFrame::frame).isEqualTo(frames);
+
+        String broken = xml.replace("<NAME>C10</NAME>", "<NAME>C10</NAME><COLOUR>red</COLOUR>")
+                .replaceFirst("<VALUE>10</VALUE>", "<VALUE>ten</VALUE>");
+        KnowledgeXmlException e = org.assertj.core.api.Assertions.catchThrowableOfType(KnowledgeXmlException.class,
+                () -> KnowledgeLoader.parseText(broken, "big", KnowledgeBase.create()));
+        assertThat(e.errors()).extracting(LoadError::message).satisfiesExactly(
+                m -> assertThat(m).startsWith("Unknown element 'COLOUR' in FRAME"),
+                m -> assertThat(m).isEqualTo("Slot 'count' of frame 'C10' has a VALUE that does not fit its type "
+                        + "TYPE_INT: 'ten' is not an integer."));
+    }
+
+    @Test
+    void load_schemaAttributesOnTheRoot_areAllowedButOtherAttributesAreErrors() throws IOException {
+        Path ok = file("ok.xml", "<KNOWLEDGEBASE xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" "
+                + "xsi:noNamespaceSchemaLocation=\"kicnp-kb.xsd\"><FRAME><NAME>A</NAME></FRAME></KNOWLEDGEBASE>");
+        Path bad = file("bad.xml", "<KNOWLEDGEBASE>\n  <FRAME id=\"1\"><NAME>B</NAME></FRAME>\n</KNOWLEDGEBASE>");
+
+        assertThat(KnowledgeLoader.parse(List.of(ok), KnowledgeBase.create())).hasSize(1);
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> KnowledgeLoader.parse(List.of(bad),
+                        KnowledgeBase.create()))
+                .isInstanceOf(KnowledgeXmlException.class)
+                .hasMessage(bad + ":2:3: Element FRAME has attribute 'id'; the format uses elements only.");
+    }
+
+    @Test
+    void load_conditionsInCdataOrEscaped_areParsed() throws IOException {
+        Path a = file("a.xml", """
+                <FRAME>
+                  <NAME>X</NAME>
+                  <SLOTLIST>
+                    <SLOT><NAME>a</NAME><TYPE>TYPE_INT</TYPE><CONDITION>&lt;= 5</CONDITION></SLOT>
+                    <SLOT><NAME>b</NAME><TYPE>TYPE_INT</TYPE><CONDITION><![CDATA[js: s.a < 3 && s.b]]></CONDITION></SLOT>
+                  </SLOTLIST>
+                </FRAME>
+                """);
+
+        Frame x = KnowledgeLoader.parse(List.of(a), KnowledgeBase.create()).getFirst().frame();
+
+        assertThat(x.ownSlot("a").orElseThrow().condition().text()).isEqualTo("<= 5");
+        assertThat(x.ownSlot("b").orElseThrow().condition().text()).isEqualTo("js: s.a < 3 && s.b");
+    }
 }

@@ -29,7 +29,7 @@ class KnowledgeXmlWriterTest {
         Frame robot = Frame.classFrame("Robot").parent("Machine")
                 .part("Arm").part("Head")
                 .linkTo(Relation.Coordination.SYNCHRONIZATION, "Head")
-                .linkTo(new Relation.Named("guards"), "Arm")
+                .linkTo(new Relation.Named("guards <&> \u00FC"), "Arm")
                 .linkFrom(Relation.Coordination.RESTRICTION, "Machine")
                 .linkFrom(Relation.Coordination.SUCCESSION, "Head")
                 .priority(-7)
