@@ -54,7 +54,9 @@ final class CoreReport {
         row(out, "save (knowledge base -> XML)", save.wall().median(), "s", SAVE_TARGET_S, spread(save));
         row(out, "retained heap", heapMb, "MB", HEAP_TARGET_MB,
                 String.format(Locale.ROOT, "%.0f bytes per frame", heapMb * 1024 * 1024 / frames));
-        row(out, "instancesOf per result", query.usPerResult(), "us", QUERY_TARGET_US, "all depths together (below)");
+        row(out, "instancesOf per result", query.usPerResult(), "us", QUERY_TARGET_US, Double.isNaN(query.cpuUsPerResult())
+                ? "all depths together (below)"
+                : "all depths together (below); thread CPU " + number(query.cpuUsPerResult()) + " us");
         out.println();
         out.printf(Locale.ROOT, "%-8s %8s %16s %14s%n", "depth", "classes", "results/query", "us/result");
         for (QueryTiming.Depth d : query.depths()) {

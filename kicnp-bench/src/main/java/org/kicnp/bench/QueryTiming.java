@@ -1,5 +1,7 @@
 package org.kicnp.bench;
 
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
@@ -21,8 +23,11 @@ final class QueryTiming {
     record Depth(int depth, int classes, double resultsPerQuery, double usPerResult) {
     }
 
-    /** The overall cost per result, median over rounds, and its break-down by depth. */
-    record Result(double usPerResult, List<Depth> depths) {
+    /**
+     * The overall cost per result by the wall clock, median over rounds, the same by the querying thread's CPU time
+     * (NaN when the JVM cannot tell it), and the wall-clock break-down by depth.
+     */
+    record Result(double usPerResult, double cpuUsPerResult, List<Depth> depths) {
     }
 
     private final KnowledgeBase kb;
@@ -73,7 +78,11 @@ final class QueryTiming {
         queriesByDepth.forEach(q -> perDepth.add(new Samples()));
         long[] resultsPerPass = queriesByDepth.stream().mapToLong(this::pass).toArray();
         Samples overall = new Samples();
+        Samples overallCpu = new Samples();
+        ThreadMXBean threads = ManagementFactory.getThreadMXBean();
+        boolean cpuTimed = threads.isCurrentThreadCpuTimeSupported();
         for (int r = 0; r < rounds; r++) {
+            long cpuStart = cpuTimed ? threads.getCurrentThreadCpuTime() : 0;
             long nanos = 0;
             long results = 0;
             for (int d = 0; d < queriesByDepth.size(); d++) {
@@ -89,13 +98,16 @@ final class QueryTiming {
                 results += got;
             }
             overall.add(nanos / 1000.0 / results);
+            if (cpuTimed) {
+                overallCpu.add((threads.getCurrentThreadCpuTime() - cpuStart) / 1000.0 / results);
+            }
         }
         List<Depth> depths = new ArrayList<>();
         for (int d = 0; d < queriesByDepth.size(); d++) {
             int n = queriesByDepth.get(d).size();
             depths.add(new Depth(depthNumbers.get(d), n, (double) resultsPerPass[d] / n, perDepth.get(d).median()));
         }
-        return new Result(overall.median(), depths);
+        return new Result(overall.median(), overallCpu.size() == 0 ? Double.NaN : overallCpu.median(), depths);
     }
 
     /** One query on each class; returns the number of results, and keeps them from being optimised away. */
