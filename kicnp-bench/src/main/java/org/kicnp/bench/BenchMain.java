@@ -13,6 +13,7 @@ import picocli.CommandLine.Command;
         subcommands = {
             CommandLine.HelpCommand.class,
             CoreBench.class,
+            GatewayBenchCommand.class,
         })
 public final class BenchMain implements Runnable {
     @CommandLine.Spec

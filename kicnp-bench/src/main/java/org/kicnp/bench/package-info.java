@@ -1,6 +1,6 @@
 /**
- * The benchmarks behind {@code ./kicnp bench}: each measures one part of the platform on generated data and
- * prints a readable table followed by one JSON line, so that people and scripts read the same run. This module
- * may carry peer engines (such as Drools) for comparison; nothing at run time depends on it.
+ * The benchmarks behind {@code ./kicnp bench}: K-ICNP's components measured on generated data, side by side with
+ * established peers where there are some. Each prints a readable table followed by one JSON line, so that people
+ * and scripts read the same run. The peers live here only and never in the platform at run time.
  */
 package org.kicnp.bench;

@@ -14,6 +14,7 @@ import picocli.CommandLine.Command;
         subcommands = {
             CommandLine.HelpCommand.class,
             ValidateCommand.class,
+            RobotsCommand.class,
             BenchCommand.class,
             TestCommand.class,
         })

@@ -106,20 +106,51 @@ final class Validator {
         for (Slot s : f.slots()) {
             checkSlot(f, s);
         }
+        if (f.provenance().durable()) {
+            checkNoRuntimeReferences(f);
+        }
+    }
+
+    /** A durable frame must reload on its own after a restart, when runtime frames are gone. */
+    private void checkNoRuntimeReferences(Frame f) {
+        f.parent().map(view).filter(p -> p.provenance() == Provenance.RUNTIME).ifPresent(p ->
+                problems.add(Problem.of(f.name(), "Frame '" + f.name() + "' is kept on disk but is a kind of '"
+                        + p.name() + "', which exists only at run time.")));
+        for (String r : References.of(f)) {
+            Frame target = view.apply(r);
+            if (target != null && target.provenance() == Provenance.RUNTIME) {
+                problems.add(Problem.of(f.name(), "Frame '" + f.name() + "' is kept on disk but refers to '" + r
+                        + "', which exists only at run time; copy the values it needs instead."));
+            }
+        }
     }
 
     private void checkSlot(Frame f, Slot own) {
         String name = f.name();
         String where = "Slot '" + own.name() + "' of frame '" + name + "'";
-        Optional<EffectiveSlot> inherited = f.parent().map(view)
-                .flatMap(p -> Inheritance.slot(view, p, own.name()));
-        if (inherited.isPresent() && inherited.get().slot().type() != own.type()) {
-            EffectiveSlot up = inherited.get();
+        Frame declaring = null;
+        Slot above = null;
+        String inheritedArgument = null;
+        for (Frame x = parentOf(f); x != null; x = parentOf(x)) {
+            Slot s = ownSlotOrNull(x, own.name());
+            if (s == null) {
+                continue;
+            }
+            if (above == null) {
+                above = s;
+                declaring = x;
+            }
+            if (s.argument().isPresent()) {
+                inheritedArgument = s.argument().get();
+                break;
+            }
+        }
+        if (above != null && above.type() != own.type()) {
             problems.add(Problem.of(name, own.name(), where + " is " + own.type().xmlName() + " but '"
-                    + up.declaredBy() + "' declares it " + up.slot().type().xmlName() + "."));
+                    + declaring.name() + "' declares it " + above.type().xmlName() + "."));
             return;
         }
-        Optional<String> argument = own.argument().or(() -> inherited.flatMap(e -> e.slot().argument()));
+        Optional<String> argument = own.argument().isPresent() ? own.argument() : Optional.ofNullable(inheritedArgument);
         switch (own.type()) {
             case INSTANCE -> {
                 if (argument.isEmpty()) {
@@ -177,7 +208,8 @@ final class Validator {
     }
 
     private boolean isA(Frame f, String ancestor) {
-        for (Frame x : Inheritance.chain(view, f)) {
+        int steps = 0;
+        for (Frame x = f; x != null && steps++ < 100_000; x = parentOf(x)) {
             if (x.name().equals(ancestor)) {
                 return true;
             }
@@ -202,15 +234,33 @@ final class Validator {
     }
 
     private boolean hasCycle(Frame f) {
-        Set<String> seen = new HashSet<>();
-        Frame x = f;
-        while (x != null) {
-            if (!seen.add(x.name())) {
-                return true;
+        // Real hierarchies are shallow: walk without allocating, and only track names on a suspiciously long chain.
+        int steps = 0;
+        for (Frame x = f; x != null; x = parentOf(x)) {
+            if (++steps > 10_000) {
+                Set<String> seen = new HashSet<>();
+                for (Frame y = f; y != null; y = parentOf(y)) {
+                    if (!seen.add(y.name())) {
+                        return true;
+                    }
+                }
+                return false;
             }
-            x = x.parent().map(view).orElse(null);
         }
         return false;
+    }
+
+    private Frame parentOf(Frame f) {
+        return f.parent().isPresent() ? view.apply(f.parent().get()) : null;
+    }
+
+    private static Slot ownSlotOrNull(Frame f, String slotName) {
+        for (Slot s : f.slots()) {
+            if (s.name().equals(slotName)) {
+                return s;
+            }
+        }
+        return null;
     }
 
     private String cycleText(Frame f) {

@@ -15,6 +15,7 @@ import org.kicnp.core.FrameKind;
 import org.kicnp.core.InvalidFrameException;
 import org.kicnp.core.Provenance;
 import org.kicnp.core.Relation;
+import org.kicnp.core.SemanticLink;
 import org.kicnp.core.Slot;
 import org.kicnp.core.Value;
 
@@ -51,11 +52,11 @@ final class FrameMapper {
             return Optional.empty();
         }
         String name = interner.intern(nameItem.get().stripped());
-        boolean instance = flag(e.items().get(FrameTag.ISINSTANCE), "Frame '" + name + "'", "ISINSTANCE", false);
+        boolean instance = flag(e.items().get(FrameTag.ISINSTANCE), new Owner(name, null), "ISINSTANCE", false);
         Frame.Builder b = Frame.builder(name, instance ? FrameKind.INSTANCE : FrameKind.CLASS);
         e.present(FrameTag.ISA).ifPresent(p -> b.parent(interner.intern(p.stripped())));
-        boolean learned = flag(e.items().get(FrameTag.LEARNED), "Frame '" + name + "'", "LEARNED", false);
-        boolean runtime = flag(e.items().get(FrameTag.RUNTIME), "Frame '" + name + "'", "RUNTIME", false);
+        boolean learned = flag(e.items().get(FrameTag.LEARNED), new Owner(name, null), "LEARNED", false);
+        boolean runtime = flag(e.items().get(FrameTag.RUNTIME), new Owner(name, null), "RUNTIME", false);
         if (learned && runtime) {
             error(e.items().get(FrameTag.RUNTIME).at(source), "Frame '" + name + "' cannot be both LEARNED and RUNTIME.");
         }
@@ -97,7 +98,7 @@ final class FrameMapper {
         }
     }
 
-    private Optional<org.kicnp.core.SemanticLink> link(String frame, LinkElement l, String list) {
+    private Optional<SemanticLink> link(String frame, LinkElement l, String list) {
         SourceLocation at = new SourceLocation(source, l.line(), l.column());
         if (l.target().isEmpty() || l.target().get().absent()) {
             error(at, "A LINK in " + list + " of frame '" + frame + "' needs a TARGET.");
@@ -109,7 +110,7 @@ final class FrameMapper {
             return Optional.empty();
         }
         Relation r = Relation.parse(l.relation().get().stripped());
-        return Optional.of(new org.kicnp.core.SemanticLink(r, interner.intern(l.target().get().stripped())));
+        return Optional.of(new SemanticLink(r, interner.intern(l.target().get().stripped())));
     }
 
     private Optional<Slot> slot(String frame, FrameElement fe, SlotElement s) {
@@ -120,7 +121,7 @@ final class FrameMapper {
             return Optional.empty();
         }
         String name = interner.intern(nameItem.get().stripped());
-        String where = "Slot '" + name + "' of frame '" + frame + "'";
+        Owner where = new Owner(frame, name);
         int before = errors.size();
         DataType type = type(fe, s, name, where);
         if (type == null) {
@@ -173,7 +174,7 @@ final class FrameMapper {
         return l.absent() ? Optional.empty() : Optional.of(l);
     }
 
-    private DataType type(FrameElement fe, SlotElement s, String name, String where) {
+    private DataType type(FrameElement fe, SlotElement s, String name, Owner where) {
         Optional<Located> t = s.present(SlotTag.TYPE);
         if (t.isPresent()) {
             Optional<DataType> parsed = DataType.parse(t.get().stripped());
@@ -193,7 +194,7 @@ final class FrameMapper {
         return inherited.get();
     }
 
-    private Optional<Condition> condition(Located c, String where) {
+    private Optional<Condition> condition(Located c, Owner where) {
         try {
             return Optional.of(ConditionParser.parse(c.text()));
         } catch (ConditionSyntaxException x) {
@@ -226,7 +227,7 @@ final class FrameMapper {
         return new SourceLocation(source, line, col);
     }
 
-    private Optional<Value> value(Located v, DataType type, Optional<String> argument, String where, String what) {
+    private Optional<Value> value(Located v, DataType type, Optional<String> argument, Owner where, String what) {
         try {
             if (type == DataType.LIST) {
                 if (v.items().isEmpty() && !v.stripped().equals("[]")) {
@@ -277,7 +278,7 @@ final class FrameMapper {
     }
 
     /** Reads TRUE/FALSE (any case), or the words of the paper's Table 3 ("Checked", "No"); absent gives the default. */
-    private boolean flag(Located l, String owner, String tag, boolean dflt) {
+    private boolean flag(Located l, Owner owner, String tag, boolean dflt) {
         if (l == null || l.absent()) {
             return dflt;
         }
@@ -292,7 +293,8 @@ final class FrameMapper {
             case "TRUE", "CHECKED", "YES", "\u2713", "\u2714" -> true;
             case "FALSE", "NO", "UNCHECKED" -> false;
             default -> {
-                error(l.at(source), owner + " has " + tag + " '" + l.stripped() + "', which is not a boolean; write TRUE or FALSE.");
+                error(l.at(source), owner + " has " + tag + " '" + l.stripped()
+                        + "', which is not a boolean; write TRUE or FALSE.");
                 yield dflt;
             }
         };
@@ -304,5 +306,12 @@ final class FrameMapper {
 
     private void error(SourceLocation at, String message) {
         errors.add(LoadError.at(at, message));
+    }
+
+    /** The frame or slot an error is about; its text is only built when an error is reported. */
+    private record Owner(String frame, String slot) {
+        @Override public String toString() {
+            return slot == null ? "Frame '" + frame + "'" : "Slot '" + slot + "' of frame '" + frame + "'";
+        }
     }
 }

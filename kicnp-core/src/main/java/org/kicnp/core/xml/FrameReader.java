@@ -220,7 +220,8 @@ final class FrameReader {
                             textLine = 0;
                         }
                         text = r.getText();
-                    } else {
+                    } else if (!(r.isWhiteSpace() && text.isBlank())) {
+                        // White space around ITEM children is dropped; text beside items is reported below.
                         if (more == null) {
                             more = new StringBuilder(text);
                         }

@@ -8,7 +8,7 @@ import java.util.HashMap;
  */
 final class Interner {
     private static final int MAX_LENGTH = 64;
-    private final HashMap<String, String> strings = new HashMap<>(1 << 14);
+    private final HashMap<String, String> strings = new HashMap<>(1 << 16);
 
     String intern(String s) {
         if (s.length() > MAX_LENGTH) {

@@ -5,7 +5,6 @@ import static java.util.Objects.requireNonNull;
 import java.io.OutputStreamWriter;
 import java.io.IOException;
 import java.io.StringWriter;
-import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -14,6 +13,7 @@ import java.nio.file.StandardCopyOption;
 import java.util.List;
 import org.kicnp.core.Condition;
 import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeException;
 import org.kicnp.core.SemanticLink;
 import org.kicnp.core.Slot;
 import org.kicnp.core.Value;
@@ -40,7 +40,12 @@ public final class KnowledgeXmlWriter {
         this.out = out;
     }
 
-    /** Writes a KNOWLEDGEBASE document holding the frames in the given order; flushes but does not close. */
+    /**
+     * Writes a KNOWLEDGEBASE document holding the frames in the given order; flushes but does not close.
+     *
+     * @throws KnowledgeException when the writer fails, or a frame holds what XML cannot (a list inside a list, a
+     *     character such as U+0007)
+     */
     public static void write(List<Frame> frames, Writer out) {
         requireNonNull(frames, "frames");
         requireNonNull(out, "out");
@@ -55,11 +60,15 @@ public final class KnowledgeXmlWriter {
             sink.write("</KNOWLEDGEBASE>\n");
             sink.flush();
         } catch (IOException e) {
-            throw new UncheckedIOException("Writing frames as XML failed: " + e.getMessage(), e);
+            throw new KnowledgeException("Writing frames as XML failed: " + e.getMessage(), e);
         }
     }
 
-    /** Writes a KNOWLEDGEBASE file, replacing it atomically: readers see the old file or the whole new one. */
+    /**
+     * Writes a KNOWLEDGEBASE file (UTF-8), replacing it atomically: readers see the old file or the whole new one.
+     *
+     * @throws KnowledgeException when the file cannot be written, or a frame holds what XML cannot
+     */
     public static void write(List<Frame> frames, Path file) {
         requireNonNull(file, "file");
         Path abs = file.toAbsolutePath();
@@ -74,7 +83,7 @@ public final class KnowledgeXmlWriter {
                 Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING);
             }
         } catch (IOException e) {
-            throw new UncheckedIOException("Frames could not be written to '" + file + "': " + e.getMessage(), e);
+            throw new KnowledgeException("Frames could not be written to '" + file + "': " + e.getMessage(), e);
         } finally {
             try {
                 Files.deleteIfExists(tmp);
@@ -84,7 +93,11 @@ public final class KnowledgeXmlWriter {
         }
     }
 
-    /** A document whose root is the single FRAME element, as the paper prints one. */
+    /**
+     * A document whose root is the single FRAME element, as the paper prints one.
+     *
+     * @throws KnowledgeException when the frame holds what XML cannot
+     */
     public static String toXml(Frame frame) {
         requireNonNull(frame, "frame");
         StringWriter sw = new StringWriter(1024);
@@ -94,7 +107,7 @@ public final class KnowledgeXmlWriter {
             new KnowledgeXmlWriter(sink).frame(frame, 0);
             sink.flush();
         } catch (IOException e) {
-            throw new UncheckedIOException(e);
+            throw new KnowledgeException("Writing frame '" + frame.name() + "' as XML failed: " + e.getMessage(), e);
         }
         return sw.toString();
     }
@@ -208,7 +221,7 @@ public final class KnowledgeXmlWriter {
         open(tag, d);
         for (Value item : list.items()) {
             if (item instanceof Value.Lst) {
-                throw new org.kicnp.core.KnowledgeException("The " + where + " holds a list inside a list, which the XML "
+                throw new KnowledgeException("The " + where + " holds a list inside a list, which the XML "
                         + "format cannot write.");
             }
             text("ITEM", item.text(), d + 1, where);

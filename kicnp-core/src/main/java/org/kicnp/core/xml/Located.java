@@ -1,7 +1,6 @@
 package org.kicnp.core.xml;
 
 import java.util.List;
-import java.util.Locale;
 
 /**
  * A simple element as read: its raw text, its ITEM-like children (themselves simple elements), where its start tag
@@ -24,7 +23,14 @@ record Located(String text, List<Located> items, int line, int column, int textL
     }
 
     static boolean isNull(String text) {
+        int len = text.length();
+        if (len == 0) {
+            return true;
+        }
+        if (!Character.isWhitespace(text.charAt(0)) && !Character.isWhitespace(text.charAt(len - 1))) {
+            return len == 4 && text.equalsIgnoreCase("NULL");
+        }
         String t = text.strip();
-        return t.isEmpty() || t.length() == 4 && t.toUpperCase(Locale.ROOT).equals("NULL");
+        return t.isEmpty() || t.equalsIgnoreCase("NULL");
     }
 }

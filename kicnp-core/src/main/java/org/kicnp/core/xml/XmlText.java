@@ -1,6 +1,7 @@
 package org.kicnp.core.xml;
 
 import java.io.IOException;
+import org.kicnp.core.KnowledgeException;
 
 /**
  * Writes free text as XML element content. Text with {@code <}, {@code &} or a line break goes in CDATA, so scripts
@@ -24,11 +25,11 @@ final class XmlText {
                 if (Character.isHighSurrogate(c) && i + 1 < text.length() && Character.isLowSurrogate(text.charAt(i + 1))) {
                     i++;
                 } else {
-                    throw new org.kicnp.core.KnowledgeException("The " + where + " holds a lone surrogate U+"
+                    throw new KnowledgeException("The " + where + " holds a lone surrogate U+"
                             + String.format("%04X", (int) c) + ", which is not a character and cannot be written.");
                 }
             } else if (c < 0x20 && c != '\t' || c == 0xFFFE || c == 0xFFFF) {
-                throw new org.kicnp.core.KnowledgeException("The " + where + " holds the character U+"
+                throw new KnowledgeException("The " + where + " holds the character U+"
                         + String.format("%04X", (int) c) + ", which XML 1.0 cannot represent.");
             }
         }

@@ -1,0 +1,92 @@
+#!/usr/bin/env python3
+"""A K-ICNP robot agent in Python, with the standard library only: proof that docs/protocol.md is enough.
+
+Usage: python_agent.py PORT NAME TOKEN
+Connects to 127.0.0.1:PORT, authenticates, registers, reports a sensor signal, carries out ONE command
+(started, progress, ended) and exits 0. If the 'jsonschema' package is installed, every message sent and
+received is checked against docs/protocol/schemas/TYPE.json, and any mismatch exits with status 3.
+"""
+import json
+import pathlib
+import socket
+import struct
+import sys
+
+SCHEMAS = pathlib.Path(__file__).resolve().parent.parent / "protocol" / "schemas"
+try:
+    import jsonschema
+except ImportError:  # validation is a bonus, not a requirement of the protocol
+    jsonschema = None
+checked = 0
+
+
+def validate(message):
+    global checked
+    if jsonschema is None:
+        return
+    schema = json.loads((SCHEMAS / (message["type"] + ".json")).read_text())
+    try:
+        jsonschema.validate(message, schema)
+    except jsonschema.ValidationError as e:
+        print("schema violation in %s: %s" % (message["type"], e.message), file=sys.stderr)
+        sys.exit(3)
+    checked += 1
+
+
+def send(sock, message):
+    message = {"v": 1, **message}
+    validate(message)
+    payload = json.dumps(message).encode("utf-8")
+    sock.sendall(struct.pack(">I", len(payload)) + payload)
+
+
+def receive(sock):
+    header = read_exactly(sock, 4)
+    (length,) = struct.unpack(">I", header)
+    message = json.loads(read_exactly(sock, length).decode("utf-8"))
+    validate(message)
+    return message
+
+
+def read_exactly(sock, n):
+    data = b""
+    while len(data) < n:
+        chunk = sock.recv(n - len(data))
+        if not chunk:
+            raise ConnectionError("the gateway closed the connection")
+        data += chunk
+    return data
+
+
+def next_of(sock, kind):
+    while True:  # heartbeats may come at any time
+        message = receive(sock)
+        if message["type"] == kind:
+            return message
+        if message["type"] == "error":
+            raise RuntimeError("gateway error %s: %s" % (message["code"], message["message"]))
+
+
+def main():
+    port, name, token = int(sys.argv[1]), sys.argv[2], sys.argv[3]
+    with socket.create_connection(("127.0.0.1", port), timeout=20) as sock:
+        send(sock, {"type": "hello", "id": "1", "agent": name, "kind": "robot", "token": token})
+        if not next_of(sock, "auth_result")["accepted"]:
+            sys.exit(2)
+        send(sock, {"type": "register", "id": "2", "capabilities": []})
+        next_of(sock, "ack")
+        send(sock, {"type": "sensor", "source": name, "sensor": "battery", "values": [0.87, {"ref": "agent_" + name}]})
+        print("registered", flush=True)
+        command = next_of(sock, "command")
+        feedback = {"type": "feedback", "id": command["id"], "robot": name}
+        send(sock, {**feedback, "stage": "started", "detail": ""})
+        send(sock, {**feedback, "stage": "progress", "progress": 0.5, "detail": "halfway"})
+        send(sock, {**feedback, "stage": "ended", "detail": "did " + command["action"] + " in Python"})
+        send(sock, {"type": "query", "id": "3", "ofClass": "SensorSignal"})
+        frames = next_of(sock, "frames")["frames"]
+        print("done; %d signal frame(s); %d message(s) checked against the schemas" % (len(frames), checked),
+              flush=True)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,73 @@
+package org.kicnp.agent;
+
+import static java.util.Objects.requireNonNull;
+
+import java.util.Optional;
+import java.util.concurrent.atomic.AtomicBoolean;
+import org.kicnp.protocol.FeedbackStage;
+import org.kicnp.protocol.Message.Command;
+import org.kicnp.protocol.Message.Feedback;
+
+/**
+ * How a robot reports on one command: {@link #started()}, any number of {@link #progress}, then exactly one of
+ * {@link #ended} or {@link #failed}. May be used from any thread, also after {@code onCommand} returned.
+ */
+public final class ActionHandle {
+    /** Where feedback goes: the agent's current connection. */
+    @FunctionalInterface
+    interface Sender {
+        void send(Feedback feedback);
+    }
+
+    private final Command command;
+    private final Sender sender;
+    private final AtomicBoolean done = new AtomicBoolean();
+
+    ActionHandle(Command command, Sender sender) {
+        this.command = requireNonNull(command, "command");
+        this.sender = sender;
+    }
+
+    public Command command() {
+        return command;
+    }
+
+    public void started() {
+        report(FeedbackStage.STARTED, Optional.empty(), "");
+    }
+
+    /** Reports progress: the fraction done (0.0 to 1.0) and a note. */
+    public void progress(double fraction, String note) {
+        report(FeedbackStage.PROGRESS, Optional.of(fraction), note);
+    }
+
+    /** The command ended; {@code result} tells what came of it. */
+    public void ended(String result) {
+        finish(FeedbackStage.ENDED, result);
+    }
+
+    /** The command failed; {@code reason} says why, for people. */
+    public void failed(String reason) {
+        finish(FeedbackStage.FAILED, reason);
+    }
+
+    /** Whether {@link #ended} or {@link #failed} was called. */
+    public boolean isDone() {
+        return done.get();
+    }
+
+    private void finish(FeedbackStage stage, String detail) {
+        if (!done.compareAndSet(false, true)) {
+            throw new IllegalStateException("Command '" + command.id() + "' was already reported as done.");
+        }
+        sender.send(new Feedback(command.id(), command.robot(), stage, Optional.empty(), requireNonNull(detail, "detail")));
+    }
+
+    private void report(FeedbackStage stage, Optional<Double> fraction, String note) {
+        if (done.get()) {
+            throw new IllegalStateException("Command '" + command.id() + "' is done; no more " 
+                    + stage.name().toLowerCase(java.util.Locale.ROOT) + " reports.");
+        }
+        sender.send(new Feedback(command.id(), command.robot(), stage, fraction, requireNonNull(note, "note")));
+    }
+}

@@ -1,0 +1,479 @@
+package org.kicnp.agent;
+
+import static java.util.Objects.requireNonNull;
+
+import java.io.IOException;
+import java.time.Duration;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.ThreadPoolExecutor;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.ThreadLocalRandom;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicLong;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Value;
+import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.ErrorCode;
+import org.kicnp.protocol.FeedbackStage;
+import org.kicnp.protocol.FrameText;
+import org.kicnp.protocol.Message;
+import org.kicnp.protocol.Message.Command;
+import org.kicnp.protocol.MessageCodec;
+import org.kicnp.protocol.ProtocolException;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The base class of every K-ICNP agent (the paper's "Agent Base Classes"). A subclass overrides what it needs —
+ * {@link #capabilities()}, {@link #onCommand}, {@link #onRelay}, {@link #onChanged}, {@link #onConnected} — and
+ * calls {@link #start()}. The base connects, authenticates, registers, keeps heartbeats, and after a lost
+ * connection or a server restart reconnects with exponential backoff and jitter, registers again and renews its
+ * subscriptions. Requests ({@link #query}, {@link #ask}, …) block the calling thread (cheap on a virtual thread)
+ * and fail with a typed {@link AgentException}.
+ *
+ * <p>Threads: one virtual thread reads the connection; each command runs on its own virtual thread; relays and
+ * change notifications are delivered in order on one event thread.
+ */
+public abstract class AgentBase implements AutoCloseable {
+    private static final Logger LOG = LoggerFactory.getLogger(AgentBase.class);
+    private static final int EVENT_QUEUE = 10_000;
+
+    private final AgentOptions options;
+    private final MessageCodec codec = new MessageCodec();
+    private final Map<String, CompletableFuture<Message>> pending = new ConcurrentHashMap<>();
+    private final Map<String, CommandTicket> tickets = new ConcurrentHashMap<>();
+    private final Set<String> subscriptions = ConcurrentHashMap.newKeySet();
+    private final AtomicLong ids = new AtomicLong();
+    /** Relays and changes, in order; when full, the reader waits, so TCP pushes back on the server (which sheds). */
+    private final ExecutorService events = new ThreadPoolExecutor(1, 1, 0, TimeUnit.MILLISECONDS,
+            new ArrayBlockingQueue<>(EVENT_QUEUE), Thread.ofVirtual().name("agent-events").factory(), (task, pool) -> {
+                try {
+                    if (!pool.isShutdown()) {
+                        pool.getQueue().put(task);
+                    }
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            });
+    private final CountDownLatch firstOutcome = new CountDownLatch(1);
+    private volatile Connection connection;
+    private volatile boolean registered;
+    private volatile boolean closed;
+    private volatile AgentException fatal;
+    private volatile Thread supervisor;
+
+    protected AgentBase(AgentOptions options) {
+        this.options = requireNonNull(options, "options");
+    }
+
+    // ---- what a subclass overrides ----
+
+    /** The frames describing what this agent can do, registered (all or none) each time it connects. */
+    protected List<Frame> capabilities() {
+        return List.of();
+    }
+
+    /** A command for this robot. Report through {@code handle}, now or later from any thread. */
+    protected void onCommand(Command command, ActionHandle handle) {
+        handle.failed("Agent '" + name() + "' does not take commands.");
+    }
+
+    /** A message relayed from another agent. */
+    protected void onRelay(Message.Relay relay) {
+    }
+
+    /** A change to a frame of a class this agent subscribed to. */
+    protected void onChanged(Message.Changed change) {
+    }
+
+    /** Called (on the event thread) each time the agent is registered, first and after every reconnect. */
+    protected void onConnected() {
+    }
+
+    /** Called (on the event thread) when a registered connection is lost; the agent is reconnecting. */
+    protected void onDisconnected(String reason) {
+    }
+
+    // ---- life cycle ----
+
+    /** Starts connecting in the background; returns at once. Use {@link #awaitConnected} to wait. */
+    public final synchronized void start() {
+        if (supervisor != null) {
+            throw new IllegalStateException("Agent '" + name() + "' was already started.");
+        }
+        supervisor = Thread.ofVirtual().name("agent-" + name()).start(this::supervise);
+    }
+
+    /** Starts the agent and waits until it is registered. */
+    public final void startAndAwait(Duration timeout) {
+        start();
+        awaitConnected(timeout);
+    }
+
+    /**
+     * Waits until the agent is registered.
+     *
+     * @throws AuthenticationException when the server refused the agent
+     * @throws AgentTimeoutException when it is not registered within {@code timeout}
+     */
+    public final void awaitConnected(Duration timeout) {
+        long deadline = System.nanoTime() + timeout.toNanos();
+        try {
+            firstOutcome.await(timeout.toMillis(), TimeUnit.MILLISECONDS);
+            while (!registered && fatal == null && !closed && System.nanoTime() < deadline) {
+                Thread.sleep(10);
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        if (fatal != null) {
+            throw fatal;
+        }
+        if (!registered) {
+            throw new AgentTimeoutException("Agent '" + name() + "' was not registered with " + options.host() + ":"
+                    + options.port() + " within " + timeout + ".");
+        }
+    }
+
+    public final String name() {
+        return options.name();
+    }
+
+    public final AgentKind kind() {
+        return options.kind();
+    }
+
+    /** Whether the agent is registered right now. */
+    public final boolean isConnected() {
+        return registered;
+    }
+
+    @Override public void close() {
+        closed = true;
+        Connection c = connection;
+        if (c != null) {
+            c.close();
+        }
+        Thread t = supervisor;
+        if (t != null) {
+            t.interrupt();
+            try {
+                t.join(Duration.ofSeconds(2));
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+        events.shutdownNow();
+        failPending("Agent '" + name() + "' was closed.");
+    }
+
+    // ---- what an agent can do ----
+
+    /** Reports a sensor signal; the server keeps the latest one as a {@code SensorSignal} frame. */
+    public final void sensor(String sensor, Value... values) {
+        send(new Message.SensorSignal(name(), sensor, List.of(values)));
+    }
+
+    /** Every instance of a class (and of the classes below it). */
+    public final List<Frame> query(String ofClass) {
+        Message.Frames f = (Message.Frames) request(new Message.Query(nextId(), ofClass));
+        return parse(f.frames());
+    }
+
+    /** The effective value of a slot, inherited along IS-A; empty when it has none. */
+    public final Optional<Value> ask(String frame, String slot) {
+        return ((Message.Answer) request(new Message.Ask(nextId(), frame, slot))).value();
+    }
+
+    /** Adds or replaces an instance frame (stored as a RUNTIME frame). */
+    public final void assertFrame(Frame instance) {
+        request(new Message.Assert(nextId(), FrameText.toXml(instance)));
+    }
+
+    /** Removes an instance frame. */
+    public final void destroy(String frame) {
+        request(new Message.Destroy(nextId(), frame));
+    }
+
+    /** Hears of every change to frames of a class through {@link #onChanged}; renewed after a reconnect. */
+    public final void subscribe(String ofClass) {
+        request(new Message.Subscribe(nextId(), ofClass));
+        subscriptions.add(ofClass);
+    }
+
+    public final void unsubscribe(String ofClass) {
+        subscriptions.remove(ofClass);
+        request(new Message.Unsubscribe(nextId(), ofClass));
+    }
+
+    /** Relays a message to one agent by name. */
+    public final void relayTo(String agent, String subject, String body) {
+        request(Message.Relay.toAgent(nextId(), name(), agent, subject, body));
+    }
+
+    /** Relays a message to every registered agent of a kind (not to this one). */
+    public final void relayToKind(AgentKind kind, String subject, String body) {
+        request(Message.Relay.toKind(nextId(), name(), kind, subject, body));
+    }
+
+    /** Sends a command to a robot through the hub (what a user agent does); follow it with the ticket. */
+    public final CommandTicket command(String robot, String action, Map<String, String> args) {
+        Command c = new Command(name() + "-" + nextId(), robot, action, args);
+        CommandTicket ticket = new CommandTicket(c);
+        tickets.put(c.id(), ticket);
+        try {
+            request(c);
+        } catch (AgentException e) {
+            tickets.remove(c.id());
+            throw e;
+        }
+        return ticket;
+    }
+
+    /** Sends frames to the server (a peer agent's push); stored all or none. */
+    public final void push(List<Frame> frames) {
+        request(new Message.Push(nextId(), FrameText.toXml(frames)));
+    }
+
+    /** Fetches a subtree (or, without a root, the whole knowledge base) from the server, parents first. */
+    public final List<Frame> pull(Optional<String> root) {
+        return parse(((Message.Frames) request(new Message.Pull(nextId(), root))).frames());
+    }
+
+    // ---- internals ----
+
+    private void supervise() {
+        Duration delay = options.backoffInitial();
+        while (!closed) {
+            try (Connection c = Connection.open(options, codec)) {
+                handshake(c);
+                delay = options.backoffInitial();
+                readLoop(c);
+            } catch (AuthenticationException e) {
+                fatal = e;
+                firstOutcome.countDown();
+                LOG.error("Agent '{}' stops: {}", name(), e.getMessage());
+                return;
+            } catch (IOException | ProtocolException | NotConnectedException e) {
+                if (closed) {
+                    return;
+                }
+                LOG.info("Agent '{}' lost its connection to {}:{} ({}); reconnecting.", name(), options.host(),
+                        options.port(), e.getMessage() == null ? e.toString() : e.getMessage());
+            } catch (RuntimeException e) { // a bug in a subclass (say, in capabilities()) or a server we do not understand
+                fatal = e instanceof AgentException a ? a : new AgentException("Agent '" + name() + "' stops: " + e, e);
+                firstOutcome.countDown();
+                LOG.error("Agent '{}' stops.", name(), e);
+                return;
+            } finally {
+                lost();
+            }
+            try {
+                long ms = delay.toMillis();
+                Thread.sleep(ms / 2 + ThreadLocalRandom.current().nextLong(ms / 2 + 1)); // "equal jitter"
+            } catch (InterruptedException e) {
+                return;
+            }
+            delay = delay.multipliedBy(2).compareTo(options.backoffMax()) > 0 ? options.backoffMax() : delay.multipliedBy(2);
+        }
+    }
+
+    private void handshake(Connection c) throws IOException {
+        c.send(new Message.Hello("hello", name(), kind(), options.token()));
+        Message auth = awaitDirect(c, "hello");
+        if (auth instanceof Message.AuthResult r && !r.accepted()) {
+            throw new AuthenticationException("Server refused agent '" + name() + "': " + r.reason().orElse("no reason") + ".");
+        }
+        if (!(auth instanceof Message.AuthResult)) {
+            throw new AgentException("Expected auth_result, got " + auth + ".");
+        }
+        c.send(new Message.Register("register", FrameText.toXml(capabilities())));
+        if (awaitDirect(c, "register") instanceof Message.ErrorReply e) {
+            throw new AuthenticationException("Server refused to register agent '" + name() + "': " + e.message());
+        }
+        connection = c;
+        for (String ofClass : subscriptions) {
+            c.send(new Message.Subscribe("resubscribe-" + nextId(), ofClass));
+        }
+        registered = true;
+        firstOutcome.countDown();
+        startHeartbeats(c);
+        LOG.info("Agent '{}' registered with {}:{}.", name(), options.host(), options.port());
+        events.execute(this::onConnected);
+    }
+
+    private Message awaitDirect(Connection c, String id) throws IOException {
+        while (true) {
+            Message m = c.read();
+            switch (m) {
+                case Message.AuthResult r when r.id().equals(id) -> {
+                    return r;
+                }
+                case Message.Ack a when a.id().equals(id) -> {
+                    return a;
+                }
+                case Message.ErrorReply e -> {
+                    if (e.id().isEmpty() || e.id().get().equals(id)) {
+                        if (id.equals("hello")) {
+                            throw new AuthenticationException("Server refused agent '" + name() + "': " + e.message());
+                        }
+                        return e;
+                    }
+                }
+                default -> { } // heartbeats before registration
+            }
+        }
+    }
+
+    private void startHeartbeats(Connection c) {
+        Thread.ofVirtual().name("agent-heartbeat-" + name()).start(() -> {
+            try {
+                while (c.isOpen() && !closed) {
+                    Thread.sleep(options.heartbeatInterval());
+                    c.send(new Message.Heartbeat(System.currentTimeMillis()));
+                }
+            } catch (IOException | InterruptedException e) {
+                // The connection is gone; the read loop notices and reconnects.
+            }
+        });
+    }
+
+    private void readLoop(Connection c) throws IOException {
+        while (!closed) {
+            Message m = c.read();
+            switch (m) {
+                case Message.Command cmd -> Thread.ofVirtual().name("command-" + cmd.id()).start(() -> runCommand(cmd));
+                case Message.Feedback f -> {
+                    CommandTicket t = f.stage().terminal() ? tickets.remove(f.id()) : tickets.get(f.id());
+                    if (t != null) {
+                        t.received(f);
+                    }
+                }
+                case Message.Relay r -> events.execute(() -> onRelay(r));
+                case Message.Changed ch -> events.execute(() -> onChanged(ch));
+                case Message.Heartbeat h -> { }
+                case Message.ErrorReply e when e.code() == ErrorCode.SUPERSEDED ->
+                        throw new AuthenticationException("Agent '" + name() + "' stops: " + e.message());
+                case Message.ErrorReply e when e.id().isEmpty() -> LOG.warn("Agent '{}': server says {}: {}", name(),
+                        e.code(), e.message());
+                case Message.ErrorReply e -> complete(e.id().get(), e);
+                case Message.Ack a -> complete(a.id(), a);
+                case Message.Frames f -> complete(f.id(), f);
+                case Message.Answer a -> complete(a.id(), a);
+                case Message.AuthResult a -> complete(a.id(), a);
+                case Message.Hello h -> LOG.warn("Agent '{}' ignores an unexpected {}.", name(), h);
+                case Message.Register x -> LOG.warn("Agent '{}' ignores an unexpected register.", name());
+                case Message.SensorSignal x -> LOG.warn("Agent '{}' ignores an unexpected sensor signal.", name());
+                case Message.Query x -> LOG.warn("Agent '{}' ignores an unexpected query.", name());
+                case Message.Ask x -> LOG.warn("Agent '{}' ignores an unexpected ask.", name());
+                case Message.Assert x -> LOG.warn("Agent '{}' ignores an unexpected assert.", name());
+                case Message.Destroy x -> LOG.warn("Agent '{}' ignores an unexpected destroy.", name());
+                case Message.Subscribe x -> LOG.warn("Agent '{}' ignores an unexpected subscribe.", name());
+                case Message.Unsubscribe x -> LOG.warn("Agent '{}' ignores an unexpected unsubscribe.", name());
+                case Message.Push x -> LOG.warn("Agent '{}' ignores an unexpected push.", name());
+                case Message.Pull x -> LOG.warn("Agent '{}' ignores an unexpected pull.", name());
+            }
+        }
+    }
+
+    private void runCommand(Command cmd) {
+        ActionHandle handle = new ActionHandle(cmd, this::send);
+        try {
+            onCommand(cmd, handle);
+        } catch (NotConnectedException e) {
+            LOG.info("Agent '{}' lost its connection during command '{}'; the server fails it.", name(), cmd.id());
+        } catch (RuntimeException e) {
+            LOG.warn("Agent '{}' failed on command '{}'.", name(), cmd.id(), e);
+            try {
+                if (!handle.isDone()) {
+                    handle.failed("Agent '" + name() + "' failed: " + e.getMessage());
+                }
+            } catch (NotConnectedException lost) {
+                LOG.info("Agent '{}' could not report the failure of '{}': {}", name(), cmd.id(), lost.getMessage());
+            }
+        }
+    }
+
+    private void complete(String id, Message answer) {
+        CompletableFuture<Message> f = pending.remove(id);
+        if (f != null) {
+            f.complete(answer);
+        }
+    }
+
+    private void lost() {
+        boolean was = registered;
+        registered = false;
+        connection = null;
+        failPending("Agent '" + name() + "' lost its connection.");
+        // The server sends feedback to the connection that issued a command; a new connection will not hear it.
+        tickets.forEach((id, t) -> t.received(new Message.Feedback(id, t.command().robot(), FeedbackStage.FAILED,
+                Optional.empty(), "the connection to the gateway was lost before command '" + id + "' ended")));
+        tickets.clear();
+        if (was && !closed) {
+            events.execute(() -> onDisconnected("connection lost"));
+        }
+    }
+
+    private void failPending(String reason) {
+        pending.forEach((id, f) -> f.completeExceptionally(new NotConnectedException(reason)));
+        pending.clear();
+    }
+
+    /** Sends a message that expects no answer; dropped with a log line if the agent is not connected. */
+    private void send(Message m) {
+        Connection c = connection;
+        if (c == null) {
+            throw new NotConnectedException("Agent '" + name() + "' is not connected; " + m.getClass().getSimpleName()
+                    + " not sent.");
+        }
+        try {
+            c.send(m);
+        } catch (IOException e) {
+            c.close();
+            throw new NotConnectedException("Agent '" + name() + "' could not send: " + e.getMessage());
+        }
+    }
+
+    private Message request(Message.Request r) {
+        CompletableFuture<Message> answer = new CompletableFuture<>();
+        pending.put(r.id(), answer);
+        try {
+            send(r);
+            Message m = answer.get(options.requestTimeout().toMillis(), TimeUnit.MILLISECONDS);
+            if (m instanceof Message.ErrorReply e) {
+                throw new RequestRefusedException(e.code(), e.message());
+            }
+            return m;
+        } catch (TimeoutException e) {
+            throw new AgentTimeoutException("The server did not answer " + r.getClass().getSimpleName() + " '" + r.id()
+                    + "' within " + options.requestTimeout() + ".");
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new AgentException("Interrupted while waiting for the answer to '" + r.id() + "'.", e);
+        } catch (ExecutionException e) {
+            throw e.getCause() instanceof AgentException a ? a : new AgentException(e.getCause().getMessage(), e);
+        } finally {
+            pending.remove(r.id());
+        }
+    }
+
+    private String nextId() {
+        return Long.toString(ids.incrementAndGet());
+    }
+
+    private static List<Frame> parse(List<String> xml) {
+        KnowledgeBase context = KnowledgeBase.create();
+        return xml.stream().flatMap(x -> FrameText.parse(x, "server", context).stream()).toList();
+    }
+}

@@ -1,0 +1,86 @@
+package org.kicnp.agent;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.time.Duration;
+import java.util.Optional;
+import java.util.concurrent.atomic.AtomicInteger;
+import org.junit.jupiter.api.Test;
+import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.Framing;
+import org.kicnp.protocol.Message;
+import org.kicnp.protocol.MessageCodec;
+
+/** The SDK's connection life cycle against a minimal scripted server on loopback (the gateway is tested elsewhere). */
+class AgentBaseTest {
+    private static final MessageCodec CODEC = new MessageCodec();
+
+    @Test
+    void awaitConnected_withNoServer_timesOutWithAddress() throws Exception {
+        int port;
+        try (ServerSocket s = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+            port = s.getLocalPort();
+        }
+        try (UserAgent a = new UserAgent(AgentOptions.of("127.0.0.1", port, "alice", AgentKind.USER, "t")
+                .withBackoff(Duration.ofMillis(10), Duration.ofMillis(50)))) {
+            a.start();
+            assertThatThrownBy(() -> a.awaitConnected(Duration.ofMillis(300))).isInstanceOf(AgentTimeoutException.class)
+                    .hasMessage("Agent 'alice' was not registered with 127.0.0.1:" + port + " within PT0.3S.");
+            assertThatThrownBy(() -> a.query("Cup")).isInstanceOf(NotConnectedException.class);
+        }
+    }
+
+    @Test
+    void agent_retriesUntilServerAccepts_thenRegisters() throws Exception {
+        AtomicInteger connections = new AtomicInteger();
+        try (ServerSocket server = new ServerSocket(0, 5, InetAddress.getLoopbackAddress());
+             UserAgent a = new UserAgent(AgentOptions.of("127.0.0.1", server.getLocalPort(), "alice", AgentKind.USER, "t")
+                     .withBackoff(Duration.ofMillis(10), Duration.ofMillis(50)))) {
+            Thread.ofVirtual().start(() -> {
+                try {
+                    server.accept().close(); // first attempt: dropped at once
+                    connections.incrementAndGet();
+                    Socket s = server.accept();
+                    connections.incrementAndGet();
+                    DataInputStream in = new DataInputStream(s.getInputStream());
+                    DataOutputStream out = new DataOutputStream(s.getOutputStream());
+                    Message.Hello hello = (Message.Hello) CODEC.decode(Framing.read(in, 1 << 20));
+                    Framing.write(out, CODEC.encode(new Message.AuthResult(hello.id(), true, "fake", Optional.empty())));
+                    Message.Register reg = (Message.Register) CODEC.decode(Framing.read(in, 1 << 20));
+                    Framing.write(out, CODEC.encode(new Message.Ack(reg.id())));
+                    Thread.sleep(5_000);
+                } catch (Exception ignored) {
+                    // the test ends by closing the server socket
+                }
+            });
+            a.startAndAwait(Duration.ofSeconds(10));
+            assertThat(a.isConnected()).isTrue();
+            assertThat(connections.get()).isEqualTo(2);
+        }
+    }
+
+    @Test
+    void refusedHello_stopsTheAgentWithAuthenticationException() throws Exception {
+        try (ServerSocket server = new ServerSocket(0, 5, InetAddress.getLoopbackAddress());
+             UserAgent a = new UserAgent(AgentOptions.of("127.0.0.1", server.getLocalPort(), "alice", AgentKind.USER, "t"))) {
+            Thread.ofVirtual().start(() -> {
+                try (Socket s = server.accept()) {
+                    DataInputStream in = new DataInputStream(s.getInputStream());
+                    Message.Hello hello = (Message.Hello) CODEC.decode(Framing.read(in, 1 << 20));
+                    Framing.write(new DataOutputStream(s.getOutputStream()), CODEC.encode(
+                            new Message.AuthResult(hello.id(), false, "fake", Optional.of("Wrong token"))));
+                } catch (Exception ignored) {
+                    // nothing to clean up
+                }
+            });
+            assertThatThrownBy(() -> a.startAndAwait(Duration.ofSeconds(10))).isInstanceOf(AuthenticationException.class)
+                    .hasMessage("Server refused agent 'alice': Wrong token.");
+        }
+    }
+}

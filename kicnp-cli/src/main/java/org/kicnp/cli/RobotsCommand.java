@@ -1,0 +1,147 @@
+package org.kicnp.cli;
+
+import org.kicnp.agent.AgentException;
+import org.kicnp.agent.AgentOptions;
+import org.kicnp.protocol.AgentKind;
+import org.kicnp.robots.AiboAgent;
+import org.kicnp.robots.PinoAgent;
+import org.kicnp.robots.RobotAgent;
+import org.kicnp.robots.RobovieAgent;
+import org.kicnp.robots.ScoutAgent;
+import org.kicnp.robots.SimEvent;
+import org.kicnp.robots.SimOptions;
+import org.kicnp.robots.SimWorld;
+import org.kicnp.robots.SimulatorException;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Properties;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * {@code kicnp robots}: starts the simulated room (the Python simulator) and the agents of Robovie, PINO, Scout and
+ * AIBO against a running K-ICNP server, and keeps them running until interrupted, for {@code --for} seconds, or
+ * until the simulator dies.
+ */
+@Command(name = "robots", mixinStandardHelpOptions = true,
+        description = "Start the simulator and the four robot agents (robovie, pino, scout, aibo) "
+                + "against a running server.")
+public final class RobotsCommand implements Callable<Integer> {
+    private static final List<String> ROBOTS = List.of("robovie", "pino", "scout", "aibo");
+
+    @Option(names = "--gateway", defaultValue = "127.0.0.1:7407",
+            description = "The server, host:port (default ${DEFAULT-VALUE}).")
+    String gateway;
+
+    @Option(names = "--tokens", defaultValue = "agents.properties",
+            description = "Properties file with NAME.token for robovie, pino, scout and aibo (default ${DEFAULT-VALUE}).")
+    Path tokens;
+
+    @Option(names = "--seed", defaultValue = "42",
+            description = "Simulator seed: faces and sensor noise (default ${DEFAULT-VALUE}).")
+    long seed;
+
+    @Option(names = "--time-scale", defaultValue = "1",
+            description = "Simulated seconds per wall second (default ${DEFAULT-VALUE}).")
+    double timeScale;
+
+    @Option(names = "--repo",
+            description = "The K-ICNP repository (holding robots-sim/); default: found from the working directory.")
+    Path repo;
+
+    @Option(names = "--for", paramLabel = "SECONDS",
+            description = "Stop after this many seconds (default: run until interrupted).")
+    Double duration;
+
+    @Spec
+    CommandSpec spec;
+
+    @Override public Integer call() throws InterruptedException {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        String[] hostPort = gateway.split(":", 2);
+        int port;
+        try {
+            port = Integer.parseInt(hostPort.length == 2 ? hostPort[1] : "");
+        } catch (NumberFormatException e) {
+            err.println("--gateway '" + gateway + "' is not host:port.");
+            return 2;
+        }
+        Properties tokenFile = new Properties();
+        try (InputStream in = Files.newInputStream(tokens)) {
+            tokenFile.load(in);
+        } catch (IOException e) {
+            err.println("Cannot read the tokens file '" + tokens + "': " + e.getMessage());
+            return 2;
+        }
+        for (String robot : ROBOTS) {
+            if (tokenFile.getProperty(robot + ".token", "").isBlank()) {
+                err.println("The tokens file '" + tokens + "' has no '" + robot + ".token'.");
+                return 2;
+            }
+        }
+        SimOptions options = SimOptions.defaults().withSeed(seed).withTimeScale(timeScale);
+        if (repo != null) {
+            options = options.withRepoRoot(repo);
+        }
+        CountDownLatch stop = new CountDownLatch(1);
+        List<RobotAgent> agents = new ArrayList<>();
+        try (SimWorld world = SimWorld.start(options)) {
+            world.addListener(e -> {
+                if (e instanceof SimEvent.Exited x) {
+                    err.println("The simulator is gone: " + x.reason() + ".");
+                    stop.countDown();
+                }
+            });
+            out.printf("Simulator started (pid %d, seed %d, time scale %s).%n", world.pid(), seed, timeScale);
+            for (String robot : ROBOTS) {
+                AgentOptions ao = AgentOptions.of(hostPort[0], port, robot, AgentKind.ROBOT,
+                        tokenFile.getProperty(robot + ".token").strip());
+                RobotAgent agent = switch (robot) {
+                    case "robovie" -> new RobovieAgent(ao, world);
+                    case "pino" -> new PinoAgent(ao, world);
+                    case "scout" -> new ScoutAgent(ao, world);
+                    default -> new AiboAgent(ao, world);
+                };
+                agents.add(agent);
+                agent.startAndAwait(Duration.ofSeconds(15));
+                out.printf("Agent '%s' registered with %s (%d capability frames).%n", robot, gateway,
+                        agent.driver().capabilities().size());
+            }
+            out.flush();
+            Thread hook = new Thread(stop::countDown, "kicnp-robots-stop");
+            Runtime.getRuntime().addShutdownHook(hook);
+            boolean died = duration == null ? awaitForever(stop) : stop.await((long) (duration * 1000), TimeUnit.MILLISECONDS);
+            try {
+                Runtime.getRuntime().removeShutdownHook(hook);
+            } catch (IllegalStateException e) {
+                // Shutting down already: the hook is running.
+            }
+            return died && !world.alive() ? 1 : 0;
+        } catch (SimulatorException | AgentException e) {
+            err.println(e.getMessage());
+            return 1;
+        } finally {
+            agents.reversed().forEach(RobotAgent::close);
+            out.println("Robots stopped.");
+            out.flush();
+        }
+    }
+
+    private static boolean awaitForever(CountDownLatch stop) throws InterruptedException {
+        stop.await();
+        return true;
+    }
+}

@@ -1,0 +1,77 @@
+package org.kicnp.cli;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.gateway.AgentDirectory;
+import org.kicnp.gateway.FeedbackListener;
+import org.kicnp.gateway.GatewayConfig;
+import org.kicnp.gateway.GatewayServer;
+import org.kicnp.protocol.AgentKind;
+import picocli.CommandLine;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+/** {@code kicnp robots} against a real gateway on loopback, with the real simulator. */
+@Timeout(value = 60, unit = TimeUnit.SECONDS)
+class RobotsCommandTest {
+    private final StringWriter out = new StringWriter();
+    private final StringWriter err = new StringWriter();
+
+    private int run(String... args) {
+        CommandLine cl = new CommandLine(new Main());
+        cl.setOut(new PrintWriter(out, true));
+        cl.setErr(new PrintWriter(err, true));
+        return cl.execute(args);
+    }
+
+    @Test
+    void robots_startsTheFourAgentsAgainstARunningServer_andStopsAfterTheGivenTime(@TempDir Path dir) throws Exception {
+        AgentDirectory agents = AgentDirectory.empty();
+        List<String> lines = new ArrayList<>();
+        for (String robot : List.of("robovie", "pino", "scout", "aibo")) {
+            agents = agents.with(robot, robot + "-secret", AgentKind.ROBOT);
+            lines.add(robot + ".token = " + robot + "-secret");
+        }
+        Path tokens = Files.write(dir.resolve("agents.properties"), lines);
+        KnowledgeBase kb = KnowledgeBase.create();
+        GatewayConfig config = GatewayConfig.defaults().withPort(0);
+        try (GatewayServer server = GatewayServer.start(config, agents, kb, FeedbackListener.NONE)) {
+            CompletableFuture<Integer> exit = CompletableFuture.supplyAsync(() -> run("robots",
+                    "--gateway", "127.0.0.1:" + server.port(), "--tokens", tokens.toString(), "--seed", "5", "--for", "4"));
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+            while (server.registeredAgents().size() < 4 && System.nanoTime() < deadline) {
+                Thread.sleep(20);
+            }
+            assertThat(server.registeredAgents()).containsExactly("aibo", "pino", "robovie", "scout");
+            assertThat(kb.contains("RobovieSay")).isTrue();
+
+            assertThat(exit.get(30, TimeUnit.SECONDS)).isZero();
+        }
+        assertThat(out.toString()).contains("Agent 'scout' registered with 127.0.0.1:").contains("Robots stopped.");
+    }
+
+    @Test
+    void robots_withoutATokenForARobot_exitsWith2NamingIt(@TempDir Path dir) throws Exception {
+        Path tokens = Files.write(dir.resolve("agents.properties"), List.of("robovie.token = x", "pino.token = y"));
+
+        assertThat(run("robots", "--tokens", tokens.toString())).isEqualTo(2);
+        assertThat(err.toString()).contains("has no 'scout.token'.");
+    }
+
+    @Test
+    void robots_help_listsItsOptions() {
+        assertThat(run("robots", "--help")).isZero();
+        assertThat(out.toString()).contains("--gateway").contains("--tokens").contains("--seed").contains("--time-scale");
+    }
+}

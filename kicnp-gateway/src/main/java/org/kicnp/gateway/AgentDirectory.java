@@ -1,0 +1,117 @@
+package org.kicnp.gateway;
+
+import static java.nio.charset.StandardCharsets.UTF_8;
+import static java.util.Objects.requireNonNull;
+
+import java.io.IOException;
+import java.io.Reader;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.security.MessageDigest;
+import java.util.EnumSet;
+import java.util.HashMap;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Properties;
+import java.util.Set;
+import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.Message.Hello;
+
+/**
+ * Who may connect: a token per agent and the kinds it may connect as, read from {@code agents.properties}
+ * ({@code NAME.token = secret}, {@code NAME.kinds = robot,user}; kinds default to any). Tokens are compared in
+ * constant time. Immutable.
+ */
+public final class AgentDirectory {
+    private record Entry(byte[] token, Set<AgentKind> kinds) {
+    }
+
+    private final Map<String, Entry> entries;
+
+    private AgentDirectory(Map<String, Entry> entries) {
+        this.entries = Map.copyOf(entries);
+    }
+
+    /** Reads an agent file. */
+    public static AgentDirectory load(Path file) {
+        try (Reader r = Files.newBufferedReader(file, UTF_8)) {
+            Properties p = new Properties();
+            p.load(r);
+            return of(p, file.toString());
+        } catch (IOException e) {
+            throw new GatewayException("Cannot read the agent file '" + file + "': " + e.getMessage(), e);
+        }
+    }
+
+    /**
+     * Builds a directory from agent-file properties.
+     *
+     * @throws GatewayException when a key is not {@code NAME.token} or {@code NAME.kinds}, a kind is unknown, or an
+     *     agent has kinds but no token
+     */
+    public static AgentDirectory of(Properties p, String source) {
+        Map<String, byte[]> tokens = new HashMap<>();
+        Map<String, Set<AgentKind>> kinds = new HashMap<>();
+        for (String key : p.stringPropertyNames()) {
+            String value = p.getProperty(key).strip();
+            int dot = key.lastIndexOf('.');
+            String name = dot < 0 ? "" : key.substring(0, dot);
+            switch (dot < 0 ? "" : key.substring(dot + 1)) {
+                case "token" -> tokens.put(name, value.getBytes(UTF_8));
+                case "kinds" -> kinds.put(name, parseKinds(value, key, source));
+                default -> throw new GatewayException("Key '" + key + "' in the agent file '" + source
+                        + "' is neither NAME.token nor NAME.kinds.");
+            }
+        }
+        Map<String, Entry> entries = new HashMap<>();
+        for (String name : kinds.keySet()) {
+            if (!tokens.containsKey(name)) {
+                throw new GatewayException("Agent '" + name + "' in '" + source + "' has kinds but no token.");
+            }
+        }
+        tokens.forEach((name, token) -> entries.put(name,
+                new Entry(token, kinds.getOrDefault(name, EnumSet.allOf(AgentKind.class)))));
+        return new AgentDirectory(entries);
+    }
+
+    /** Starts a directory in code (tests, embedding). */
+    public static AgentDirectory empty() {
+        return new AgentDirectory(Map.of());
+    }
+
+    /** A copy that also admits {@code name} with {@code token} as any of {@code kinds}. */
+    public AgentDirectory with(String name, String token, AgentKind... kinds) {
+        Map<String, Entry> copy = new HashMap<>(entries);
+        Set<AgentKind> allowed = kinds.length == 0 ? EnumSet.allOf(AgentKind.class) : EnumSet.of(kinds[0], kinds);
+        copy.put(requireNonNull(name, "name"), new Entry(token.getBytes(UTF_8), allowed));
+        return new AgentDirectory(copy);
+    }
+
+    /** Why this hello is refused, or empty when it is accepted. */
+    public Optional<String> refusal(Hello hello) {
+        Entry e = entries.get(hello.agent());
+        if (e == null || !MessageDigest.isEqual(e.token(), hello.token().getBytes(UTF_8))) {
+            // One answer for both, so a stranger cannot probe which agent names exist.
+            return Optional.of("Unknown agent '" + hello.agent() + "' or wrong token.");
+        }
+        if (!e.kinds().contains(hello.kind())) {
+            return Optional.of("Agent '" + hello.agent() + "' may not connect as a "
+                    + hello.kind().name().toLowerCase(Locale.ROOT) + " agent.");
+        }
+        return Optional.empty();
+    }
+
+    private static Set<AgentKind> parseKinds(String text, String key, String source) {
+        Set<AgentKind> out = EnumSet.noneOf(AgentKind.class);
+        for (String k : text.split(",")) {
+            try {
+                out.add(AgentKind.valueOf(k.strip().toUpperCase(Locale.ROOT)));
+            } catch (IllegalArgumentException e) {
+                throw new GatewayException("Unknown agent kind '" + k.strip() + "' for '" + key + "' in '" + source
+                        + "'; use robot, user, service or peer.");
+            }
+        }
+        return out;
+    }
+}

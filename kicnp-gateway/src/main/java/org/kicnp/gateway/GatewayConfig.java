@@ -1,0 +1,83 @@
+package org.kicnp.gateway;
+
+import static java.util.Objects.requireNonNull;
+
+import io.netty.handler.ssl.SslContext;
+import java.time.Duration;
+import java.util.Optional;
+import org.kicnp.protocol.Framing;
+
+/**
+ * How a gateway listens and what it bounds. Defaults: loopback only, port 7407, 1 MiB frames, 30 s heartbeat
+ * timeout, 64/256 KiB write-buffer water marks, a slow consumer dropped after 1,000 consecutive shed messages,
+ * no TLS. Immutable; the {@code with…} methods return changed copies.
+ *
+ * @param port 0 picks an ephemeral port (tests)
+ */
+public record GatewayConfig(String host, int port, String serverName, int maxFrameBytes, Duration heartbeatTimeout,
+                            int writeLowWaterBytes, int writeHighWaterBytes, int maxShedBeforeDrop,
+                            Optional<SslContext> tls) {
+    public GatewayConfig {
+        requireNonNull(host, "host");
+        requireNonNull(serverName, "serverName");
+        requireNonNull(heartbeatTimeout, "heartbeatTimeout");
+        requireNonNull(tls, "tls");
+        if (port < 0 || port > 65_535) {
+            throw new IllegalArgumentException("Port " + port + " is not between 0 and 65535.");
+        }
+        if (maxFrameBytes < 1024) {
+            throw new IllegalArgumentException("A maximum frame of " + maxFrameBytes + " bytes is below 1024.");
+        }
+        if (writeLowWaterBytes <= 0 || writeHighWaterBytes < writeLowWaterBytes) {
+            throw new IllegalArgumentException("Write-buffer water marks " + writeLowWaterBytes + "/"
+                    + writeHighWaterBytes + " need 0 < low <= high.");
+        }
+        if (heartbeatTimeout.toMillis() < 30) {
+            throw new IllegalArgumentException("A heartbeat timeout of " + heartbeatTimeout + " is too short.");
+        }
+        if (maxShedBeforeDrop < 1) {
+            throw new IllegalArgumentException("maxShedBeforeDrop must be at least 1, not " + maxShedBeforeDrop + ".");
+        }
+    }
+
+    /** The defaults: {@code 127.0.0.1:7407}. */
+    public static GatewayConfig defaults() {
+        return new GatewayConfig("127.0.0.1", 7407, "kicnp", Framing.DEFAULT_MAX_FRAME_BYTES, Duration.ofSeconds(30),
+                64 * 1024, 256 * 1024, 1_000, Optional.empty());
+    }
+
+    public GatewayConfig withHost(String h) {
+        return new GatewayConfig(h, port, serverName, maxFrameBytes, heartbeatTimeout, writeLowWaterBytes,
+                writeHighWaterBytes, maxShedBeforeDrop, tls);
+    }
+
+    public GatewayConfig withPort(int p) {
+        return new GatewayConfig(host, p, serverName, maxFrameBytes, heartbeatTimeout, writeLowWaterBytes,
+                writeHighWaterBytes, maxShedBeforeDrop, tls);
+    }
+
+    public GatewayConfig withServerName(String name) {
+        return new GatewayConfig(host, port, name, maxFrameBytes, heartbeatTimeout, writeLowWaterBytes,
+                writeHighWaterBytes, maxShedBeforeDrop, tls);
+    }
+
+    public GatewayConfig withMaxFrameBytes(int bytes) {
+        return new GatewayConfig(host, port, serverName, bytes, heartbeatTimeout, writeLowWaterBytes,
+                writeHighWaterBytes, maxShedBeforeDrop, tls);
+    }
+
+    public GatewayConfig withHeartbeatTimeout(Duration timeout) {
+        return new GatewayConfig(host, port, serverName, maxFrameBytes, timeout, writeLowWaterBytes,
+                writeHighWaterBytes, maxShedBeforeDrop, tls);
+    }
+
+    public GatewayConfig withWriteBuffer(int lowBytes, int highBytes, int maxShed) {
+        return new GatewayConfig(host, port, serverName, maxFrameBytes, heartbeatTimeout, lowBytes, highBytes,
+                maxShed, tls);
+    }
+
+    public GatewayConfig withTls(SslContext context) {
+        return new GatewayConfig(host, port, serverName, maxFrameBytes, heartbeatTimeout, writeLowWaterBytes,
+                writeHighWaterBytes, maxShedBeforeDrop, Optional.of(context));
+    }
+}

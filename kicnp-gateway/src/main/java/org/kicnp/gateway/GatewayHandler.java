@@ -1,0 +1,151 @@
+package org.kicnp.gateway;
+
+import io.netty.channel.ChannelHandlerContext;
+import io.netty.channel.SimpleChannelInboundHandler;
+import io.netty.handler.codec.CorruptedFrameException;
+import io.netty.handler.codec.DecoderException;
+import io.netty.handler.codec.TooLongFrameException;
+import io.netty.handler.timeout.IdleState;
+import io.netty.handler.timeout.IdleStateEvent;
+import java.io.IOException;
+import org.kicnp.protocol.ErrorCode;
+import org.kicnp.protocol.Message;
+import org.kicnp.protocol.Message.ErrorReply;
+import org.kicnp.protocol.ProtocolException;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * One agent connection: enforces "authenticate first", dispatches each message over the closed set, answers
+ * protocol errors and closes that connection only, keeps heartbeats, and cleans up when the connection closes.
+ */
+final class GatewayHandler extends SimpleChannelInboundHandler<Message> {
+    private static final Logger LOG = LoggerFactory.getLogger(GatewayHandler.class);
+
+    private final ServerAgent server;
+    private final GatewayMetrics metrics;
+    private Session session;
+
+    GatewayHandler(ServerAgent server, GatewayMetrics metrics) {
+        super(Message.class);
+        this.server = server;
+        this.metrics = metrics;
+    }
+
+    @Override public void handlerAdded(ChannelHandlerContext ctx) {
+        session = new Session(ctx.channel());
+        metrics.connections.incrementAndGet();
+    }
+
+    @Override public void channelInactive(ChannelHandlerContext ctx) throws Exception {
+        server.connectionClosed(session);
+        super.channelInactive(ctx);
+    }
+
+    @Override protected void channelRead0(ChannelHandlerContext ctx, Message message) {
+        metrics.received.incrementAndGet();
+        switch (session.state()) {
+            case CLOSING -> { }
+            case NEW -> {
+                if (message instanceof Message.Hello hello) {
+                    server.authenticate(session, hello);
+                } else {
+                    refuse(ErrorReply.of(ErrorCode.NOT_AUTHENTICATED, "Send 'hello' first: '"
+                            + org.kicnp.protocol.MessageType.of(message).wireName() + "' before authentication."));
+                }
+            }
+            case AUTHENTICATED, REGISTERED -> dispatch(message);
+        }
+    }
+
+    private void dispatch(Message message) {
+        KnowledgeAccess kb = server.knowledge();
+        switch (message) {
+            case Message.Hello h -> refuse(ErrorReply.to(h.id(), ErrorCode.BAD_MESSAGE,
+                    "This connection is already authenticated as " + session + "."));
+            case Message.Register r -> reply(server.register(session, r));
+            case Message.Heartbeat h -> { }
+            case Message.Relay r -> reply(server.relay(session, r));
+            case Message.Command c -> reply(server.commands().fromAgent(session, c));
+            case Message.Feedback f -> server.commands().feedback(session, f);
+            case Message.SensorSignal s -> server.sensor(session, s).ifPresent(this::reply);
+            case Message.Query q -> reply(kb.query(q));
+            case Message.Ask a -> reply(kb.ask(a));
+            case Message.Assert a -> reply(kb.assertFrame(session, a));
+            case Message.Destroy d -> reply(kb.destroy(d));
+            case Message.Subscribe s -> reply(kb.subscribe(session, s));
+            case Message.Unsubscribe u -> reply(kb.unsubscribe(session, u));
+            case Message.Push p -> reply(kb.push(session, p));
+            case Message.Pull p -> reply(kb.pull(p));
+            case Message.ErrorReply e -> LOG.info("Agent {} reports {}: {}", session, e.code(), e.message());
+            case Message.AuthResult m -> serverOnly("auth_result");
+            case Message.Ack m -> serverOnly("ack");
+            case Message.Frames m -> serverOnly("frames");
+            case Message.Answer m -> serverOnly("answer");
+            case Message.Changed m -> serverOnly("changed");
+        }
+    }
+
+    @Override public void userEventTriggered(ChannelHandlerContext ctx, Object event) throws Exception {
+        if (event instanceof IdleStateEvent idle) {
+            if (idle.state() == IdleState.READER_IDLE) {
+                LOG.info("Closing {}: no message within the heartbeat timeout.", session);
+                server.out().closeWith(session, ErrorReply.of(ErrorCode.HEARTBEAT_TIMEOUT,
+                        "Nothing was heard from this connection within the heartbeat timeout."));
+            } else if (idle.state() == IdleState.WRITER_IDLE) {
+                server.out().send(session, new Message.Heartbeat(System.currentTimeMillis()));
+            }
+            return;
+        }
+        super.userEventTriggered(ctx, event);
+    }
+
+    @Override public void exceptionCaught(ChannelHandlerContext ctx, Throwable cause) {
+        if (cause instanceof IOException) {
+            LOG.debug("Connection {} failed: {}", session, cause.toString());
+            ctx.close();
+            return;
+        }
+        if (cause.getCause() instanceof javax.net.ssl.SSLException || cause instanceof javax.net.ssl.SSLException) {
+            // No error message can be sent without a TLS session: just close.
+            LOG.info("Closing {}: TLS failed: {}", session, cause.getCause() == null ? cause : cause.getCause());
+            metrics.protocolErrors.incrementAndGet();
+            ctx.close();
+            return;
+        }
+        ErrorReply error = toError(cause);
+        if (error.code() == ErrorCode.INTERNAL) {
+            LOG.error("Internal error on connection {}.", session, cause);
+        } else {
+            LOG.info("Closing {}: {} ({})", session, error.message(), error.code());
+        }
+        refuse(error);
+    }
+
+    private static ErrorReply toError(Throwable cause) {
+        if (cause instanceof DecoderException && cause.getCause() instanceof ProtocolException p) {
+            return ErrorReply.of(p.code(), p.getMessage());
+        }
+        if (cause instanceof TooLongFrameException || cause instanceof CorruptedFrameException) {
+            return ErrorReply.of(ErrorCode.FRAME_TOO_LARGE, "The frame is longer than this server accepts: "
+                    + cause.getMessage());
+        }
+        if (cause instanceof ProtocolException p) {
+            return ErrorReply.of(p.code(), p.getMessage());
+        }
+        return ErrorReply.of(ErrorCode.INTERNAL, "The server failed on this connection: " + cause);
+    }
+
+    private void serverOnly(String type) {
+        refuse(ErrorReply.of(ErrorCode.BAD_MESSAGE, "'" + type + "' is sent by the server, never to it."));
+    }
+
+    private void reply(Message answer) {
+        server.out().send(session, answer);
+    }
+
+    private void refuse(ErrorReply error) {
+        metrics.protocolErrors.incrementAndGet();
+        server.out().closeWith(session, error);
+    }
+}

@@ -1,0 +1,51 @@
+package org.kicnp.gateway;
+
+import io.netty.channel.Channel;
+import io.netty.channel.ChannelInitializer;
+import io.netty.channel.ChannelPipeline;
+import io.netty.channel.group.ChannelGroup;
+import io.netty.channel.socket.SocketChannel;
+import io.netty.handler.codec.LengthFieldBasedFrameDecoder;
+import io.netty.handler.timeout.IdleStateHandler;
+import java.util.concurrent.TimeUnit;
+import org.kicnp.protocol.Framing;
+import org.kicnp.protocol.MessageCodec;
+
+/**
+ * Builds each connection's pipeline: optional TLS, the bounded length-prefix decoder, the JSON message decoder and
+ * encoder, the heartbeat timer, and the connection's {@link GatewayHandler}.
+ */
+final class GatewayInitializer extends ChannelInitializer<SocketChannel> {
+    private final GatewayConfig config;
+    private final ServerAgent server;
+    private final GatewayMetrics metrics;
+    private final MessageCodec codec = new MessageCodec();
+
+    private final ChannelGroup connections;
+
+    GatewayInitializer(GatewayConfig config, ServerAgent server, GatewayMetrics metrics, ChannelGroup connections) {
+        this.connections = connections;
+        this.config = config;
+        this.server = server;
+        this.metrics = metrics;
+    }
+
+    @Override protected void initChannel(SocketChannel ch) {
+        connections.add(ch);
+        configure(ch);
+    }
+
+    /** Installs the handlers on a channel; also used on {@code EmbeddedChannel}s in tests. */
+    void configure(Channel ch) {
+        ChannelPipeline p = ch.pipeline();
+        config.tls().ifPresent(tls -> p.addLast("tls", tls.newHandler(ch.alloc())));
+        // failFast: an oversize length is refused when read, without waiting for (or buffering) its bytes.
+        p.addLast("frames", new LengthFieldBasedFrameDecoder(config.maxFrameBytes() + Framing.LENGTH_BYTES,
+                0, Framing.LENGTH_BYTES, 0, Framing.LENGTH_BYTES, true));
+        p.addLast("decoder", new MessageDecoder(codec));
+        p.addLast("encoder", new MessageEncoder(codec));
+        long timeout = config.heartbeatTimeout().toMillis();
+        p.addLast("idle", new IdleStateHandler(timeout, Math.max(10, timeout / 3), 0, TimeUnit.MILLISECONDS));
+        p.addLast("agent", new GatewayHandler(server, metrics));
+    }
+}

@@ -1,0 +1,130 @@
+package org.kicnp.gateway;
+
+import static java.util.Objects.requireNonNull;
+
+import io.netty.bootstrap.ServerBootstrap;
+import io.netty.channel.Channel;
+import io.netty.channel.ChannelOption;
+import io.netty.channel.EventLoopGroup;
+import io.netty.channel.MultiThreadIoEventLoopGroup;
+import io.netty.channel.WriteBufferWaterMark;
+import io.netty.channel.group.ChannelGroup;
+import io.netty.channel.group.DefaultChannelGroup;
+import io.netty.channel.nio.NioIoHandler;
+import io.netty.channel.socket.nio.NioServerSocketChannel;
+import io.netty.util.concurrent.GlobalEventExecutor;
+import java.net.InetSocketAddress;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import org.kicnp.core.KnowledgeBase;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The running gateway: binds, accepts agents, and gives the platform its {@link ActionSink}. Start with
+ * {@link #start}; {@link #close} stops accepting, closes every connection (failing in-flight commands) and
+ * releases the threads.
+ *
+ * <p>Threads: each connection's messages are handled on its Netty event loop, knowledge-base calls included (they
+ * are short, and the knowledge base has its own lock). Knowledge-base listeners registered by others (such as the
+ * inference engine) therefore run on a gateway thread when an agent's change commits; a slow listener should hand
+ * its work to its own thread. {@link FeedbackListener} calls come from the robot connection's event loop.
+ */
+public final class GatewayServer implements AutoCloseable {
+    private static final Logger LOG = LoggerFactory.getLogger(GatewayServer.class);
+
+    private final EventLoopGroup boss;
+    private final EventLoopGroup workers;
+    private final Channel listener;
+    private final ChannelGroup connections;
+    private final ServerAgent server;
+    private final GatewayMetrics metrics;
+    private final KnowledgeBase kb;
+
+    private GatewayServer(EventLoopGroup boss, EventLoopGroup workers, Channel listener, ChannelGroup connections,
+                          ServerAgent server, GatewayMetrics metrics, KnowledgeBase kb) {
+        this.boss = boss;
+        this.workers = workers;
+        this.listener = listener;
+        this.connections = connections;
+        this.server = server;
+        this.metrics = metrics;
+        this.kb = kb;
+    }
+
+    /**
+     * Starts a gateway over a knowledge base.
+     *
+     * @throws GatewayException when the address cannot be bound
+     */
+    public static GatewayServer start(GatewayConfig config, AgentDirectory agents, KnowledgeBase kb,
+                                      FeedbackListener feedback) {
+        requireNonNull(config, "config");
+        GatewayMetrics metrics = new GatewayMetrics();
+        ServerAgent server = ServerAgent.create(config, requireNonNull(agents, "agents"), requireNonNull(kb, "kb"),
+                requireNonNull(feedback, "feedback"), metrics);
+        ChannelGroup connections = new DefaultChannelGroup("kicnp-agents", GlobalEventExecutor.INSTANCE);
+        EventLoopGroup boss = new MultiThreadIoEventLoopGroup(1, NioIoHandler.newFactory());
+        EventLoopGroup workers = new MultiThreadIoEventLoopGroup(NioIoHandler.newFactory());
+        GatewayInitializer init = new GatewayInitializer(config, server, metrics, connections);
+        try {
+            Channel ch = new ServerBootstrap()
+                    .group(boss, workers)
+                    .channel(NioServerSocketChannel.class)
+                    .childOption(ChannelOption.TCP_NODELAY, true)
+                    .childOption(ChannelOption.WRITE_BUFFER_WATER_MARK,
+                            new WriteBufferWaterMark(config.writeLowWaterBytes(), config.writeHighWaterBytes()))
+                    .childHandler(init)
+                    .bind(config.host(), config.port()).sync().channel();
+            kb.addListener(server.knowledge());
+            GatewayServer gw = new GatewayServer(boss, workers, ch, connections, server, metrics, kb);
+            LOG.info("K-ICNP gateway '{}' listening on {}{}.", config.serverName(), ch.localAddress(),
+                    config.tls().isPresent() ? " (TLS)" : "");
+            return gw;
+        } catch (Exception e) {
+            boss.shutdownGracefully(0, 1, TimeUnit.SECONDS);
+            workers.shutdownGracefully(0, 1, TimeUnit.SECONDS);
+            if (e instanceof InterruptedException) {
+                Thread.currentThread().interrupt();
+            }
+            throw new GatewayException("Cannot listen on " + config.host() + ":" + config.port() + ": " + e.getMessage(), e);
+        }
+    }
+
+    /** The address the gateway listens on (with the actual port when it was started on port 0). */
+    public InetSocketAddress address() {
+        return (InetSocketAddress) listener.localAddress();
+    }
+
+    public int port() {
+        return address().getPort();
+    }
+
+    /** Where the platform sends commands to robots. */
+    public ActionSink actionSink() {
+        return server.commands();
+    }
+
+    public GatewayMetrics metrics() {
+        return metrics;
+    }
+
+    /** The names of the registered agents, sorted. */
+    public List<String> registeredAgents() {
+        return server.registeredAgents();
+    }
+
+    /** Commands sent and not yet ended or failed. */
+    public int commandsInFlight() {
+        return server.commands().inFlightCount();
+    }
+
+    @Override public void close() {
+        kb.removeListener(server.knowledge());
+        listener.close().awaitUninterruptibly();
+        connections.close().awaitUninterruptibly();
+        boss.shutdownGracefully(0, 1, TimeUnit.SECONDS).syncUninterruptibly();
+        workers.shutdownGracefully(0, 1, TimeUnit.SECONDS).syncUninterruptibly();
+        LOG.info("K-ICNP gateway stopped.");
+    }
+}

@@ -1,0 +1,65 @@
+package org.kicnp.gateway;
+
+import io.netty.channel.Channel;
+import io.netty.channel.ChannelFutureListener;
+import java.util.concurrent.TimeUnit;
+import org.kicnp.protocol.ErrorCode;
+import org.kicnp.protocol.Message;
+import org.kicnp.protocol.Message.ErrorReply;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Sends to agents without ever queueing without bound. A connection above its write-buffer high mark (it is not
+ * reading) gets nothing more: messages are shed and counted, and after {@code maxShedBeforeDrop} in a row the
+ * connection is told {@code overloaded} and closed. Safe from any thread.
+ */
+final class Outbound {
+    private static final Logger LOG = LoggerFactory.getLogger(Outbound.class);
+
+    private final GatewayMetrics metrics;
+    private final int maxShedBeforeDrop;
+
+    Outbound(GatewayMetrics metrics, int maxShedBeforeDrop) {
+        this.metrics = metrics;
+        this.maxShedBeforeDrop = maxShedBeforeDrop;
+    }
+
+    /** Sends a message; says whether it was handed to the connection (false: closed or shed). */
+    boolean send(Session to, Message message) {
+        Channel ch = to.channel();
+        if (!ch.isActive() || to.state() == Session.State.CLOSING) {
+            return false;
+        }
+        if (ch.isWritable()) {
+            to.shedInARow.set(0);
+            metrics.sent.incrementAndGet();
+            ch.writeAndFlush(message, ch.voidPromise());
+            return true;
+        }
+        metrics.shed.incrementAndGet();
+        if (to.shedInARow.incrementAndGet() == maxShedBeforeDrop) {
+            metrics.slowConsumersDropped.incrementAndGet();
+            LOG.warn("Dropping {}: {} messages in a row were shed because it does not read.", to, maxShedBeforeDrop);
+            closeWith(to, ErrorReply.of(ErrorCode.OVERLOADED, "The server dropped this connection: "
+                    + maxShedBeforeDrop + " messages in a row could not be sent because it does not read."));
+        }
+        return false;
+    }
+
+    /** Sends a last error and closes the connection once it is written (or at once, if it cannot be). */
+    void closeWith(Session to, ErrorReply error) {
+        to.closing();
+        Channel ch = to.channel();
+        if (!ch.isActive()) {
+            return;
+        }
+        if (!ch.isWritable()) {
+            ch.close(); // it does not read: the error would only wait behind what is queued
+            return;
+        }
+        metrics.sent.incrementAndGet();
+        ch.writeAndFlush(error).addListener(ChannelFutureListener.CLOSE);
+        ch.eventLoop().schedule(() -> ch.close(), 2, TimeUnit.SECONDS); // in case the peer never reads it
+    }
+}

@@ -1,0 +1,148 @@
+package org.kicnp.gateway;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import org.kicnp.core.BatchRejectedException;
+import org.kicnp.core.DataType;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.KnowledgeException;
+import org.kicnp.core.Provenance;
+import org.kicnp.core.Slot;
+import org.kicnp.core.Value;
+import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.Message.Command;
+import org.kicnp.protocol.Message.Feedback;
+import org.kicnp.protocol.Message.SensorSignal;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * What the network puts into the knowledge base, as RUNTIME instances that slot conditions can test (section 3.3):
+ * an agent's presence, the latest signal of each sensor and the latest feedback of each robot action. Frames of
+ * an agent are retracted when it goes away. Classes the knowledge base lacks are added as root classes.
+ */
+final class RuntimeFrames {
+    static final String PRESENCE = "Presence";
+    static final String SENSOR_SIGNAL = "SensorSignal";
+    static final String ACTION_FEEDBACK = "ActionFeedback";
+    private static final Logger LOG = LoggerFactory.getLogger(RuntimeFrames.class);
+
+    private final KnowledgeBase kb;
+    private final Map<String, Set<String>> framesByAgent = new ConcurrentHashMap<>();
+
+    RuntimeFrames(KnowledgeBase kb) {
+        this.kb = kb;
+    }
+
+    static String presenceName(String agent) {
+        return "agent_" + agent;
+    }
+
+    /** Puts the presence instance of a registered agent. */
+    void present(String agent, AgentKind kind, List<String> capabilities) {
+        Frame f = Frame.instance(presenceName(agent), presenceClass(kind))
+                .provenance(Provenance.RUNTIME)
+                .slot(Slot.ofValue("agent", DataType.STRING, Value.of(agent)))
+                .slot(Slot.ofValue("kind", DataType.STRING, Value.of(kind.name().toLowerCase(Locale.ROOT))))
+                .slot(Slot.ofValue("capabilities", DataType.LIST,
+                        new Value.Lst(capabilities.stream().map(Value::of).toList())))
+                .slot(Slot.ofValue("since", DataType.INTEGER, Value.of(System.currentTimeMillis())))
+                .build();
+        put(agent, f);
+    }
+
+    /** Puts the latest signal of a sensor, replacing the one before. */
+    void signal(SensorSignal s) {
+        ensureClass(SENSOR_SIGNAL);
+        Frame.Builder b = Frame.instance("signal_" + s.source() + "_" + s.sensor(), SENSOR_SIGNAL)
+                .provenance(Provenance.RUNTIME)
+                .slot(Slot.ofValue("source", DataType.STRING, Value.of(s.source())))
+                .slot(Slot.ofValue("sensor", DataType.STRING, Value.of(s.sensor())))
+                .slot(Slot.ofValue("time", DataType.INTEGER, Value.of(System.currentTimeMillis())))
+                .slot(Slot.ofValue("values", DataType.LIST, new Value.Lst(s.values())));
+        if (!s.values().isEmpty()) {
+            Value first = s.values().getFirst();
+            b.slot(Slot.ofValue("value", typeOf(first), first));
+        }
+        put(s.source(), b.build());
+    }
+
+    /** Puts the latest feedback of a robot action. */
+    void feedback(Command c, Feedback f) {
+        ensureClass(ACTION_FEEDBACK);
+        Frame.Builder b = Frame.instance("feedback_" + c.robot() + "_" + safe(c.action()), ACTION_FEEDBACK)
+                .provenance(Provenance.RUNTIME)
+                .slot(Slot.ofValue("command", DataType.STRING, Value.of(c.id())))
+                .slot(Slot.ofValue("robot", DataType.STRING, Value.of(c.robot())))
+                .slot(Slot.ofValue("action", DataType.STRING, Value.of(c.action())))
+                .slot(Slot.ofValue("status", DataType.STRING, Value.of(f.stage().name().toLowerCase(Locale.ROOT))))
+                .slot(Slot.ofValue("detail", DataType.STRING, Value.of(f.detail())));
+        f.progress().ifPresent(p -> b.slot(Slot.ofValue("progress", DataType.FLOAT, Value.of(p))));
+        kb.put(b.build());
+    }
+
+    /** Retracts the presence and sensor instances of an agent that went away. */
+    void retract(String agent) {
+        Set<String> names = framesByAgent.remove(agent);
+        if (names == null) {
+            return;
+        }
+        for (String name : names) {
+            try {
+                if (kb.contains(name)) {
+                    kb.remove(name);
+                }
+            } catch (KnowledgeException e) {
+                LOG.warn("Could not retract '{}' of agent '{}': {}", name, agent, e.getMessage());
+            }
+        }
+    }
+
+    private void put(String agent, Frame f) {
+        kb.put(f);
+        framesByAgent.computeIfAbsent(agent, a -> ConcurrentHashMap.newKeySet()).add(f.name());
+    }
+
+    private String presenceClass(AgentKind kind) {
+        List<String> candidates = new ArrayList<>();
+        switch (kind) {
+            case ROBOT -> candidates.add("RobotAgent");
+            case USER -> candidates.add("UserAgent");
+            case SERVICE, PEER -> { }
+        }
+        candidates.add("Agent");
+        for (String c : candidates) {
+            if (kb.frame(c).map(Frame::isClass).orElse(false)) {
+                return c;
+            }
+        }
+        ensureClass(PRESENCE);
+        return PRESENCE;
+    }
+
+    private void ensureClass(String name) {
+        if (kb.contains(name)) {
+            return;
+        }
+        try {
+            kb.add(Frame.classFrame(name).provenance(Provenance.RUNTIME).build());
+        } catch (BatchRejectedException e) {
+            if (!kb.contains(name)) { // lost a race with another connection adding it: fine
+                throw e;
+            }
+        }
+    }
+
+    private static DataType typeOf(Value v) {
+        return v instanceof Value.Ref ? DataType.INSTANCE : v.type();
+    }
+
+    private static String safe(String action) {
+        return action.replaceAll("[^\\p{L}\\p{N}_\\-]", "_");
+    }
+}

@@ -1,0 +1,168 @@
+package org.kicnp.gateway;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import org.kicnp.core.BatchRejectedException;
+import org.kicnp.core.Change;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.KnowledgeException;
+import org.kicnp.protocol.ErrorCode;
+import org.kicnp.protocol.FrameText;
+import org.kicnp.protocol.Message;
+import org.kicnp.protocol.Message.ErrorReply;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The paper's server agent, "a message-switching hub": authenticates agents, registers them with their
+ * capabilities and presence, relays messages to an agent or to every agent of a kind, records sensor signals, and
+ * cleans up after an agent that goes away. The per-connection {@link GatewayHandler} calls it.
+ */
+final class ServerAgent {
+    private static final Logger LOG = LoggerFactory.getLogger(ServerAgent.class);
+
+    private final String serverName;
+    private final AgentDirectory directory;
+    private final AgentRegistry registry;
+    private final KnowledgeBase kb;
+    private final RuntimeFrames runtime;
+    private final Outbound out;
+    private final Commands commands;
+    private final KnowledgeAccess knowledge;
+
+    ServerAgent(String serverName, AgentDirectory directory, AgentRegistry registry, KnowledgeBase kb,
+                RuntimeFrames runtime, Outbound out, Commands commands, KnowledgeAccess knowledge) {
+        this.serverName = serverName;
+        this.directory = directory;
+        this.registry = registry;
+        this.kb = kb;
+        this.runtime = runtime;
+        this.out = out;
+        this.commands = commands;
+        this.knowledge = knowledge;
+    }
+
+    /** Wires the server agent and its parts over a knowledge base. */
+    static ServerAgent create(GatewayConfig config, AgentDirectory directory, KnowledgeBase kb,
+                              FeedbackListener feedback, GatewayMetrics metrics) {
+        AgentRegistry registry = new AgentRegistry();
+        Outbound out = new Outbound(metrics, config.maxShedBeforeDrop());
+        RuntimeFrames runtime = new RuntimeFrames(kb);
+        KnowledgeAccess knowledge = new KnowledgeAccess(kb, out);
+        Commands commands = new Commands(registry, out, runtime, feedback);
+        return new ServerAgent(config.serverName(), directory, registry, kb, runtime, out, commands, knowledge);
+    }
+
+    Commands commands() {
+        return commands;
+    }
+
+    KnowledgeAccess knowledge() {
+        return knowledge;
+    }
+
+    Outbound out() {
+        return out;
+    }
+
+    /** Checks a hello; on refusal answers and closes, on success marks the session authenticated. */
+    void authenticate(Session s, Message.Hello hello) {
+        Optional<String> refusal = directory.refusal(hello);
+        if (refusal.isPresent()) {
+            LOG.info("Refused {} as '{}': {}", s, hello.agent(), refusal.get());
+            s.closing();
+            s.channel().writeAndFlush(new Message.AuthResult(hello.id(), false, serverName, refusal))
+                    .addListener(io.netty.channel.ChannelFutureListener.CLOSE);
+            return;
+        }
+        s.authenticated(hello.agent(), hello.kind());
+        LOG.info("Agent '{}' authenticated as {} from {}.", hello.agent(), hello.kind(), s.channel().remoteAddress());
+        out.send(s, new Message.AuthResult(hello.id(), true, serverName, Optional.empty()));
+    }
+
+    /** Stores the capability frames (all or none), then registers the agent and its presence. */
+    Message register(Session s, Message.Register r) {
+        List<Change> changes = new ArrayList<>();
+        List<String> names = new ArrayList<>();
+        try {
+            for (String xml : r.capabilities()) {
+                for (Frame f : FrameText.parse(xml, "register from " + s, kb)) {
+                    changes.add(new Change.Put(f));
+                    names.add(f.name());
+                }
+            }
+            if (!changes.isEmpty()) {
+                kb.apply(changes);
+            }
+        } catch (BatchRejectedException e) {
+            StringBuilder sb = new StringBuilder("The capabilities of " + s + " were refused:");
+            e.problems().forEach(p -> sb.append(' ').append(p));
+            return ErrorReply.to(r.id(), ErrorCode.REJECTED, sb.toString());
+        } catch (KnowledgeException | IllegalArgumentException e) {
+            return ErrorReply.to(r.id(), ErrorCode.REJECTED, e.getMessage());
+        }
+        s.registered(names);
+        registry.register(s).ifPresent(old -> {
+            LOG.info("Agent {} registered again from a new connection; closing the old one.", s);
+            out.closeWith(old, ErrorReply.of(ErrorCode.SUPERSEDED, "Agent " + s + " registered again from a new connection."));
+        });
+        try {
+            runtime.present(s.agent(), s.kind(), names);
+        } catch (KnowledgeException e) {
+            LOG.warn("Could not record the presence of {}: {}", s, e.getMessage());
+        }
+        LOG.info("Agent {} registered with {} capability frame(s).", s, names.size());
+        return new Message.Ack(r.id());
+    }
+
+    /** Relays to one agent or to every agent of a kind (not back to the sender). */
+    Message relay(Session from, Message.Relay r) {
+        Message.Relay stamped = r.from(from.agent());
+        if (stamped.toAgent().isPresent()) {
+            String to = stamped.toAgent().get();
+            Optional<Session> target = registry.find(to);
+            if (target.isEmpty()) {
+                return ErrorReply.to(r.id(), ErrorCode.UNKNOWN_AGENT, "No agent '" + to + "' is registered.");
+            }
+            out.send(target.get(), stamped);
+        } else {
+            for (Session target : registry.ofKind(stamped.toKind().orElseThrow())) {
+                if (target != from) {
+                    out.send(target, stamped);
+                }
+            }
+        }
+        return new Message.Ack(r.id());
+    }
+
+    /** Records a sensor signal; an error (without id) if the knowledge base refuses it. */
+    Optional<Message> sensor(Session from, Message.SensorSignal signal) {
+        try {
+            runtime.signal(signal.from(from.agent()));
+            return Optional.empty();
+        } catch (KnowledgeException | IllegalArgumentException e) {
+            return Optional.of(ErrorReply.of(ErrorCode.REJECTED, "Sensor signal '" + signal.sensor() + "' from "
+                    + from + " was refused: " + e.getMessage()));
+        }
+    }
+
+    /** Cleans up after a closed connection: in-flight commands fail, subscriptions end, presence is retracted. */
+    void connectionClosed(Session s) {
+        if (s.agent().isEmpty()) {
+            return;
+        }
+        commands.connectionClosed(s);
+        knowledge.connectionClosed(s);
+        boolean wasRegistered = registry.unregister(s);
+        if (wasRegistered || registry.find(s.agent()).isEmpty()) { // not if a newer connection took the name
+            runtime.retract(s.agent());
+        }
+        LOG.info("Agent {} disconnected{}.", s, wasRegistered ? "" : " (it was not registered)");
+    }
+
+    List<String> registeredAgents() {
+        return registry.names();
+    }
+}

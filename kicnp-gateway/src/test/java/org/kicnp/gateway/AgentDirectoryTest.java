@@ -1,0 +1,53 @@
+package org.kicnp.gateway;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.io.StringReader;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Properties;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.Message.Hello;
+
+class AgentDirectoryTest {
+    @Test
+    void load_readsTokensAndKinds(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("agents.properties");
+        Files.writeString(file, "# who may connect\nscout.token = s3cret\nscout.kinds = robot\nalice.token = pw\n");
+        AgentDirectory d = AgentDirectory.load(file);
+        assertThat(d.refusal(new Hello("1", "scout", AgentKind.ROBOT, "s3cret"))).isEmpty();
+        assertThat(d.refusal(new Hello("1", "scout", AgentKind.USER, "s3cret")))
+                .contains("Agent 'scout' may not connect as a user agent.");
+        assertThat(d.refusal(new Hello("1", "alice", AgentKind.PEER, "pw"))).isEmpty();
+        assertThat(d.refusal(new Hello("1", "alice", AgentKind.USER, "PW"))).contains("Unknown agent 'alice' or wrong token.");
+        assertThat(d.refusal(new Hello("1", "eve", AgentKind.USER, "pw"))).contains("Unknown agent 'eve' or wrong token.");
+    }
+
+    @Test
+    void of_whenKindUnknown_namesKeyAndSource() throws Exception {
+        Properties p = new Properties();
+        p.load(new StringReader("scout.token=t\nscout.kinds=robot,toaster\n"));
+        assertThatThrownBy(() -> AgentDirectory.of(p, "agents.properties")).isInstanceOf(GatewayException.class)
+                .hasMessage("Unknown agent kind 'toaster' for 'scout.kinds' in 'agents.properties'; use robot, user, "
+                        + "service or peer.");
+    }
+
+    @Test
+    void of_whenKeyIsNeitherTokenNorKinds_refusesIt() throws Exception {
+        Properties p = new Properties();
+        p.load(new StringReader("scout.password=t\n"));
+        assertThatThrownBy(() -> AgentDirectory.of(p, "a.properties"))
+                .hasMessage("Key 'scout.password' in the agent file 'a.properties' is neither NAME.token nor NAME.kinds.");
+    }
+
+    @Test
+    void of_whenKindsWithoutToken_refusesIt() throws Exception {
+        Properties p = new Properties();
+        p.load(new StringReader("scout.kinds=robot\n"));
+        assertThatThrownBy(() -> AgentDirectory.of(p, "a.properties"))
+                .hasMessage("Agent 'scout' in 'a.properties' has kinds but no token.");
+    }
+}

@@ -1,0 +1,232 @@
+package org.kicnp.gateway;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import io.netty.buffer.Unpooled;
+import io.netty.channel.embedded.EmbeddedChannel;
+import java.nio.charset.StandardCharsets;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.CopyOnWriteArrayList;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Value;
+import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.ErrorCode;
+import org.kicnp.protocol.FeedbackStage;
+import org.kicnp.protocol.Message;
+import org.kicnp.protocol.Message.Command;
+
+/** The gateway pipeline and handler on an {@link EmbeddedChannel}: codec, authentication, dispatch, cleanup. */
+class GatewayHandlerTest {
+    private final KnowledgeBase kb = KnowledgeBase.create();
+    private final GatewayMetrics metrics = new GatewayMetrics();
+    private final List<String> heard = new CopyOnWriteArrayList<>();
+    private final ServerAgent[] server = new ServerAgent[1];
+    private final EmbeddedChannel ch = Wire.channel(GatewayConfig.defaults().withMaxFrameBytes(4096),
+            AgentDirectory.empty().with("scout", "s3cret", AgentKind.ROBOT), kb, new Recorder(), metrics, server);
+
+    @AfterEach
+    void close() {
+        ch.finishAndReleaseAll();
+    }
+
+    @Test
+    void hello_withRightToken_isAccepted() {
+        ch.writeInbound(Wire.frame(new Message.Hello("1", "scout", AgentKind.ROBOT, "s3cret")));
+        assertThat(Wire.written(ch)).containsExactly(new Message.AuthResult("1", true, "kicnp", Optional.empty()));
+        assertThat(ch.isOpen()).isTrue();
+    }
+
+    @Test
+    void hello_withWrongToken_isRefusedAndClosed() {
+        ch.writeInbound(Wire.frame(new Message.Hello("1", "scout", AgentKind.ROBOT, "guess")));
+        assertThat(Wire.written(ch)).containsExactly(new Message.AuthResult("1", false, "kicnp",
+                Optional.of("Unknown agent 'scout' or wrong token.")));
+        assertThat(ch.isOpen()).isFalse();
+    }
+
+    @Test
+    void hello_withKindNotAllowed_isRefusedAndClosed() {
+        ch.writeInbound(Wire.frame(new Message.Hello("1", "scout", AgentKind.USER, "s3cret")));
+        assertThat(Wire.written(ch)).singleElement().isEqualTo(new Message.AuthResult("1", false, "kicnp",
+                Optional.of("Agent 'scout' may not connect as a user agent.")));
+        assertThat(ch.isOpen()).isFalse();
+    }
+
+    @Test
+    void anyMessage_beforeHello_getsNotAuthenticatedAndClose() {
+        ch.writeInbound(Wire.frame(new Message.Query("1", "Robot")));
+        assertError(ErrorCode.NOT_AUTHENTICATED, "Send 'hello' first: 'query' before authentication.");
+        assertThat(ch.isOpen()).isFalse();
+        assertThat(metrics.protocolErrors()).isEqualTo(1);
+    }
+
+    @Test
+    void garbageBytes_getFrameTooLargeAndClose() {
+        ch.writeInbound(Unpooled.copiedBuffer("GET / HTTP/1.1\r\nHost: x\r\n\r\n", StandardCharsets.US_ASCII));
+        assertError(ErrorCode.FRAME_TOO_LARGE, "longer than this server accepts");
+        assertThat(ch.isOpen()).isFalse();
+    }
+
+    @Test
+    void oversizeFrame_isRefusedBeforeItsBytesArrive() {
+        io.netty.buffer.ByteBuf header = Unpooled.buffer(4).writeInt(4097);
+        ch.writeInbound(header);
+        assertError(ErrorCode.FRAME_TOO_LARGE, "4101");
+        assertThat(ch.isOpen()).isFalse();
+    }
+
+    @Test
+    void badJson_getsBadJsonAndClose() {
+        ch.writeInbound(Wire.frame("{\"v\":1,\"type\":"));
+        assertError(ErrorCode.BAD_JSON, "not valid JSON");
+        assertThat(ch.isOpen()).isFalse();
+    }
+
+    @Test
+    void unknownType_getsUnknownTypeAndClose() {
+        ch.writeInbound(Wire.frame("{\"v\":1,\"type\":\"teleport\",\"id\":\"1\"}"));
+        assertError(ErrorCode.UNKNOWN_TYPE, "Unknown message type 'teleport'.");
+        assertThat(ch.isOpen()).isFalse();
+    }
+
+    @Test
+    void register_createsPresence_andClose_retractsIt() {
+        authenticate();
+        ch.writeInbound(Wire.frame(new Message.Register("2", List.of())));
+        assertThat(Wire.written(ch)).containsExactly(new Message.Ack("2"));
+        assertThat(kb.frame("agent_scout")).hasValueSatisfying(f -> assertThat(f.parent()).contains("Presence"));
+        assertThat(kb.value("agent_scout", "kind")).contains(Value.of("robot"));
+
+        ch.close();
+        assertThat(kb.contains("agent_scout")).isFalse();
+    }
+
+    @Test
+    void register_usesRobotAgentClass_whenTheKnowledgeBaseHasOne() {
+        kb.add(Frame.classFrame("Agent").build());
+        kb.add(Frame.classFrame("RobotAgent").parent("Agent").build());
+        register();
+        assertThat(kb.frame("agent_scout").flatMap(Frame::parent)).contains("RobotAgent");
+        assertThat(kb.contains("Presence")).isFalse();
+    }
+
+    @Test
+    void commands_inFlightPerRobot_areBounded() {
+        register();
+        for (int i = 0; i < Commands.MAX_IN_FLIGHT_PER_ROBOT; i++) {
+            server[0].commands().send(new Command("c" + i, "scout", "walk", Map.of()));
+        }
+        Wire.written(ch);
+        assertThatThrownBy(() -> server[0].commands().send(new Command("one-more", "scout", "walk", Map.of())))
+                .isInstanceOf(IllegalArgumentException.class)
+                .hasMessage("Agent 'scout' already has 1024 commands in flight; command 'one-more' was not sent.");
+        ch.writeInbound(Wire.frame(new Message.Feedback("c0", "scout", FeedbackStage.FAILED, Optional.empty(), "no")));
+        server[0].commands().send(new Command("one-more", "scout", "walk", Map.of()));
+        assertThat(server[0].commands().inFlightCount()).isEqualTo(Commands.MAX_IN_FLIGHT_PER_ROBOT);
+    }
+
+    @Test
+    void sensorSignal_becomesRuntimeFrameStampedWithTheSender() {
+        authenticate();
+        ch.writeInbound(Wire.frame(new Message.SensorSignal("someone-else", "sonar", List.of(Value.of(0.75)))));
+        assertThat(kb.value("signal_scout_sonar", "value")).contains(Value.of(0.75));
+        assertThat(kb.value("signal_scout_sonar", "source")).contains(Value.of("scout"));
+        assertThat(kb.require("signal_scout_sonar").provenance()).isEqualTo(org.kicnp.core.Provenance.RUNTIME);
+    }
+
+    @Test
+    void command_reachesRobot_andFeedbackReachesListenerAndKnowledgeBase() {
+        register();
+        Command fetch = new Command("c1", "scout", "fetch", Map.of("item", "tea"));
+        server[0].commands().send(fetch);
+        assertThat(Wire.written(ch)).containsExactly(fetch);
+
+        ch.writeInbound(Wire.frame(new Message.Feedback("c1", "scout", FeedbackStage.STARTED, Optional.empty(), "")));
+        ch.writeInbound(Wire.frame(new Message.Feedback("c1", "scout", FeedbackStage.ENDED, Optional.empty(), "tea served")));
+        assertThat(heard).containsExactly("started c1", "ended c1: tea served");
+        assertThat(kb.value("feedback_scout_fetch", "status")).contains(Value.of("ended"));
+        assertThat(server[0].commands().inFlightCount()).isZero();
+    }
+
+    @Test
+    void disconnect_duringCommand_failsItWithReason() {
+        register();
+        server[0].commands().send(new Command("c2", "scout", "walk", Map.of()));
+        ch.close();
+        assertThat(heard).containsExactly("failed c2: agent 'scout' disconnected");
+        assertThat(kb.value("feedback_scout_walk", "status")).contains(Value.of("failed"));
+    }
+
+    @Test
+    void command_toAbsentRobot_failsThroughListener() {
+        server[0].commands().send(new Command("c3", "pino", "walk", Map.of()));
+        assertThat(heard).containsExactly("failed c3: Agent 'pino' is not connected, so command 'c3' cannot be sent.");
+    }
+
+    @Test
+    void assertAndQuery_roundTripFramesAsXml() {
+        kb.add(Frame.classFrame("Cup").build());
+        authenticate();
+        String cup = org.kicnp.protocol.FrameText.toXml(Frame.instance("cup1", "Cup").build());
+        ch.writeInbound(Wire.frame(new Message.Assert("2", cup)));
+        ch.writeInbound(Wire.frame(new Message.Query("3", "Cup")));
+        List<Message> out = Wire.written(ch);
+        assertThat(out.get(0)).isEqualTo(new Message.Ack("2"));
+        assertThat(((Message.Frames) out.get(1)).frames()).singleElement().asString().contains("<NAME>cup1</NAME>");
+    }
+
+    @Test
+    void destroy_ofClass_isForbiddenButConnectionStaysOpen() {
+        kb.add(Frame.classFrame("Cup").build());
+        authenticate();
+        ch.writeInbound(Wire.frame(new Message.Destroy("2", "Cup")));
+        assertError(ErrorCode.FORBIDDEN, "Frame 'Cup' is a class; agents may destroy instances only.");
+        assertThat(ch.isOpen()).isTrue();
+    }
+
+    @Test
+    void serverOnlyMessage_fromAgent_isBadMessage() {
+        authenticate();
+        ch.writeInbound(Wire.frame(new Message.Ack("9")));
+        assertError(ErrorCode.BAD_MESSAGE, "'ack' is sent by the server, never to it.");
+        assertThat(ch.isOpen()).isFalse();
+    }
+
+    private void authenticate() {
+        ch.writeInbound(Wire.frame(new Message.Hello("1", "scout", AgentKind.ROBOT, "s3cret")));
+        assertThat(Wire.written(ch)).hasSize(1);
+    }
+
+    private void register() {
+        authenticate();
+        ch.writeInbound(Wire.frame(new Message.Register("2", List.of())));
+        assertThat(Wire.written(ch)).containsExactly(new Message.Ack("2"));
+    }
+
+    private void assertError(ErrorCode code, String messagePart) {
+        assertThat(Wire.written(ch)).singleElement().isInstanceOfSatisfying(Message.ErrorReply.class, e -> {
+            assertThat(e.code()).isEqualTo(code);
+            assertThat(e.message()).contains(messagePart);
+        });
+    }
+
+    private final class Recorder implements FeedbackListener {
+        @Override public void started(Command c) {
+            heard.add("started " + c.id());
+        }
+
+        @Override public void ended(Command c, String result) {
+            heard.add("ended " + c.id() + ": " + result);
+        }
+
+        @Override public void failed(Command c, String reason) {
+            heard.add("failed " + c.id() + ": " + reason);
+        }
+    }
+}

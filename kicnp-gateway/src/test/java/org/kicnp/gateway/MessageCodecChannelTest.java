@@ -1,0 +1,61 @@
+package org.kicnp.gateway;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import io.netty.buffer.ByteBuf;
+import io.netty.buffer.Unpooled;
+import io.netty.channel.embedded.EmbeddedChannel;
+import io.netty.handler.codec.DecoderException;
+import io.netty.handler.codec.LengthFieldBasedFrameDecoder;
+import java.util.List;
+import java.util.Optional;
+import org.junit.jupiter.api.Test;
+import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.ErrorCode;
+import org.kicnp.protocol.Message;
+import org.kicnp.protocol.ProtocolException;
+
+/** The Netty codec alone: frames split and joined arbitrarily still decode; the encoder writes length + JSON. */
+class MessageCodecChannelTest {
+    private EmbeddedChannel codec() {
+        return new EmbeddedChannel(new LengthFieldBasedFrameDecoder(1 << 20, 0, 4, 0, 4, true),
+                new MessageDecoder(Wire.CODEC), new MessageEncoder(Wire.CODEC));
+    }
+
+    @Test
+    void decoder_reassemblesFramesSplitAcrossReads() {
+        EmbeddedChannel ch = codec();
+        ByteBuf two = Unpooled.wrappedBuffer(Wire.frame(new Message.Ack("1")), Wire.frame(new Message.Heartbeat(7)));
+        while (two.isReadable()) {
+            ch.writeInbound(two.readRetainedSlice(Math.min(3, two.readableBytes())));
+        }
+        two.release();
+        assertThat(List.<Object>of(ch.readInbound(), ch.readInbound()))
+                .containsExactly(new Message.Ack("1"), new Message.Heartbeat(7));
+        assertThat(ch.finish()).isFalse();
+    }
+
+    @Test
+    void encoder_writesLengthPrefixThenJson() {
+        EmbeddedChannel ch = codec();
+        Message m = new Message.AuthResult("1", true, "kicnp", Optional.empty());
+        ch.writeOutbound(m);
+        ByteBuf out = ch.readOutbound();
+        byte[] json = Wire.CODEC.encode(m);
+        assertThat(out.readInt()).isEqualTo(json.length);
+        assertThat(io.netty.buffer.ByteBufUtil.getBytes(out)).isEqualTo(json);
+        out.release();
+    }
+
+    @Test
+    void decoder_whenPayloadInvalid_raisesProtocolExceptionWithCode() {
+        EmbeddedChannel ch = codec();
+        assertThatThrownBy(() -> ch.writeInbound(Wire.frame("{\"v\":1,\"type\":\"hello\",\"id\":\"1\",\"agent\":\"x\","
+                + "\"kind\":\"" + AgentKind.USER.name().toLowerCase() + "\"}")))
+                .isInstanceOf(DecoderException.class)
+                .cause().isInstanceOfSatisfying(ProtocolException.class,
+                        e -> assertThat(e.code()).isEqualTo(ErrorCode.BAD_MESSAGE))
+                .hasMessage("A 'hello' message needs the member 'token'.");
+    }
+}

@@ -1,0 +1,93 @@
+package org.kicnp.gateway;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.time.Duration;
+import java.util.Optional;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.kicnp.agent.AgentOptions;
+import org.kicnp.agent.RequestRefusedException;
+import org.kicnp.core.DataType;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Slot;
+import org.kicnp.core.Value;
+import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.ErrorCode;
+
+/** Knowledge between two K-ICNP servers on loopback: push a subtree (all or none) and pull one back. */
+class PlatformLinkTest {
+    private final KnowledgeBase here = KnowledgeBase.create();
+    private final KnowledgeBase there = KnowledgeBase.create();
+    private GatewayServer local;
+    private GatewayServer remote;
+    private PlatformLink link;
+
+    @BeforeEach
+    void start() {
+        here.apply(java.util.List.of(
+                new org.kicnp.core.Change.Add(Frame.classFrame("System").build()),
+                new org.kicnp.core.Change.Add(Frame.classFrame("Robot").parent("System")
+                        .slot(Slot.builder("speed", DataType.FLOAT).defaultValue(Value.of(0.5)).build()).build()),
+                new org.kicnp.core.Change.Add(Frame.classFrame("Humanoid").parent("Robot").build()),
+                new org.kicnp.core.Change.Add(Frame.instance("Robovie", "Humanoid").build()),
+                new org.kicnp.core.Change.Add(Frame.classFrame("Drink").build())));
+        AgentDirectory peers = AgentDirectory.empty().with("lab-a", "a-token", AgentKind.PEER)
+                .with("alice", "alice-token", AgentKind.USER);
+        local = GatewayServer.start(GatewayConfig.defaults().withPort(0).withServerName("lab-a"), peers, here,
+                FeedbackListener.NONE);
+        remote = GatewayServer.start(GatewayConfig.defaults().withPort(0).withServerName("lab-b"), peers, there,
+                FeedbackListener.NONE);
+        link = PlatformLink.connect(AgentOptions.of("127.0.0.1", remote.port(), "lab-a", AgentKind.PEER, "a-token"),
+                Duration.ofSeconds(10));
+    }
+
+    @AfterEach
+    void stop() {
+        link.close();
+        local.close();
+        remote.close();
+    }
+
+    @Test
+    void push_ofWholeKnowledgeBase_isStoredThere_andPullBringsItBack() {
+        assertThat(link.push(here, Optional.empty())).isEqualTo(5);
+        assertThat(there.frame("Robovie").flatMap(Frame::parent)).contains("Humanoid");
+        assertThat(there.value("Robovie", "speed")).contains(Value.of(0.5));
+
+        KnowledgeBase third = KnowledgeBase.create();
+        link.pullInto(third, Optional.empty());
+        assertThat(third.frames()).extracting(Frame::name)
+                .containsExactly("System", "Robot", "Humanoid", "Robovie", "Drink");
+    }
+
+    @Test
+    void push_ofSubtreeWhoseParentIsMissingThere_isRefusedWholly() {
+        assertThatThrownBy(() -> link.push(here, Optional.of("Robot")))
+                .isInstanceOfSatisfying(RequestRefusedException.class,
+                        e -> assertThat(e.code()).isEqualTo(ErrorCode.REJECTED))
+                .hasMessageContaining("System");
+        assertThat(there.frames()).extracting(Frame::name).doesNotContain("Robot", "Humanoid", "Robovie");
+    }
+
+    @Test
+    void pull_ofSubtree_returnsRootAndEverythingBelow_withoutRuntimeFrames() {
+        link.push(here, Optional.empty());
+        there.put(Frame.instance("ghost", "Robot").provenance(org.kicnp.core.Provenance.RUNTIME).build());
+        assertThat(link.pull(Optional.of("Robot"))).extracting(Frame::name)
+                .containsExactly("Robot", "Humanoid", "Robovie");
+    }
+
+    @Test
+    void push_fromNonPeer_isForbidden() {
+        try (org.kicnp.agent.UserAgent alice = new org.kicnp.agent.UserAgent(
+                AgentOptions.of("127.0.0.1", remote.port(), "alice", AgentKind.USER, "alice-token"))) {
+            alice.startAndAwait(Duration.ofSeconds(10));
+            assertThatThrownBy(() -> alice.push(here.frames())).isInstanceOfSatisfying(RequestRefusedException.class,
+                    e -> assertThat(e.code()).isEqualTo(ErrorCode.FORBIDDEN));
+        }
+    }
+}

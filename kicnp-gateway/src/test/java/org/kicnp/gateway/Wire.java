@@ -1,0 +1,69 @@
+package org.kicnp.gateway;
+
+import static java.nio.charset.StandardCharsets.UTF_8;
+
+import io.netty.buffer.ByteBuf;
+import io.netty.buffer.ByteBufUtil;
+import io.netty.buffer.Unpooled;
+import io.netty.channel.ChannelInitializer;
+import io.netty.channel.embedded.EmbeddedChannel;
+import java.util.ArrayList;
+import java.util.List;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.protocol.Message;
+import org.kicnp.protocol.MessageCodec;
+
+/** Frames in and out of an {@link EmbeddedChannel} running the gateway's pipeline: no sockets. */
+final class Wire {
+    static final MessageCodec CODEC = new MessageCodec();
+
+    private Wire() {
+    }
+
+    /** A channel with the real pipeline over a fresh server agent. */
+    static EmbeddedChannel channel(GatewayConfig config, AgentDirectory agents, KnowledgeBase kb,
+                                   FeedbackListener feedback, GatewayMetrics metrics, ServerAgent[] serverOut) {
+        ServerAgent server = ServerAgent.create(config, agents, kb, feedback, metrics);
+        kb.addListener(server.knowledge());
+        serverOut[0] = server;
+        GatewayInitializer init = new GatewayInitializer(config, server, metrics,
+                new io.netty.channel.group.DefaultChannelGroup(io.netty.util.concurrent.GlobalEventExecutor.INSTANCE));
+        return new EmbeddedChannel(new ChannelInitializer<EmbeddedChannel>() {
+            @Override protected void initChannel(EmbeddedChannel ch) {
+                init.configure(ch);
+            }
+        });
+    }
+
+    static ByteBuf frame(Message m) {
+        return frame(CODEC.encode(m));
+    }
+
+    static ByteBuf frame(String json) {
+        return frame(json.getBytes(UTF_8));
+    }
+
+    static ByteBuf frame(byte[] payload) {
+        ByteBuf b = Unpooled.buffer(4 + payload.length);
+        b.writeInt(payload.length);
+        b.writeBytes(payload);
+        return b;
+    }
+
+    /** Every message the channel wrote so far, decoded. */
+    static List<Message> written(EmbeddedChannel ch) {
+        List<Message> out = new ArrayList<>();
+        for (ByteBuf b = ch.readOutbound(); b != null; b = ch.readOutbound()) {
+            try {
+                int length = b.readInt();
+                if (length != b.readableBytes()) {
+                    throw new AssertionError("Length prefix " + length + " but " + b.readableBytes() + " bytes follow.");
+                }
+                out.add(CODEC.decode(ByteBufUtil.getBytes(b)));
+            } finally {
+                b.release();
+            }
+        }
+        return out;
+    }
+}

@@ -1,0 +1,40 @@
+package org.kicnp.protocol;
+
+import static java.util.Objects.requireNonNull;
+
+import java.util.List;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.xml.KnowledgeLoader;
+import org.kicnp.core.xml.KnowledgeXmlWriter;
+import org.kicnp.core.xml.SourcedFrame;
+
+/**
+ * Frames as they travel inside messages: the paper's XML text (section 3.2), read and written by the same loader
+ * and writer as the knowledge files, so the wire and the files cannot disagree.
+ */
+public final class FrameText {
+    private FrameText() {
+    }
+
+    /** The XML text of one frame. */
+    public static String toXml(Frame frame) {
+        return KnowledgeXmlWriter.toXml(requireNonNull(frame, "frame"));
+    }
+
+    /** The XML texts of several frames, in order. */
+    public static List<String> toXml(List<Frame> frames) {
+        return frames.stream().map(FrameText::toXml).toList();
+    }
+
+    /**
+     * Parses the frames of one XML text, resolving slot types against {@code context}.
+     *
+     * @param source names the text in error messages, such as {@code "register from 'scout'"}
+     * @throws org.kicnp.core.KnowledgeException listing every problem with its line and column
+     */
+    public static List<Frame> parse(String xml, String source, KnowledgeBase context) {
+        return KnowledgeLoader.parseText(requireNonNull(xml, "xml"), source, context).stream()
+                .map(SourcedFrame::frame).toList();
+    }
+}

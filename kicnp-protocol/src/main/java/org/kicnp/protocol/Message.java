@@ -1,0 +1,262 @@
+package org.kicnp.protocol;
+
+import static java.util.Objects.requireNonNull;
+
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.regex.Pattern;
+import org.kicnp.core.Value;
+
+/**
+ * The closed set of K-ICNP wire messages, one record per message type of {@code docs/protocol.md}. Records check
+ * their members when built, so a decoded message is already well-formed; the gateway and the SDK switch over this
+ * interface exhaustively. Frames travel as the paper's XML text; slot values as {@link Value}s.
+ */
+public sealed interface Message {
+
+    /** Letters, digits, {@code _} and {@code -}, starting with a letter or {@code _}: the names of agents. */
+    Pattern NAME = Pattern.compile("[\\p{L}_][\\p{L}\\p{N}_\\-]*");
+
+    /** A message that expects an answer echoing its {@link #id()}. */
+    sealed interface Request extends Message permits Hello, Register, Relay, Command, Query, Ask, Assert, Destroy,
+            Subscribe, Unsubscribe, Push, Pull {
+        /** The correlation id, chosen by the sender and echoed by the answer. */
+        String id();
+    }
+
+    /** Authenticates a connection: the first message an agent sends. */
+    record Hello(String id, String agent, AgentKind kind, String token) implements Request {
+        public Hello {
+            requireNonNull(id, "id");
+            requireNonNull(kind, "kind");
+            requireNonNull(token, "token");
+            checkName(agent, "agent");
+        }
+
+        @Override public String toString() {
+            return "Hello[id=" + id + ", agent=" + agent + ", kind=" + kind + ", token=***]";
+        }
+    }
+
+    /** The answer to {@link Hello}; a refusal says why in {@code reason}. */
+    record AuthResult(String id, boolean accepted, String server, Optional<String> reason) implements Message {
+        public AuthResult {
+            requireNonNull(id, "id");
+            requireNonNull(server, "server");
+            requireNonNull(reason, "reason");
+        }
+    }
+
+    /** Tells the platform what the agent can do: capability frames as XML. */
+    record Register(String id, List<String> capabilities) implements Request {
+        public Register {
+            requireNonNull(id, "id");
+            capabilities = List.copyOf(capabilities);
+        }
+    }
+
+    /** The plain answer to a request that succeeded. */
+    record Ack(String id) implements Message {
+        public Ack {
+            requireNonNull(id, "id");
+        }
+    }
+
+    /** Keeps an idle connection alive; {@code time} is the sender's clock in epoch milliseconds. */
+    record Heartbeat(long time) implements Message {
+    }
+
+    /** A message from one agent to another agent, or to every agent of a kind, through the hub. */
+    record Relay(String id, String from, Optional<String> toAgent, Optional<AgentKind> toKind, String subject,
+                 String body) implements Request {
+        public Relay {
+            requireNonNull(id, "id");
+            requireNonNull(from, "from");
+            requireNonNull(toAgent, "toAgent");
+            requireNonNull(toKind, "toKind");
+            requireNonNull(subject, "subject");
+            requireNonNull(body, "body");
+            if (toAgent.isPresent() == toKind.isPresent()) {
+                throw new IllegalArgumentException("A relay needs exactly one of toAgent and toKind.");
+            }
+        }
+
+        /** A relay to one agent by name. */
+        public static Relay toAgent(String id, String from, String agent, String subject, String body) {
+            return new Relay(id, from, Optional.of(agent), Optional.empty(), subject, body);
+        }
+
+        /** A relay to every registered agent of a kind. */
+        public static Relay toKind(String id, String from, AgentKind kind, String subject, String body) {
+            return new Relay(id, from, Optional.empty(), Optional.of(kind), subject, body);
+        }
+
+        /** The same relay stamped with the sender the server authenticated. */
+        public Relay from(String sender) {
+            return new Relay(id, sender, toAgent, toKind, subject, body);
+        }
+    }
+
+    /** An action for a robot: the instruction the platform converts into the robot's local command (section 3.3). */
+    record Command(String id, String robot, String action, Map<String, String> args) implements Request {
+        public Command {
+            requireNonNull(id, "id");
+            checkName(robot, "robot");
+            requireNonNull(action, "action");
+            if (action.isBlank()) {
+                throw new IllegalArgumentException("A command needs an action.");
+            }
+            args = Map.copyOf(args);
+        }
+    }
+
+    /** A robot's report on a command: started, progress, ended with a result, or failed with a reason. */
+    record Feedback(String id, String robot, FeedbackStage stage, Optional<Double> progress, String detail)
+            implements Message {
+        public Feedback {
+            requireNonNull(id, "id");
+            requireNonNull(robot, "robot");
+            requireNonNull(stage, "stage");
+            requireNonNull(progress, "progress");
+            requireNonNull(detail, "detail");
+        }
+
+        /** The same feedback stamped with the robot the server authenticated. */
+        public Feedback from(String sender) {
+            return new Feedback(id, sender, stage, progress, detail);
+        }
+    }
+
+    /** A signal detected by a sensor; {@code source} is stamped by the server with the sending agent's name. */
+    record SensorSignal(String source, String sensor, List<Value> values) implements Message {
+        public SensorSignal {
+            requireNonNull(source, "source");
+            checkName(sensor, "sensor");
+            values = List.copyOf(values);
+        }
+
+        /** The same signal stamped with the agent the server authenticated. */
+        public SensorSignal from(String sender) {
+            return new SensorSignal(sender, sensor, values);
+        }
+    }
+
+    /** Asks for every instance of a class (and of the classes below it). */
+    record Query(String id, String ofClass) implements Request {
+        public Query {
+            requireNonNull(id, "id");
+            requireNonNull(ofClass, "ofClass");
+        }
+    }
+
+    /** Frames as XML text: the answer to {@link Query} and {@link Pull}. */
+    record Frames(String id, List<String> frames) implements Message {
+        public Frames {
+            requireNonNull(id, "id");
+            frames = List.copyOf(frames);
+        }
+    }
+
+    /** Asks for the effective value of one slot of one frame, inherited along IS-A. */
+    record Ask(String id, String frame, String slot) implements Request {
+        public Ask {
+            requireNonNull(id, "id");
+            requireNonNull(frame, "frame");
+            requireNonNull(slot, "slot");
+        }
+    }
+
+    /** The answer to {@link Ask}; empty when the slot has no value. */
+    record Answer(String id, Optional<Value> value) implements Message {
+        public Answer {
+            requireNonNull(id, "id");
+            requireNonNull(value, "value");
+        }
+    }
+
+    /** Adds or replaces one instance frame, given as XML. */
+    record Assert(String id, String frame) implements Request {
+        public Assert {
+            requireNonNull(id, "id");
+            requireNonNull(frame, "frame");
+        }
+    }
+
+    /** Removes a frame by name. */
+    record Destroy(String id, String frame) implements Request {
+        public Destroy {
+            requireNonNull(id, "id");
+            requireNonNull(frame, "frame");
+        }
+    }
+
+    /** Asks to hear of every change to frames of a class (and of the classes below it). */
+    record Subscribe(String id, String ofClass) implements Request {
+        public Subscribe {
+            requireNonNull(id, "id");
+            requireNonNull(ofClass, "ofClass");
+        }
+    }
+
+    /** Stops a {@link Subscribe}. */
+    record Unsubscribe(String id, String ofClass) implements Request {
+        public Unsubscribe {
+            requireNonNull(id, "id");
+            requireNonNull(ofClass, "ofClass");
+        }
+    }
+
+    /** A change to a frame of a subscribed class; {@code frame} is the XML after the change, absent on removal. */
+    record Changed(String ofClass, ChangeKind change, String name, Optional<String> frame) implements Message {
+        public Changed {
+            requireNonNull(ofClass, "ofClass");
+            requireNonNull(change, "change");
+            requireNonNull(name, "name");
+            requireNonNull(frame, "frame");
+        }
+    }
+
+    /** Frames sent by another K-ICNP server, to be stored all or none. */
+    record Push(String id, List<String> frames) implements Request {
+        public Push {
+            requireNonNull(id, "id");
+            frames = List.copyOf(frames);
+        }
+    }
+
+    /** Asks another K-ICNP server for a subtree, or (without a root) its whole knowledge base. */
+    record Pull(String id, Optional<String> root) implements Request {
+        public Pull {
+            requireNonNull(id, "id");
+            requireNonNull(root, "root");
+        }
+    }
+
+    /** An error: the answer to the request {@code id} names, or (without an id) about the connection itself. */
+    record ErrorReply(Optional<String> id, ErrorCode code, String message) implements Message {
+        public ErrorReply {
+            requireNonNull(id, "id");
+            requireNonNull(code, "code");
+            requireNonNull(message, "message");
+        }
+
+        /** An error answering one request. */
+        public static ErrorReply to(String id, ErrorCode code, String message) {
+            return new ErrorReply(Optional.of(id), code, message);
+        }
+
+        /** An error about the connection, answering no request. */
+        public static ErrorReply of(ErrorCode code, String message) {
+            return new ErrorReply(Optional.empty(), code, message);
+        }
+    }
+
+    private static void checkName(String name, String what) {
+        requireNonNull(name, what);
+        if (!NAME.matcher(name).matches()) {
+            throw new IllegalArgumentException("'" + name + "' is not a valid " + what
+                    + " name: use letters, digits, '_' and '-', starting with a letter or '_'.");
+        }
+    }
+}

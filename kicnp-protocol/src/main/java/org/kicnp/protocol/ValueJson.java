@@ -1,0 +1,92 @@
+package org.kicnp.protocol;
+
+import com.fasterxml.jackson.core.JsonGenerator;
+import com.fasterxml.jackson.core.JsonParser;
+import com.fasterxml.jackson.databind.DeserializationContext;
+import com.fasterxml.jackson.databind.JsonDeserializer;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.JsonSerializer;
+import com.fasterxml.jackson.databind.SerializerProvider;
+import com.fasterxml.jackson.databind.module.SimpleModule;
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import org.kicnp.core.Value;
+
+/**
+ * Maps slot {@link Value}s to plain JSON values and back: string, integer, number with a fraction, boolean, array,
+ * and {@code {"ref": "frame"}} for a frame reference. Kept here so the core domain carries no Jackson annotations.
+ */
+final class ValueJson {
+    private ValueJson() {
+    }
+
+    static SimpleModule module() {
+        SimpleModule m = new SimpleModule("kicnp-values");
+        m.addSerializer(Value.class, new Writer());
+        m.addDeserializer(Value.class, new Reader());
+        return m;
+    }
+
+    private static final class Writer extends JsonSerializer<Value> {
+        @Override public void serialize(Value v, JsonGenerator g, SerializerProvider p) throws IOException {
+            switch (v) {
+                case Value.Str s -> g.writeString(s.value());
+                case Value.Int i -> g.writeNumber(i.value());
+                case Value.Real r -> g.writeNumber(r.value());
+                case Value.Bool b -> g.writeBoolean(b.value());
+                case Value.Ref r -> {
+                    g.writeStartObject();
+                    g.writeStringField("ref", r.frame());
+                    g.writeEndObject();
+                }
+                case Value.Lst l -> {
+                    g.writeStartArray();
+                    for (Value item : l.items()) {
+                        serialize(item, g, p);
+                    }
+                    g.writeEndArray();
+                }
+            }
+        }
+
+        @Override public Class<Value> handledType() {
+            return Value.class;
+        }
+    }
+
+    private static final class Reader extends JsonDeserializer<Value> {
+        @Override public Value deserialize(JsonParser parser, DeserializationContext ctx) throws IOException {
+            JsonNode node = ctx.readTree(parser);
+            return toValue(node, parser);
+        }
+
+        private static Value toValue(JsonNode node, JsonParser parser) throws IOException {
+            if (node.isTextual()) {
+                return Value.of(node.textValue());
+            }
+            if (node.isIntegralNumber() && node.canConvertToLong()) {
+                return Value.of(node.longValue());
+            }
+            if (node.isNumber()) {
+                return Value.of(node.doubleValue());
+            }
+            if (node.isBoolean()) {
+                return Value.of(node.booleanValue());
+            }
+            if (node.isArray()) {
+                List<Value> items = new ArrayList<>(node.size());
+                for (JsonNode item : node) {
+                    items.add(toValue(item, parser));
+                }
+                return new Value.Lst(items);
+            }
+            if (node.isObject() && node.size() == 1 && node.path("ref").isTextual()) {
+                return Value.ref(node.get("ref").textValue());
+            }
+            throw new com.fasterxml.jackson.databind.exc.InvalidFormatException(parser,
+                    "A slot value must be a string, a number, a boolean, an array or {\"ref\": \"frame\"}, not "
+                            + node + ".", node, Value.class);
+        }
+    }
+}

@@ -1,0 +1,101 @@
+package org.kicnp.protocol;
+
+import static java.nio.charset.StandardCharsets.UTF_8;
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.util.Arrays;
+import java.util.EnumSet;
+import java.util.Set;
+import java.util.stream.Collectors;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+
+class MessageCodecTest {
+    private final MessageCodec codec = new MessageCodec();
+
+    static java.util.stream.Stream<Message> samples() {
+        return Samples.all().stream();
+    }
+
+    @ParameterizedTest
+    @MethodSource("samples")
+    void decode_ofEncoded_returnsEqualMessage(Message message) {
+        assertThat(codec.decode(codec.encode(message))).isEqualTo(message);
+    }
+
+    @Test
+    void samples_coverEveryMessageType() {
+        Set<MessageType> covered = Samples.all().stream().map(MessageType::of).collect(Collectors.toSet());
+        assertThat(covered).containsExactlyInAnyOrderElementsOf(EnumSet.allOf(MessageType.class));
+        long records = Arrays.stream(Message.class.getPermittedSubclasses())
+                .flatMap(c -> c.isRecord() ? java.util.stream.Stream.of(c) : Arrays.stream(c.getPermittedSubclasses()))
+                .distinct().count();
+        assertThat(records).isEqualTo(MessageType.values().length);
+    }
+
+    @Test
+    void encode_writesEnvelopeFirstAndLowerCaseEnums() {
+        String json = new String(codec.encode(new Message.Hello("1", "scout", AgentKind.ROBOT, "t")), UTF_8);
+        assertThat(json).isEqualTo(
+                "{\"v\":1,\"type\":\"hello\",\"id\":\"1\",\"agent\":\"scout\",\"kind\":\"robot\",\"token\":\"t\"}");
+    }
+
+    @Test
+    void encode_leavesOutAbsentOptionalMembers() {
+        String json = new String(codec.encode(new Message.Pull("1", java.util.Optional.empty())), UTF_8);
+        assertThat(json).isEqualTo("{\"v\":1,\"type\":\"pull\",\"id\":\"1\"}");
+    }
+
+    @Test
+    void decode_ignoresUnknownMembers() {
+        assertThat(decode("{\"v\":1,\"type\":\"ack\",\"id\":\"7\",\"later\":true}")).isEqualTo(new Message.Ack("7"));
+    }
+
+    @Test
+    void decode_whenNotJson_reportsBadJson() {
+        assertCode("GET / HTTP/1.1", ErrorCode.BAD_JSON, "not valid JSON");
+        assertCode("[1,2]", ErrorCode.BAD_JSON, "one JSON object");
+        assertCode("{\"v\":1,\"type\":\"ack\",\"id\":\"7\"} trailing", ErrorCode.BAD_JSON, "not valid JSON");
+    }
+
+    @Test
+    void decode_whenVersionMissingOrOther_reportsUnsupportedVersion() {
+        assertCode("{\"type\":\"ack\",\"id\":\"7\"}", ErrorCode.UNSUPPORTED_VERSION, "version (missing)");
+        assertCode("{\"v\":2,\"type\":\"ack\",\"id\":\"7\"}", ErrorCode.UNSUPPORTED_VERSION, "version 2 is not supported");
+    }
+
+    @Test
+    void decode_whenTypeUnknown_reportsUnknownTypeQuotingIt() {
+        assertCode("{\"v\":1,\"type\":\"launch_missiles\"}", ErrorCode.UNKNOWN_TYPE, "Unknown message type 'launch_missiles'.");
+    }
+
+    @Test
+    void decode_whenRequiredMemberMissing_reportsBadMessageNamingIt() {
+        assertCode("{\"v\":1,\"type\":\"heartbeat\"}", ErrorCode.BAD_MESSAGE, "needs the member 'time'");
+        assertCode("{\"v\":1,\"type\":\"hello\",\"id\":\"1\",\"agent\":\"a\",\"kind\":\"robot\"}",
+                ErrorCode.BAD_MESSAGE, "needs the member 'token'");
+    }
+
+    @Test
+    void decode_whenMemberHasWrongTypeOrValue_reportsBadMessage() {
+        assertCode("{\"v\":1,\"type\":\"heartbeat\",\"time\":\"noon\"}", ErrorCode.BAD_MESSAGE, "Bad 'heartbeat' message");
+        assertCode("{\"v\":1,\"type\":\"hello\",\"id\":\"1\",\"agent\":\"a\",\"kind\":\"toaster\",\"token\":\"t\"}",
+                ErrorCode.BAD_MESSAGE, "Bad 'hello' message");
+        assertCode("{\"v\":1,\"type\":\"hello\",\"id\":\"1\",\"agent\":\"no spaces\",\"kind\":\"user\",\"token\":\"t\"}",
+                ErrorCode.BAD_MESSAGE, "'no spaces' is not a valid agent name");
+        assertCode("{\"v\":1,\"type\":\"relay\",\"id\":\"1\",\"from\":\"a\",\"subject\":\"s\",\"body\":\"b\"}",
+                ErrorCode.BAD_MESSAGE, "exactly one of toAgent and toKind");
+    }
+
+    private Message decode(String json) {
+        return codec.decode(json.getBytes(UTF_8));
+    }
+
+    private void assertCode(String json, ErrorCode code, String messagePart) {
+        assertThatThrownBy(() -> decode(json))
+                .isInstanceOfSatisfying(ProtocolException.class, e -> assertThat(e.code()).isEqualTo(code))
+                .hasMessageContaining(messagePart);
+    }
+}

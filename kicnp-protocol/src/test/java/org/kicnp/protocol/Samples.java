@@ -1,0 +1,47 @@
+package org.kicnp.protocol;
+
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import org.kicnp.core.Value;
+
+/** One message of every type, with optional members both present and absent, for round-trip tests. */
+final class Samples {
+    private Samples() {
+    }
+
+    static final String FRAME = "<FRAME><NAME>Fetch</NAME><ISA>Action</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>";
+
+    static List<Message> all() {
+        return List.of(
+                new Message.Hello("1", "scout", AgentKind.ROBOT, "s3cret"),
+                new Message.AuthResult("1", true, "kicnp", Optional.empty()),
+                new Message.AuthResult("1", false, "kicnp", Optional.of("Wrong token for agent 'scout'.")),
+                new Message.Register("2", List.of(FRAME)),
+                new Message.Ack("2"),
+                new Message.Heartbeat(1_700_000_000_000L),
+                Message.Relay.toAgent("3", "alice", "scout", "say", "hello"),
+                Message.Relay.toKind("4", "alice", AgentKind.ROBOT, "say", "hello all"),
+                new Message.Command("c-9", "scout", "fetch", Map.of("item", "tea")),
+                new Message.Feedback("c-9", "scout", FeedbackStage.PROGRESS, Optional.of(0.5), "halfway"),
+                new Message.Feedback("c-9", "scout", FeedbackStage.ENDED, Optional.empty(), "cup delivered"),
+                new Message.SensorSignal("scout", "sonar", List.of(Value.of(1.25), Value.of(3L), Value.of(true),
+                        Value.of("near"), Value.ref("user1"), new Value.Lst(List.of(Value.of(1L))))),
+                new Message.Query("5", "Robot"),
+                new Message.Frames("5", List.of(FRAME)),
+                new Message.Ask("6", "scout", "speed"),
+                new Message.Answer("6", Optional.of(Value.of(2L))),
+                new Message.Answer("6", Optional.empty()),
+                new Message.Assert("7", FRAME),
+                new Message.Destroy("8", "cup1"),
+                new Message.Subscribe("9", "SensorSignal"),
+                new Message.Unsubscribe("10", "SensorSignal"),
+                new Message.Changed("SensorSignal", ChangeKind.ADDED, "signal_scout_sonar", Optional.of(FRAME)),
+                new Message.Changed("SensorSignal", ChangeKind.REMOVED, "signal_scout_sonar", Optional.empty()),
+                new Message.Push("11", List.of(FRAME)),
+                new Message.Pull("12", Optional.of("Robot")),
+                new Message.Pull("12", Optional.empty()),
+                Message.ErrorReply.to("3", ErrorCode.UNKNOWN_AGENT, "No agent 'pino' is connected."),
+                Message.ErrorReply.of(ErrorCode.BAD_JSON, "The frame is not valid JSON."));
+    }
+}

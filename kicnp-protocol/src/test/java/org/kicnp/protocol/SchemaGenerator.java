@@ -1,0 +1,109 @@
+package org.kicnp.protocol;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.SerializationFeature;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.lang.reflect.ParameterizedType;
+import java.lang.reflect.RecordComponent;
+import java.lang.reflect.Type;
+import java.util.Arrays;
+import java.util.Locale;
+import java.util.Optional;
+import org.kicnp.core.Value;
+
+/**
+ * Derives the published JSON Schema (draft 2020-12) of each message type from its record, so the schemas in
+ * {@code docs/protocol/schemas} cannot drift from the code: {@link SchemasTest} compares them.
+ */
+final class SchemaGenerator {
+    private static final ObjectMapper JSON = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
+
+    private SchemaGenerator() {
+    }
+
+
+    static ObjectNode schema(MessageType type) {
+        ObjectNode s = JSON.createObjectNode();
+        s.put("$schema", "https://json-schema.org/draft/2020-12/schema");
+        s.put("$id", "https://kicnp.org/protocol/v1/" + type.wireName() + ".json");
+        s.put("title", "K-ICNP '" + type.wireName() + "' message (protocol version 1)");
+        s.put("type", "object");
+        ObjectNode props = s.putObject("properties");
+        props.putObject("v").put("const", MessageCodec.VERSION);
+        props.putObject("type").put("const", type.wireName());
+        ArrayNode required = JSON.createArrayNode().add("v").add("type");
+        for (RecordComponent c : type.recordClass().getRecordComponents()) {
+            Type t = c.getGenericType();
+            if (c.getType() == Optional.class) {
+                t = ((ParameterizedType) t).getActualTypeArguments()[0];
+            } else {
+                required.add(c.getName());
+            }
+            props.set(c.getName(), typeSchema(t));
+        }
+        s.set("required", required);
+        if (type == MessageType.RELAY) {
+            ArrayNode exactlyOne = s.putArray("oneOf");
+            exactlyOne.addObject().putArray("required").add("toAgent");
+            exactlyOne.addObject().putArray("required").add("toKind");
+        }
+        return s;
+    }
+
+    private static ObjectNode typeSchema(Type t) {
+        ObjectNode n = JSON.createObjectNode();
+        if (t instanceof ParameterizedType p) {
+            Class<?> raw = (Class<?>) p.getRawType();
+            Type[] args = p.getActualTypeArguments();
+            if (raw == java.util.List.class) {
+                n.put("type", "array");
+                n.set("items", typeSchema(args[0]));
+            } else if (raw == java.util.Map.class) {
+                n.put("type", "object");
+                n.set("additionalProperties", typeSchema(args[1]));
+            } else {
+                throw new IllegalStateException("No schema for " + t);
+            }
+            return n;
+        }
+        Class<?> c = (Class<?>) t;
+        if (c == String.class) {
+            n.put("type", "string");
+        } else if (c == long.class || c == int.class) {
+            n.put("type", "integer");
+        } else if (c == double.class || c == Double.class) {
+            n.put("type", "number");
+        } else if (c == boolean.class) {
+            n.put("type", "boolean");
+        } else if (c.isEnum()) {
+            n.put("type", "string");
+            ArrayNode values = n.putArray("enum");
+            Arrays.stream(c.getEnumConstants()).forEach(e -> values.add(e.toString().toLowerCase(Locale.ROOT)));
+        } else if (c == Value.class) {
+            n.put("$ref", "#/$defs/value");
+        } else {
+            throw new IllegalStateException("No schema for " + c);
+        }
+        return n;
+    }
+
+    /** Adds the definition of a slot value where a schema refers to it. */
+    static ObjectNode withDefinitions(ObjectNode schema) {
+        if (!schema.toString().contains("#/$defs/value")) {
+            return schema;
+        }
+        ObjectNode value = schema.putObject("$defs").putObject("value");
+        ArrayNode any = value.putArray("oneOf");
+        any.addObject().put("type", "string");
+        any.addObject().put("type", "number");
+        any.addObject().put("type", "boolean");
+        any.addObject().put("type", "array").putObject("items").put("$ref", "#/$defs/value");
+        ObjectNode ref = any.addObject();
+        ref.put("type", "object");
+        ref.putObject("properties").putObject("ref").put("type", "string");
+        ref.putArray("required").add("ref");
+        ref.put("additionalProperties", false);
+        return schema;
+    }
+}

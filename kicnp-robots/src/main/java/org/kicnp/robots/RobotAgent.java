@@ -1,0 +1,87 @@
+package org.kicnp.robots;
+
+import org.kicnp.agent.ActionHandle;
+import org.kicnp.agent.AgentBase;
+import org.kicnp.agent.AgentException;
+import org.kicnp.agent.AgentOptions;
+import org.kicnp.core.Frame;
+import org.kicnp.core.Value;
+import org.kicnp.protocol.Message.Command;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+import java.util.List;
+import java.util.Objects;
+import java.util.function.Consumer;
+import java.util.function.Function;
+
+/**
+ * The agent of one simulated robot (section 3.3): registers the robot's capability frames, hands each platform
+ * command to its {@link RobotDriver} (which converts it into a simulator command) and reports the driver's
+ * {@link Feedback} through the command's {@link ActionHandle} and its {@link SensorSignal}s as {@code sensor}
+ * messages. The four robots are the four subclasses; only Robovie adds something (face recognition).
+ */
+public abstract sealed class RobotAgent extends AgentBase permits RobovieAgent, PinoAgent, ScoutAgent, AiboAgent {
+    private static final Logger LOG = LoggerFactory.getLogger(RobotAgent.class);
+
+    private final RobotDriver driver;
+
+    /** {@code driverFor} makes the driver given where its signals go (this agent). */
+    RobotAgent(AgentOptions options, Function<Consumer<SensorSignal>, RobotDriver> driverFor) {
+        super(options);
+        this.driver = Objects.requireNonNull(driverFor.apply(this::signal), "driver");
+    }
+
+    /** The driver of the simulated robot behind this agent. */
+    public final RobotDriver driver() {
+        return driver;
+    }
+
+    @Override protected final List<Frame> capabilities() {
+        return driver.capabilities();
+    }
+
+    @Override protected void onCommand(Command command, ActionHandle handle) {
+        LOG.info("Agent '{}' runs command '{}': {} {}", name(), command.id(), command.action(), command.args());
+        driver.execute(command.action(), command.args(), f -> report(command, handle, f));
+    }
+
+    private void report(Command command, ActionHandle handle, Feedback feedback) {
+        try {
+            switch (feedback) {
+                case Feedback.Started s -> handle.started();
+                case Feedback.Progress p -> handle.progress(p.fraction(), p.note());
+                case Feedback.Ended e -> handle.ended(e.result());
+                case Feedback.Failed f -> {
+                    LOG.warn("Agent '{}': command '{}' ({}) failed: {}", name(), command.id(), command.action(), f.reason());
+                    handle.failed(f.reason());
+                }
+            }
+        } catch (AgentException e) {
+            LOG.warn("Agent '{}' could not report {} of command '{}': {}", name(),
+                    feedback.getClass().getSimpleName().toLowerCase(java.util.Locale.ROOT), command.id(), e.getMessage());
+        }
+    }
+
+    private void signal(SensorSignal signal) {
+        if (signal.sensor().equals("simulator")) {
+            LOG.error("Agent '{}': the simulator is gone ({}); its commands fail from now on.", name(),
+                    signal.values().get(1).text());
+        }
+        if (!isConnected()) {
+            LOG.debug("Agent '{}' is not connected; {} signal dropped.", name(), signal.sensor());
+            return;
+        }
+        try {
+            sensor(signal.sensor(), signal.values().toArray(Value[]::new));
+        } catch (AgentException e) {
+            LOG.debug("Agent '{}' could not send its {} signal: {}", name(), signal.sensor(), e.getMessage());
+        }
+    }
+
+    /** Stops listening to the simulator and disconnects; the simulator itself is closed by its owner. */
+    @Override public void close() {
+        driver.close();
+        super.close();
+    }
+}

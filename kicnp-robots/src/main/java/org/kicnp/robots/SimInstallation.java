@@ -1,0 +1,71 @@
+package org.kicnp.robots;
+
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Optional;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * Where the simulator lives: the repository's {@code robots-sim/} folder and its venv's Python. The venv is made
+ * with {@code robots-sim/setup-venv.sh} when it is missing, so a fresh checkout runs (and tests) without a manual
+ * step; the script is idempotent and quick when the venv is already there.
+ */
+public record SimInstallation(Path simDir, Path python) {
+    private static final Logger LOG = LoggerFactory.getLogger(SimInstallation.class);
+    private static final long SETUP_TIMEOUT_MIN = 10;
+
+    /** Finds the repository from {@code repoRoot}, or by walking up from the working directory, and the venv. */
+    public static SimInstallation locate(Optional<Path> repoRoot) {
+        Path root = repoRoot.map(Path::toAbsolutePath).orElseGet(SimInstallation::findRoot);
+        Path simDir = root.resolve("robots-sim");
+        if (!Files.isRegularFile(simDir.resolve("kicnp_sim").resolve("__main__.py"))) {
+            throw new SimulatorException("No simulator under '" + simDir + "': expected robots-sim/kicnp_sim there.");
+        }
+        Path python = simDir.resolve(".venv").resolve("bin").resolve("python");
+        if (!Files.isExecutable(python)) {
+            setUpVenv(simDir);
+        }
+        if (!Files.isExecutable(python)) {
+            throw new SimulatorException("robots-sim/setup-venv.sh ran but '" + python + "' is still missing.");
+        }
+        return new SimInstallation(simDir, python);
+    }
+
+    /** Walks up from the working directory to the first folder holding {@code robots-sim/setup-venv.sh}. */
+    static Path findRoot() {
+        Path start = Path.of("").toAbsolutePath();
+        for (Path p = start; p != null; p = p.getParent()) {
+            if (Files.isRegularFile(p.resolve("robots-sim").resolve("setup-venv.sh"))) {
+                return p;
+            }
+        }
+        throw new SimulatorException("No robots-sim/ folder in '" + start + "' or above it: "
+                + "run from inside the K-ICNP repository or give the repository root.");
+    }
+
+    private static void setUpVenv(Path simDir) {
+        Path script = simDir.resolve("setup-venv.sh");
+        LOG.info("Creating the simulator's Python venv with {}", script);
+        try {
+            Process p = new ProcessBuilder("bash", script.toString()).redirectErrorStream(true).start();
+            String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+            if (!p.waitFor(SETUP_TIMEOUT_MIN, TimeUnit.MINUTES)) {
+                p.destroyForcibly();
+                throw new SimulatorException("'" + script + "' did not finish within " + SETUP_TIMEOUT_MIN + " minutes.");
+            }
+            if (p.exitValue() != 0) {
+                throw new SimulatorException("'" + script + "' failed with exit code " + p.exitValue() + ": " + output.strip());
+            }
+        } catch (IOException e) {
+            throw new SimulatorException("Could not run '" + script + "': " + e.getMessage(), e);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new SimulatorException("Interrupted while running '" + script + "'.", e);
+        }
+    }
+}

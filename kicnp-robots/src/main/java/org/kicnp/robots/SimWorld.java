@@ -1,0 +1,451 @@
+package org.kicnp.robots;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.io.OutputStreamWriter;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Optional;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.Executors;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
+
+/**
+ * The simulated room: the Python simulator ({@code robots-sim}) running as a subprocess, spoken to in JSON lines.
+ * Requests get fresh ids and futures that complete with their ack (or fail with the simulator's error, a timeout,
+ * or its death); commands are followed as {@link SimAction}s; every event goes to the listeners in stream order on
+ * one event thread. When the process dies (exit, kill, broken pipe) every request and action in flight fails with a
+ * reason such as {@code simulator exited with code 137}, listeners get {@link SimEvent.Exited}, and every later
+ * call throws {@link SimulatorExitedException} at once.
+ */
+public final class SimWorld implements AutoCloseable {
+    private static final Logger LOG = LoggerFactory.getLogger(SimWorld.class);
+
+    private final SimOptions options;
+    private final Process process;
+    private final Writer stdin;
+    private final SimCodec codec = new SimCodec();
+    private final AtomicLong ids = new AtomicLong();
+    private final Map<String, CompletableFuture<Optional<JsonNode>>> pending = new ConcurrentHashMap<>();
+    private final Map<String, CompletableFuture<JsonNode>> queries = new ConcurrentHashMap<>();
+    private final Map<String, SimAction> actions = new ConcurrentHashMap<>();
+    private final List<Consumer<SimEvent>> listeners = new CopyOnWriteArrayList<>();
+    private final ExecutorService events;
+    private final CompletableFuture<SimEvent.Hello> hello = new CompletableFuture<>();
+    private final SimStderr stderr = new SimStderr();
+    private final Object deathLock = new Object();
+    private volatile String deathReason;
+    private volatile boolean closing;
+    private Thread reader;
+
+    private SimWorld(SimOptions options, Process process) {
+        this.options = options;
+        this.process = process;
+        this.stdin = new OutputStreamWriter(process.getOutputStream(), StandardCharsets.UTF_8);
+        this.events = Executors.newSingleThreadExecutor(Thread.ofPlatform().daemon().name("sim-events").factory());
+    }
+
+    /** Starts the simulator and waits for its {@code hello}. */
+    public static SimWorld start(SimOptions options) {
+        Objects.requireNonNull(options, "options");
+        SimInstallation sim = SimInstallation.locate(options.repoRoot());
+        List<String> cmd = new ArrayList<>(List.of(sim.python().toString(), "-m", "kicnp_sim",
+                "--seed", Long.toString(options.seed()), "--time-scale", Double.toString(options.timeScale())));
+        if (options.manual()) {
+            cmd.add("--manual");
+        }
+        Process process;
+        try {
+            process = new ProcessBuilder(cmd).directory(sim.simDir().toFile()).start();
+        } catch (IOException e) {
+            throw new SimulatorException("Could not start the simulator '" + String.join(" ", cmd) + "': "
+                    + e.getMessage(), e);
+        }
+        SimWorld world = new SimWorld(options, process);
+        world.startThreads();
+        try {
+            SimEvent.Hello h = world.hello.get(options.requestTimeout().toMillis() + 20_000, TimeUnit.MILLISECONDS);
+            LOG.info("Simulator {} started (pid {}, seed {}, mode {})", h.protocol(), process.pid(), h.seed(), h.mode());
+            return world;
+        } catch (ExecutionException e) {
+            world.close();
+            throw new SimulatorExitedException("The simulator did not start: " + e.getCause().getMessage());
+        } catch (TimeoutException e) {
+            world.close();
+            throw new SimulatorException("The simulator sent no hello within "
+                    + (options.requestTimeout().toSeconds() + 20) + " s.");
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            world.close();
+            throw new SimulatorException("Interrupted while starting the simulator.", e);
+        }
+    }
+
+    private void startThreads() {
+        stderr.follow(process.getErrorStream()); // first: a quick death's reason quotes stderr
+        reader = Thread.ofPlatform().daemon().name("sim-stdout").start(this::readEvents);
+    }
+
+    /** The simulator's first line: protocol, seed, mode, robots and their actions. */
+    public SimEvent.Hello hello() {
+        return hello.join();
+    }
+
+    public SimOptions options() {
+        return options;
+    }
+
+    /** The operating-system id of the simulator process (tests kill it with it). */
+    public long pid() {
+        return process.pid();
+    }
+
+    public boolean alive() {
+        return deathReason == null;
+    }
+
+    /** How the simulator died, once it has. */
+    public Optional<String> deathReason() {
+        return Optional.ofNullable(deathReason);
+    }
+
+    /** Adds a listener for every event, called in order on the event thread; it must not block on this world. */
+    public AutoCloseable addListener(Consumer<SimEvent> listener) {
+        Objects.requireNonNull(listener, "listener");
+        listeners.add(listener);
+        return () -> listeners.remove(listener);
+    }
+
+    /**
+     * Sends a request; the future completes with the ack's result, or fails with {@link SimRequestRejectedException},
+     * {@link SimulatorExitedException} or a {@link TimeoutException}.
+     */
+    public CompletableFuture<Optional<JsonNode>> request(SimRequest request) {
+        Objects.requireNonNull(request, "request");
+        if (request instanceof SimRequest.Command c) {
+            throw new IllegalArgumentException("Send command '" + c.action() + "' with command(...), which follows it.");
+        }
+        failIfDead();
+        String id = nextId();
+        CompletableFuture<Optional<JsonNode>> ack = new CompletableFuture<>();
+        pending.put(id, ack);
+        Duration timeout = request instanceof SimRequest.Step s
+                ? options.requestTimeout().plusMillis((long) (s.seconds() * 1000)) : options.requestTimeout();
+        ack.orTimeout(timeout.toMillis(), TimeUnit.MILLISECONDS).whenComplete((r, e) -> pending.remove(id));
+        try {
+            send(id, request);
+        } catch (SimulatorExitedException e) {
+            pending.remove(id);
+            throw e;
+        }
+        return ack;
+    }
+
+    /** Sends a request and waits for its ack's result. */
+    public Optional<JsonNode> call(SimRequest request) {
+        return await(request(request));
+    }
+
+    /** The whole world state now (robots, users, cups, obstacles). */
+    public JsonNode query() {
+        failIfDead();
+        String id = nextId();
+        CompletableFuture<JsonNode> state = new CompletableFuture<>();
+        queries.put(id, state);
+        state.orTimeout(options.requestTimeout().toMillis(), TimeUnit.MILLISECONDS)
+                .whenComplete((r, e) -> queries.remove(id));
+        send(id, new SimRequest.Query());
+        return await(state);
+    }
+
+    /** Manual mode: advances the world by {@code seconds} (stopping early when idle, if asked) and waits. */
+    public void step(double seconds, boolean untilIdle) {
+        call(new SimRequest.Step(seconds, untilIdle));
+    }
+
+    /** Sends a command and follows it: {@code observer} gets every update on the event thread. */
+    public SimAction command(SimRequest.Command command, Consumer<ActionUpdate> observer) {
+        Objects.requireNonNull(command, "command");
+        failIfDead();
+        String id = nextId();
+        SimAction action = new SimAction(id, command, observer);
+        actions.put(id, action);
+        action.outcome().whenComplete((r, e) -> actions.remove(id));
+        CompletableFuture<Optional<JsonNode>> ack = new CompletableFuture<>();
+        pending.put(id, ack);
+        ack.orTimeout(options.requestTimeout().toMillis(), TimeUnit.MILLISECONDS).whenComplete((r, e) -> {
+            pending.remove(id);
+            if (e != null && !(e instanceof SimulatorExitedException)) { // a death is reported by die(), with its reason
+                String reason = e instanceof TimeoutException
+                        ? "no answer from the simulator within " + options.requestTimeout().toSeconds() + " s"
+                        : e.getMessage();
+                post(() -> deliverSafely(action, new ActionUpdate.Failed(Double.NaN, reason)));
+            }
+        });
+        try {
+            send(id, command);
+        } catch (SimulatorExitedException e) {
+            actions.remove(id);
+            pending.remove(id);
+            throw e;
+        }
+        return action;
+    }
+
+    /** Sends a command without an observer. */
+    public SimAction command(SimRequest.Command command) {
+        return command(command, u -> { });
+    }
+
+    private String nextId() {
+        return "j" + ids.incrementAndGet();
+    }
+
+    private void send(String id, SimRequest request) {
+        failIfDead();
+        String line = codec.encode(id, request);
+        synchronized (stdin) {
+            try {
+                stdin.write(line);
+                stdin.write('\n');
+                stdin.flush();
+            } catch (IOException e) {
+                die(reasonAfterBrokenPipe(e));
+                failIfDead();
+            }
+        }
+        LOG.debug("-> {}", line);
+    }
+
+    private void failIfDead() {
+        String reason = deathReason;
+        if (reason != null) {
+            throw new SimulatorExitedException("The simulator is not running: " + reason + ".");
+        }
+    }
+
+    private static <T> T await(CompletableFuture<T> future) {
+        try {
+            return future.get();
+        } catch (ExecutionException e) {
+            Throwable cause = e.getCause();
+            switch (cause) { // a fresh exception, so the stack trace shows the caller
+                case SimulatorExitedException x -> throw new SimulatorExitedException(x.getMessage());
+                case SimRequestRejectedException r -> throw new SimRequestRejectedException(r.getMessage(), r.field());
+                case SimulatorException x -> throw new SimulatorException(x.getMessage(), x);
+                default -> { }
+            }
+            if (cause instanceof TimeoutException) {
+                throw new SimulatorException("The simulator did not answer in time.", cause);
+            }
+            throw new SimulatorException("A simulator request failed: " + cause, cause);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new SimulatorException("Interrupted while waiting for the simulator.", e);
+        }
+    }
+
+    private void readEvents() {
+        try (BufferedReader in = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8))) {
+            String line;
+            while ((line = in.readLine()) != null) {
+                LOG.trace("<- {}", line);
+                handleLine(line);
+            }
+        } catch (IOException e) {
+            LOG.debug("Simulator stdout closed: {}", e.getMessage());
+        }
+        die(reasonAfterEof());
+    }
+
+    private void handleLine(String line) {
+        SimEvent event;
+        try {
+            event = codec.decode(line);
+        } catch (SimProtocolException e) {
+            LOG.warn("{}", e.getMessage());
+            return;
+        }
+        switch (event) {
+            case SimEvent.Hello h -> hello.complete(h);
+            case SimEvent.Ack a -> {
+                if (!queries.containsKey(a.id())) {
+                    complete(a.id(), a.result());
+                }
+            }
+            case SimEvent.Error err -> err.id().ifPresentOrElse(id -> reject(id, err),
+                    () -> LOG.warn("Simulator error without a request id: {}", err.message()));
+            case SimEvent.State s -> s.id().map(queries::get).ifPresent(q -> q.complete(s.world()));
+            default -> { }
+        }
+        post(() -> dispatch(event));
+    }
+
+    /** Runs a task on the event thread, or here once that thread is gone (after death). */
+    private void post(Runnable task) {
+        try {
+            events.execute(task);
+        } catch (RejectedExecutionException e) {
+            task.run();
+        }
+    }
+
+    private void complete(String id, Optional<JsonNode> result) {
+        CompletableFuture<Optional<JsonNode>> f = pending.get(id);
+        if (f != null) {
+            f.complete(result);
+        }
+    }
+
+    private void reject(String id, SimEvent.Error err) {
+        SimRequestRejectedException e = new SimRequestRejectedException(err.message(), err.field());
+        CompletableFuture<Optional<JsonNode>> f = pending.get(id);
+        if (f != null) {
+            f.completeExceptionally(e);
+        }
+        CompletableFuture<JsonNode> q = queries.get(id);
+        if (q != null) {
+            q.completeExceptionally(e);
+        }
+    }
+
+    /** On the event thread: the action's update first, then the listeners. */
+    private void dispatch(SimEvent event) {
+        switch (event) {
+            case SimEvent.ActionStarted s -> toAction(s.id(), new ActionUpdate.Started(s.t(), s.args()));
+            case SimEvent.ActionProgress p -> toAction(p.id(), new ActionUpdate.Progress(p.t(), p.fraction(), p.body()));
+            case SimEvent.ActionEnded e -> toAction(e.id(), new ActionUpdate.Ended(e.t(), e.result()));
+            case SimEvent.ActionFailed f -> toAction(f.id(), new ActionUpdate.Failed(f.t(), f.reason()));
+            case SimEvent.Error err -> err.id().ifPresent(id -> toAction(id, new ActionUpdate.Failed(err.t(), err.message())));
+            case SimEvent.Hello h -> { }
+            case SimEvent.Ack a -> { }
+            case SimEvent.Face f -> { }
+            case SimEvent.Bumper b -> { }
+            case SimEvent.Arrival a -> { }
+            case SimEvent.Fall f -> { }
+            case SimEvent.Utterance u -> { }
+            case SimEvent.State s -> { }
+            case SimEvent.Exited x -> { }
+        }
+        for (Consumer<SimEvent> l : listeners) {
+            try {
+                l.accept(event);
+            } catch (RuntimeException e) {
+                LOG.warn("A simulator listener failed on {}: {}", event.getClass().getSimpleName(), e.toString(), e);
+            }
+        }
+    }
+
+    private void toAction(String id, ActionUpdate update) {
+        SimAction a = actions.get(id);
+        if (a != null) {
+            deliverSafely(a, update);
+        }
+    }
+
+    private static void deliverSafely(SimAction action, ActionUpdate update) {
+        try {
+            action.deliver(update);
+        } catch (RuntimeException e) {
+            LOG.warn("The observer of {} failed: {}", action, e.toString(), e);
+        }
+    }
+
+    private String reasonAfterEof() {
+        try {
+            if (process.waitFor(2, TimeUnit.SECONDS)) {
+                return exitReason(process.exitValue());
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        process.destroyForcibly();
+        return "simulator closed its output and was stopped";
+    }
+
+    private String reasonAfterBrokenPipe(IOException e) {
+        try {
+            if (process.waitFor(1, TimeUnit.SECONDS)) {
+                return exitReason(process.exitValue());
+            }
+        } catch (InterruptedException ie) {
+            Thread.currentThread().interrupt();
+        }
+        return "simulator pipe broke (" + e.getMessage() + ")";
+    }
+
+    private String exitReason(int code) {
+        stderr.drain();
+        return closing && code == 0 ? "simulator was shut down" : stderr.exitReason(code);
+    }
+
+    /** Marks the world dead once: fails everything in flight and tells the listeners. */
+    private void die(String reason) {
+        synchronized (deathLock) {
+            if (deathReason != null) {
+                return;
+            }
+            deathReason = reason;
+        }
+        if (closing) {
+            LOG.info("Simulator stopped: {}", reason);
+        } else {
+            LOG.error("Simulator died: {}", reason);
+        }
+        SimulatorExitedException dead = new SimulatorExitedException("The simulator is not running: " + reason + ".");
+        hello.completeExceptionally(dead);
+        pending.values().forEach(f -> f.completeExceptionally(dead));
+        queries.values().forEach(f -> f.completeExceptionally(dead));
+        post(() -> {
+            List.copyOf(actions.values()).forEach(a -> deliverSafely(a, new ActionUpdate.Failed(Double.NaN, reason)));
+            dispatch(new SimEvent.Exited(reason));
+        });
+        events.shutdown();
+    }
+
+    /** Asks the simulator to shut down, waits a little, then stops it by force; idempotent. */
+    @Override public void close() {
+        closing = true;
+        if (alive()) {
+            try {
+                request(new SimRequest.Shutdown()).get(2, TimeUnit.SECONDS);
+            } catch (ExecutionException | TimeoutException | SimulatorException e) {
+                LOG.debug("Shutdown request: {}", e.toString());
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+        try {
+            if (!process.waitFor(3, TimeUnit.SECONDS)) {
+                process.destroyForcibly().waitFor(3, TimeUnit.SECONDS);
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            process.destroyForcibly();
+        }
+        try {
+            reader.join(Duration.ofSeconds(3));
+            events.awaitTermination(2, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+}

@@ -1,0 +1,64 @@
+package org.kicnp.robots;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.Optional;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+/** Finding the simulator, making its venv when missing, and a simulator that dies before saying hello. */
+class SimInstallationTest {
+    @TempDir
+    Path repo;
+
+    private Path fakeSim(String setupScript) throws IOException {
+        Path sim = Files.createDirectories(repo.resolve("robots-sim"));
+        Files.createDirectories(sim.resolve("kicnp_sim"));
+        Files.writeString(sim.resolve("kicnp_sim").resolve("__main__.py"), "");
+        Files.writeString(sim.resolve("setup-venv.sh"), setupScript);
+        return sim;
+    }
+
+    @Test
+    void locate_whenTheVenvIsMissing_runsSetupVenvFirst() throws IOException {
+        Path sim = fakeSim("""
+                mkdir -p "$(dirname "$0")/.venv/bin"
+                printf '#!/bin/sh\\n' > "$(dirname "$0")/.venv/bin/python"
+                chmod +x "$(dirname "$0")/.venv/bin/python"
+                touch "$(dirname "$0")/setup-ran"
+                """);
+
+        SimInstallation found = SimInstallation.locate(Optional.of(repo));
+
+        assertThat(found.python()).isEqualTo(sim.resolve(".venv/bin/python"));
+        assertThat(sim.resolve("setup-ran")).exists();
+    }
+
+    @Test
+    void locate_whenTheSetupScriptFails_reportsItsExitCodeAndOutput() throws IOException {
+        fakeSim("echo 'pip: no network'; exit 3\n");
+
+        assertThatThrownBy(() -> SimInstallation.locate(Optional.of(repo)))
+                .isInstanceOf(SimulatorException.class)
+                .hasMessageEndingWith("setup-venv.sh' failed with exit code 3: pip: no network");
+    }
+
+    @Test
+    void start_whenTheSimulatorExitsBeforeHello_failsQuotingItsLastWords() throws IOException {
+        Path sim = fakeSim("exit 0\n");
+        Path python = Files.createDirectories(sim.resolve(".venv/bin")).resolve("python");
+        Files.writeString(python, "#!/bin/sh\necho 'ModuleNotFoundError: No module named pymunk' >&2\nexit 1\n");
+        Files.setPosixFilePermissions(python, PosixFilePermissions.fromString("rwxr-xr-x"));
+
+        assertThatThrownBy(() -> SimWorld.start(SimOptions.defaults().withRepoRoot(repo)))
+                .isInstanceOf(SimulatorExitedException.class)
+                .hasMessage("The simulator did not start: The simulator is not running: simulator exited with code 1; "
+                        + "its last words: ModuleNotFoundError: No module named pymunk.");
+    }
+}

@@ -1,0 +1,115 @@
+"""Protocol errors and bookkeeping, in process: every request gets one ack or one error."""
+
+from __future__ import annotations
+
+import json
+import math
+
+from conftest import Sim, only
+
+
+def test_hello_lists_robots_and_capabilities() -> None:
+    sim = Sim(seed=5)
+    hello = json.loads(sim.lines[0])
+    assert hello["type"] == "hello" and hello["seed"] == 5 and hello["t"] == 0.0
+    assert set(hello["robots"]) == {"robovie", "pino", "scout", "aibo"}
+    assert "say" in hello["robots"]["robovie"]["actions"]
+    assert hello["robots"]["scout"]["actions"]["go_to"]["args"]["x"]["required"] is True
+
+
+def test_malformed_and_invalid_requests_give_errors_naming_id_and_field(sim: Sim) -> None:
+    cases = [
+        ("{not json", None, None),
+        ('["a list"]', None, None),
+        ('{"type":"query"}', None, "id"),
+        ('{"id":"a","type":"fly"}', "a", "type"),
+        ('{"id":"b","type":"command","robot":"r2d2","action":"go_to"}', "b", "robot"),
+        ('{"id":"c","type":"command","robot":"scout","action":"say","args":{"text":"x"}}', "c", "action"),
+        ('{"id":"d","type":"command","robot":"scout","action":"go_to","args":{"x":"far","y":1}}', "d", "args.x"),
+        ('{"id":"e","type":"command","robot":"scout","action":"go_to","args":{"x":1}}', "e", "args.y"),
+        ('{"id":"f","type":"command","robot":"scout","action":"go_to","args":{"x":1,"y":1,"speed":3}}', "f", "args.speed"),
+        ('{"id":"g","type":"spawn_user","name":"z","face":[1,2,3]}', "g", "face"),
+        ('{"id":"h","type":"spawn_user","name":"z","x":50,"y":1}', "h", "x"),
+        ('{"id":"i","type":"move_user","name":"nobody","x":1,"y":1}', "i", "name"),
+        ('{"id":"j","type":"command","robot":"aibo","action":"set_posture","args":{"posture":"fly"}}', "j", "args.posture"),
+        ('{"id":"k","type":"query","extra":1}', "k", "extra"),
+    ]
+    for line, rid, field in cases:
+        evs = sim.send(line)
+        assert [e["type"] for e in evs] == ["error"], line
+        assert evs[0]["id"] == rid and evs[0]["field"] == field, (line, evs[0])
+        if rid is not None:
+            assert repr(rid) in evs[0]["message"]
+        if field is not None:
+            assert repr(field) in evs[0]["message"]
+    assert sim.step(0.5)[-1]["type"] == "ack"  # still working
+
+
+def test_step_refused_in_realtime_mode() -> None:
+    sim = Sim()
+    sim.disp.manual = False
+    evs = sim.request("step", id="s", seconds=1.0)
+    assert evs[0]["type"] == "error" and evs[0]["field"] == "type"
+
+
+def test_timeout_and_cancel(sim: Sim) -> None:
+    sim.command("scout", "go_to", "g1", timeout_s=0.5, x=1.0, y=5.0)
+    end, _ = sim.run("g1")
+    assert end["type"] == "action_failed" and end["reason"] == "timeout after 0.5 s"
+    assert abs(end["t"] - 0.5) <= 0.02
+    sim.command("scout", "go_to", "g2", x=1.0, y=5.0)
+    sim.step(1.0)
+    evs = sim.request("cancel", id="x", robot="scout", action_id="g2")
+    assert [e["type"] for e in evs] == ["action_failed", "ack"] and evs[0]["reason"] == "cancelled by x"
+    before = sim.state()["robots"]["scout"]
+    sim.step(1.0)
+    after = sim.state()["robots"]["scout"]
+    assert math.hypot(after["x"] - before["x"], after["y"] - before["y"]) < 1e-3
+    assert sim.request("cancel", id="y", robot="scout", action_id="g2")[0]["field"] == "action_id"
+
+
+def test_blocked_without_progress(sim: Sim) -> None:
+    sim.request("place_robot", robot="robovie", x=7.0, y=1.0, heading_deg=0)
+    sim.command("robovie", "go_to", "g1", x=7.9, y=1.0, stall_s=1.0)  # beyond reach: the wall stops it
+    end, _ = sim.run("g1")
+    assert end["type"] == "action_failed" and end["reason"] == "blocked: no progress for 1 s"
+
+
+def test_stream_and_progress_events(sim: Sim) -> None:
+    sim.request("stream", enabled=True, period_ms=500)
+    sim.send({"id": "g", "type": "command", "robot": "scout", "action": "go_to", "args": {"x": 6.2, "y": 4.0},
+              "progress_s": 1.0})
+    evs = sim.step(2.0)
+    assert [e["t"] for e in only(evs, "state")] == [0.5, 1.0, 1.5, 2.0]
+    prog = only(evs, "action_progress", id="g")
+    assert [p["elapsed_s"] for p in prog] == [1.0, 2.0]
+    assert prog[0]["remaining_m"] > prog[1]["remaining_m"]
+    sim.request("stream", enabled=False)
+    assert not only(sim.step(1.0), "state")
+
+
+def test_users_come_in_at_the_door_and_walk(sim: Sim) -> None:
+    ack = sim.request("spawn_user", name="alice")[0]
+    assert ack["result"]["x"] == 4.0 and ack["result"]["y"] == 0.6 and len(ack["result"]["face"]) == 16
+    assert abs(sum(v * v for v in ack["result"]["face"]) - 1.0) < 1e-5
+    dup = sim.request("spawn_user", name="alice")
+    assert dup[0]["type"] == "error" and dup[0]["field"] == "name"
+    sim.request("move_user", name="alice", x=4.0, y=1.6, speed=0.5)
+    sim.step(1.0)
+    mid = sim.state()["users"]["alice"]
+    assert abs(mid["y"] - 1.1) < 0.02 and mid["walking"] is True
+    sim.step(2.0)
+    assert sim.state()["users"]["alice"]["y"] == 1.6
+    sim.request("remove_user", name="alice")
+    assert sim.state()["users"] == {}
+
+
+def test_positions_inside_walls_or_counter_are_refused(sim: Sim) -> None:
+    evs = sim.request("spawn_user", id="u", name="ghost", x=7.5, y=4.0)
+    assert evs[0]["type"] == "error" and evs[0]["field"] == "x" and "counter" in evs[0]["message"]
+    evs = sim.request("place_robot", id="p", robot="robovie", x=0.2, y=3.0)
+    assert evs[0]["type"] == "error" and "west wall" in evs[0]["message"]
+    sim.request("add_obstacle", name="crate", x=2.0, y=5.0, w=0.5, h=0.5)
+    evs = sim.request("spawn_user", id="v", name="ghost", x=2.0, y=5.0)
+    assert evs[0]["type"] == "error" and "crate" in evs[0]["message"]
+    assert sim.request("spawn_user", id="w", name="ghost", x=2.0, y=4.3)[0]["type"] == "ack"

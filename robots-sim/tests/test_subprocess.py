@@ -1,0 +1,119 @@
+"""The real program: `python -m kicnp_sim` as a subprocess speaking JSON lines on stdin/stdout."""
+
+from __future__ import annotations
+
+import json
+import queue
+import subprocess
+import sys
+import threading
+import time
+from typing import Any
+
+import pytest
+
+
+class Proc:
+    """A running simulator with a reader thread, so reads can time out instead of hanging."""
+
+    def __init__(self, *args: str):
+        self.p = subprocess.Popen([sys.executable, "-m", "kicnp_sim", *args], stdin=subprocess.PIPE,
+                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, bufsize=1)
+        self.q: "queue.Queue[str | None]" = queue.Queue()
+        threading.Thread(target=self._read, daemon=True).start()
+
+    def _read(self) -> None:
+        assert self.p.stdout is not None
+        for line in self.p.stdout:
+            self.q.put(line)
+        self.q.put(None)
+
+    def send(self, obj: dict[str, Any] | str) -> None:
+        assert self.p.stdin is not None
+        self.p.stdin.write((obj if isinstance(obj, str) else json.dumps(obj)) + "\n")
+        self.p.stdin.flush()
+
+    def next(self, timeout: float = 10.0) -> dict[str, Any]:
+        line = self.q.get(timeout=timeout)
+        assert line is not None, "stdout closed"
+        return json.loads(line)  # every stdout line must be protocol JSON
+
+    def until(self, pred: Any, timeout: float = 10.0) -> list[dict[str, Any]]:
+        """Events up to and including the first one that matches pred."""
+        out: list[dict[str, Any]] = []
+        end = time.monotonic() + timeout
+        while True:
+            out.append(self.next(max(0.01, end - time.monotonic())))
+            if pred(out[-1]):
+                return out
+
+    def close_and_wait(self, timeout: float = 10.0) -> int:
+        assert self.p.stdin is not None
+        self.p.stdin.close()
+        return self.p.wait(timeout=timeout)
+
+
+@pytest.fixture
+def procs() -> Any:
+    started: list[Proc] = []
+
+    def start(*args: str) -> Proc:
+        started.append(Proc(*args))
+        return started[-1]
+
+    yield start
+    for pr in started:
+        if pr.p.poll() is None:
+            pr.p.kill()
+            pr.p.wait()
+
+
+def test_manual_mode_over_pipes(procs: Any) -> None:
+    pr = procs("--manual", "--seed", "42")
+    hello = pr.next()
+    assert hello["type"] == "hello" and hello["mode"] == "manual" and hello["seed"] == 42
+    pr.send("this is not json")
+    err = pr.next()
+    assert err["type"] == "error" and err["id"] is None and "malformed JSON" in err["message"]
+    assert pr.p.poll() is None  # still alive
+    assert pr.p.stdin is not None
+    pr.p.stdin.buffer.write(b"\xff\xfe{not utf-8}\n")
+    pr.p.stdin.flush()
+    assert pr.next()["type"] == "error"
+    assert pr.p.poll() is None
+    pr.send({"id": "q1", "type": "query"})
+    assert pr.next()["type"] == "ack"
+    st = pr.next()
+    assert st["type"] == "state" and st["id"] == "q1" and st["t"] == 0.0
+    pr.send({"id": "c1", "type": "command", "robot": "robovie", "action": "say", "args": {"text": "Hello there"}})
+    evs = pr.until(lambda e: e["type"] == "utterance")
+    assert [e["type"] for e in evs] == ["ack", "action_started", "utterance"]
+    pr.send({"id": "s1", "type": "step", "seconds": 1.0})
+    evs = pr.until(lambda e: e.get("id") == "s1")
+    assert [e["type"] for e in evs] == ["action_ended", "ack"] and evs[-1]["t"] == 1.0
+    assert pr.close_and_wait() == 0  # EOF: clean exit
+
+
+def test_realtime_mode_runs_faster_than_real_time_and_shuts_down(procs: Any) -> None:
+    pr = procs("--time-scale", "20", "--seed", "1")
+    assert pr.next()["mode"] == "realtime"
+    t0 = time.monotonic()
+    pr.send({"id": "g", "type": "command", "robot": "scout", "action": "go_to", "args": {"x": 6.2, "y": 4.0}})
+    evs = pr.until(lambda e: e.get("id") == "g" and e["type"] in ("action_ended", "action_failed"), timeout=15)
+    wall = time.monotonic() - t0
+    assert evs[-1]["type"] == "action_ended" and evs[-1]["t"] >= 3.5  # ~1.9 m at 0.5 m/s of sim time...
+    assert wall < evs[-1]["t"] / 2  # ...in much less wall time (20x nominal; slack for a loaded machine)
+    pr.send({"id": "x", "type": "step", "seconds": 1})
+    assert pr.next()["field"] == "type"  # step needs --manual
+    pr.send({"id": "bye", "type": "shutdown"})
+    assert pr.until(lambda e: e.get("id") == "bye")[-1]["type"] == "ack"
+    assert pr.p.wait(timeout=10) == 0
+
+
+def test_as_fast_as_possible_and_eof(procs: Any) -> None:
+    pr = procs("--time-scale", "0")
+    pr.next()
+    pr.send({"id": "q", "type": "query"})
+    st = pr.until(lambda e: e["type"] == "state")[-1]
+    assert st["id"] == "q"
+    assert pr.close_and_wait() == 0
