@@ -17,8 +17,9 @@ import picocli.CommandLine.Spec;
 @Command(name = "gateway",
         mixinStandardHelpOptions = true,
         description = {
-            "Round-trip latency and rate of the K-ICNP gateway and agent SDK, side by side with Mosquitto (MQTT QoS 1)",
-            "over loopback; Mosquitto is skipped with a note when it is not installed.",
+            "Gateway: round-trip latency and rate, beside Mosquitto (MQTT QoS 1).",
+            "The K-ICNP gateway and agent SDK and Mosquitto run the same ping-pong over loopback;",
+            "Mosquitto is skipped with a note when it is not installed.",
             "The last line of output is one JSON object with the figures."
         })
 final class GatewayBenchCommand implements Callable<Integer> {
