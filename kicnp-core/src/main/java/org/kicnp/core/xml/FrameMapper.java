@@ -31,6 +31,8 @@ final class FrameMapper {
         Optional<DataType> declaredType(String frame, String slot);
     }
 
+    private static final List<DataType> TYPES = List.of(DataType.values());
+
     private final Interner interner;
     private final TypeLookup types;
     private final List<LoadError> errors;
@@ -177,7 +179,7 @@ final class FrameMapper {
     private DataType type(FrameElement fe, SlotElement s, String name, Owner where) {
         Optional<Located> t = s.present(SlotTag.TYPE);
         if (t.isPresent()) {
-            Optional<DataType> parsed = DataType.parse(t.get().stripped());
+            Optional<DataType> parsed = dataType(t.get().stripped());
             if (parsed.isEmpty()) {
                 error(t.get().at(source), where + " has TYPE '" + t.get().stripped() + "', which is not a data type; "
                         + "use TYPE_INSTANCE, TYPE_STR, TYPE_INT, TYPE_FLOAT, TYPE_BOOL, TYPE_FRAME or TYPE_LIST.");
@@ -192,6 +194,16 @@ final class FrameMapper {
             return null;
         }
         return inherited.get();
+    }
+
+    /** {@link DataType#parse}, with a quick path for the XML names the writer uses. */
+    static Optional<DataType> dataType(String text) {
+        for (DataType d : TYPES) {
+            if (d.xmlName().equals(text)) {
+                return Optional.of(d);
+            }
+        }
+        return DataType.parse(text);
     }
 
     private Optional<Condition> condition(Located c, Owner where) {
@@ -233,7 +245,7 @@ final class FrameMapper {
                 if (v.items().isEmpty() && !v.stripped().equals("[]")) {
                     throw new IllegalArgumentException("A list value is written as ITEM elements, not as text.");
                 }
-                DataType itemType = argument.map(a -> DataType.parse(a).orElse(DataType.INSTANCE))
+                DataType itemType = argument.map(a -> dataType(a).orElse(DataType.INSTANCE))
                         .orElse(DataType.STRING);
                 List<Value> items = new ArrayList<>(v.items().size());
                 for (Located item : v.items()) {

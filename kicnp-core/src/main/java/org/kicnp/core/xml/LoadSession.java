@@ -233,7 +233,7 @@ final class LoadSession {
             if (e != null) {
                 for (SlotElement s : e.slots()) {
                     if (s.present(SlotTag.NAME).filter(n -> n.stripped().equals(slot)).isPresent()) {
-                        Optional<DataType> t = s.present(SlotTag.TYPE).flatMap(l -> DataType.parse(l.stripped()));
+                        Optional<DataType> t = s.present(SlotTag.TYPE).flatMap(l -> FrameMapper.dataType(l.stripped()));
                         if (t.isPresent()) {
                             return t;
                         }

@@ -200,4 +200,34 @@ class KnowledgeXmlWriterTest {
         assertThat(second.frames()).isEqualTo(first.frames());
         assertThat(Files.readAllBytes(again)).isEqualTo(Files.readAllBytes(saved));
     }
+
+    @Test
+    void write_whenListHoldsAList_refusesIt() {
+        Value nested = new Value.Lst(List.of(new Value.Lst(List.of(Value.of("a")))));
+        Frame f = Frame.classFrame("B").slot(Slot.ofValue("s", DataType.LIST, nested)).build();
+
+        assertThatThrownBy(() -> KnowledgeXmlWriter.toXml(f))
+                .isInstanceOf(KnowledgeException.class)
+                .hasMessage("The slot 's' of frame 'B' holds a list inside a list, which the XML format cannot write.");
+    }
+
+    @Test
+    void write_whenTextHasALoneSurrogate_refusesIt() {
+        Frame f = Frame.classFrame("B").slot(Slot.ofValue("s", DataType.STRING, Value.of("x\uD800y"))).build();
+
+        assertThatThrownBy(() -> KnowledgeXmlWriter.toXml(f))
+                .isInstanceOf(KnowledgeException.class)
+                .hasMessage("The slot 's' of frame 'B' holds a lone surrogate U+D800, which is not a character and "
+                        + "cannot be written.");
+    }
+
+    @Test
+    void write_supplementaryCharacters_roundTrip() {
+        Frame f = Frame.classFrame("B").slot(Slot.ofValue("s", DataType.STRING, Value.of("robot \uD83E\uDD16"))).build();
+
+        Frame back = KnowledgeLoader.parseText(KnowledgeXmlWriter.toXml(f), "x", KnowledgeBase.create()).getFirst()
+                .frame();
+
+        assertThat(back).isEqualTo(f);
+    }
 }
