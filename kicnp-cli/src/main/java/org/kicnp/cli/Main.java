@@ -15,6 +15,7 @@ import picocli.CommandLine.Command;
             CommandLine.HelpCommand.class,
             ValidateCommand.class,
             RobotsCommand.class,
+            InferCommand.class,
             BenchCommand.class,
             TestCommand.class,
         })

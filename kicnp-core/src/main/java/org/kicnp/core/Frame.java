@@ -14,7 +14,6 @@ import java.util.Set;
  * new frame that replaces the old one. Slot order is kept as written.
  */
 public final class Frame {
-    private static final java.util.regex.Pattern NAME = java.util.regex.Pattern.compile("[\\p{L}_][\\p{L}\\p{N}_\\-]*");
     private final String name;
     private final FrameKind kind;
     private final String parent;
@@ -234,7 +233,7 @@ public final class Frame {
             if (name.isEmpty()) {
                 throw new InvalidFrameException("A frame needs a name.");
             }
-            if (!NAME.matcher(name).matches()) {
+            if (!Names.isFrameName(name)) {
                 throw new InvalidFrameException("'" + name + "' is not a valid frame name: use letters, digits, "
                         + "'_' and '-', starting with a letter or '_'.");
             }

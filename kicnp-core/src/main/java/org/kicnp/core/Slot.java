@@ -12,7 +12,6 @@ import java.util.Optional;
  * one with {@link #toBuilder()}. A slot may hold a value or a default, never both.
  */
 public final class Slot {
-    private static final java.util.regex.Pattern NAME = java.util.regex.Pattern.compile("[\\p{L}_$][\\p{L}\\p{N}_$]*");
     private static final int REQUIRED = 1;
     private static final int SHARED = 2;
     private static final int UNIQUE = 4;
@@ -290,7 +289,7 @@ public final class Slot {
          * @throws InvalidFrameException when a value and a default are both given, or a value does not fit the type
          */
         public Slot build() {
-            if (!NAME.matcher(name).matches()) {
+            if (!Names.isSlotName(name)) {
                 throw new InvalidFrameException("'" + name + "' is not a valid slot name: scripts read slots as "
                         + "s.name, so use letters, digits, '_' and '$', starting with a letter, '_' or '$'.");
             }

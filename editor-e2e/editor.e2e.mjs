@@ -1,0 +1,212 @@
+// End-to-end test of the knowledge editor in a real headless Chromium, driven by Playwright.
+// Started by org.kicnp.editor.EditorBrowserTest, which runs the editor server and passes:
+//   EDITOR_URL (http://127.0.0.1:PORT/), EDITOR_PASSWORD, ARTIFACTS (a directory for screenshots),
+//   CHROMIUM (the browser executable, /usr/bin/chromium by default).
+// Exits 0 when every step passed; otherwise prints the failed step and exits 1.
+import { chromium } from 'playwright-core';
+import { mkdirSync } from 'node:fs';
+import { join } from 'node:path';
+
+const base = process.env.EDITOR_URL;
+const password = process.env.EDITOR_PASSWORD;
+const artifacts = process.env.ARTIFACTS || 'target/e2e';
+mkdirSync(artifacts, { recursive: true });
+
+const problems = [];
+const expectedNetworkErrors = /Failed to load resource: the server responded with a status of (401|409|422)/;
+let step = 'launch';
+
+function check(condition, message) {
+  if (!condition) throw new Error(message);
+}
+
+const browser = await chromium.launch({
+  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+    '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+});
+let failed = false;
+try {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const page = await context.newPage();
+  page.setDefaultTimeout(10000);
+  page.on('console', (m) => {
+    if (m.type() === 'error' && !expectedNetworkErrors.test(m.text())) problems.push('console: ' + m.text());
+  });
+  page.on('pageerror', (e) => problems.push('page error: ' + e.message));
+  page.on('request', (r) => {
+    if (!r.url().startsWith(base.replace(/\/$/, '')) && !r.url().startsWith(base.replace('http', 'ws').replace(/\/$/, ''))) {
+      problems.push('request outside the editor: ' + r.url());
+    }
+  });
+
+  step = 'open the hierarchy';
+  await page.goto(base);
+  const tree = page.locator('#tree');
+  await tree.locator('[data-frame="AskUserName"]').waitFor();
+  check(await tree.locator('.frame-button.instance[data-frame="Robovie"]').count() === 1, 'Robovie is not shown as an instance');
+  check(await tree.locator('[data-frame="Taro"] .learned-mark').count() === 1, 'the learned frame Taro is not marked');
+  check(await tree.locator('[data-frame="Greeting"] .link-mark').count() === 1, 'Greeting\'s semantic link is not shown');
+  await page.locator('#live:not(.off)').waitFor();
+  await page.screenshot({ path: join(artifacts, '01-hierarchy.png') });
+
+  step = 'search the hierarchy';
+  await page.fill('#search', 'user');
+  check(await tree.locator('.frame-button.match').count() === 4, 'search for "user" did not mark 4 frames');
+  check(await tree.locator('[data-frame="Robovie"]').count() === 0, 'search did not hide Robovie');
+  await page.fill('#search', '');
+
+  step = 'read-only before login: a frame opens but cannot be edited';
+  await tree.locator('[data-frame="Greeting"]').click();
+  await page.locator('#frame-title', { hasText: 'Greeting' }).waitFor();
+  check(await page.isDisabled('#save-button'), 'Save is enabled without a login');
+  check(await page.isDisabled('input[aria-label="mUser argument"]'), 'slot inputs are editable without a login');
+  check(await page.isVisible('#readonly-note'), 'the read-only note is not shown');
+  await page.screenshot({ path: join(artifacts, '00-read-only.png') });
+
+  step = 'log in with a wrong password';
+  await page.fill('#login-password', 'not the password');
+  await page.press('#login-password', 'Enter');
+  await page.locator('#login-error').waitFor({ state: 'visible' });
+  check((await page.textContent('#login-error')).includes('Wrong password'), 'wrong password not refused in words');
+  check(await page.isVisible('#login-form'), 'login form vanished after a wrong password');
+
+  step = 'log in';
+  await page.fill('#login-password', password);
+  await page.click('#login-button');
+  await page.locator('#session-info').waitFor({ state: 'visible' });
+
+  step = 'open a frame with the keyboard';
+  await tree.locator('[data-frame="AskUserName"]').focus();
+  await page.keyboard.press('Enter');
+  await page.locator('#frame-title', { hasText: 'AskUserName' }).waitFor();
+  const inherited = page.locator('tr.inherited[data-slot-name="mfunction"]');
+  await inherited.waitFor();
+  check((await inherited.textContent()).includes('from Speech'), 'inherited slot does not name Speech');
+  check(await page.locator('#slot-table thead th').count() === 14, 'the slot table does not show every Table 2 facet');
+
+  step = 'edit a slot into a validation error';
+  await page.fill('input[aria-label="mUser argument"]', 'Martian');
+  await page.fill('input[aria-label="mUser role"]', 'the visitor asked for a name');
+  await page.click('#save-button');
+  await page.locator('#frame-errors').waitFor({ state: 'visible' });
+  const errorText = await page.textContent('#frame-errors');
+  check(errorText.includes("'Martian'"), 'the validation error does not name the unknown class: ' + errorText);
+  check(await page.locator('tr.own.invalid[data-slot-name="mUser"]').count() === 1, 'the faulty slot row is not marked');
+  await page.screenshot({ path: join(artifacts, '02-validation-error.png'), fullPage: true });
+
+  step = 'fix and save';
+  await page.fill('input[aria-label="mUser argument"]', 'KnownUser');
+  await page.click('#save-button');
+  await page.locator('#frame-notice', { hasText: 'Saved AskUserName' }).waitFor();
+  check(await page.isHidden('#frame-errors'), 'the error box stayed after a good save');
+
+  step = 'edit a script slot: a syntax error is caught before saving';
+  await page.click('button[aria-label="Edit script onInstantiate"]');
+  const script = page.locator('textarea[id$="-value"]');
+  await script.waitFor();
+  check(await page.locator('.code pre .tok-fn').count() > 0, 'the script is not highlighted');
+  const revision = await page.textContent('#frame-meta');
+  await script.fill('sendmsg(s.mMouth, "What is your name?";');
+  await page.click('#save-button');
+  await page.locator('#frame-errors', { hasText: 'syntax error' }).waitFor();
+  check(await page.textContent('#frame-meta') === revision, 'a script with a syntax error was saved');
+  await script.fill('sendmsg(s.mMouth, “What is your name?”);');
+  await page.click('#save-button');
+  await page.locator('#frame-notice', { hasText: 'Saved AskUserName' }).waitFor();
+
+  step = 'live update: a frame another user creates appears without a reload';
+  const other = await browser.newContext();
+  const login = await other.request.post(base + 'api/login', { data: { password } });
+  check(login.ok(), 'the second user could not log in');
+  const created = await other.request.post(base + 'api/frames',
+    { data: { name: 'PINO', kind: 'INSTANCE', parent: 'HumanoidRobot' } });
+  check(created.status() === 201, 'the second user could not create PINO: ' + created.status());
+  await tree.locator('[data-frame="PINO"]').waitFor();
+  await other.close();
+
+  step = 'create a sub-frame and delete it';
+  await tree.locator('[data-frame="Robot"]').click();
+  await page.locator('#frame-title', { hasText: 'Robot' }).waitFor();
+  await page.click('#new-child-button');
+  await page.fill('#create-name', 'Scout');
+  check(await page.inputValue('#create-parent') === 'Robot', 'a new sub-frame does not default to its parent');
+  await page.press('#create-name', 'Enter');
+  await page.locator('#frame-title', { hasText: 'Scout' }).waitFor();
+  await tree.locator('[data-frame="Scout"]').waitFor();
+  await page.click('#delete-button');
+  await page.click('#delete-apply');
+  await page.locator('#welcome').waitFor({ state: 'visible' });
+  await tree.locator('[data-frame="Scout"]').waitFor({ state: 'detached' });
+  await tree.locator('[data-frame="AskUserName"]').click();
+  await page.locator('#frame-title', { hasText: 'AskUserName' }).waitFor();
+
+  step = 'import XML: an error is shown with its line, a good file is imported';
+  await page.click('#import-button');
+  await page.fill('#import-text', '<KNOWLEDGEBASE>\n  <FRAME><NAME>AIBO</NAME><ISA>RobotDog</ISA></FRAME>\n</KNOWLEDGEBASE>');
+  await page.click('#import-apply');
+  await page.locator('#import-errors', { hasText: 'line 2' }).waitFor();
+  await page.fill('#import-text', '<KNOWLEDGEBASE>\n  <FRAME><NAME>AIBO</NAME><ISA>Robot</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>\n</KNOWLEDGEBASE>');
+  await page.click('#import-apply');
+  await page.locator('#welcome-text', { hasText: 'Imported 1 frame' }).waitFor();
+  await tree.locator('[data-frame="AIBO"]').waitFor();
+
+  step = 'export XML as a download';
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#export-button')]);
+  check(download.suggestedFilename() === 'knowledge.xml', 'the export is not named knowledge.xml');
+  await tree.locator('[data-frame="AskUserName"]').click();
+  await page.locator('#frame-title', { hasText: 'AskUserName' }).waitFor();
+
+  step = 'a frame someone else saved meanwhile is never overwritten';
+  await tree.locator('[data-frame="Greeting"]').click();
+  await page.locator('#frame-title', { hasText: 'Greeting' }).waitFor();
+  await page.fill('input[aria-label="mUser role"]', 'my edit');
+  const rival = await browser.newContext();
+  await rival.request.post(base + 'api/login', { data: { password } });
+  const theirs = await (await rival.request.get(base + 'api/frames/Greeting')).json();
+  theirs.expectedRevision = theirs.revision;
+  theirs.slots[0].role = 'their edit';
+  const put = await rival.request.put(base + 'api/frames/Greeting', { data: theirs });
+  check(put.status() === 200, 'the rival could not save Greeting: ' + put.status());
+  await rival.close();
+  await page.locator('#stale-note', { hasText: 'Someone else changed Greeting' }).waitFor();
+  await page.click('#save-button');
+  await page.locator('#frame-errors', { hasText: 'was changed by someone else' }).waitFor();
+  await page.click('#stale-note button');
+  await page.waitForFunction(() => document.querySelector('input[aria-label="mUser role"]').value === 'their edit');
+  await tree.locator('[data-frame="AskUserName"]').click();
+  await page.locator('#frame-title', { hasText: 'AskUserName' }).waitFor();
+
+  step = 'reload and find the change';
+  await page.reload();
+  await page.locator('#frame-title', { hasText: 'AskUserName' }).waitFor();
+  check(await page.inputValue('input[aria-label="mUser argument"]') === 'KnownUser', 'the argument did not survive a reload');
+  check(await page.inputValue('input[aria-label="mUser role"]') === 'the visitor asked for a name', 'the role did not survive a reload');
+  await page.click('button[aria-label="Edit script onInstantiate"]');
+  await page.locator('.code pre').first().waitFor();
+  await page.screenshot({ path: join(artifacts, '03-slot-table.png') });
+  await page.screenshot({ path: join(artifacts, '03-slot-table-full.png'), fullPage: true });
+
+  step = 'inference view: run, see the derived instance, ask why, read the trace';
+  await page.click('#inference-button');
+  await page.locator('#inference-panel').waitFor({ state: 'visible' });
+  await page.click('#run-button');
+  const derivedRow = page.locator('#wm-rows tr', { hasText: 'derived' }).filter({ hasText: 'AskUserName' });
+  await derivedRow.waitFor();
+  await derivedRow.locator('button', { hasText: 'Why?' }).click();
+  await page.locator('#why-tree', { hasText: 'made by AskUserName' }).waitFor();
+  check((await page.textContent('#why-tree')).includes('visitor1'), 'why does not rest on visitor1');
+  await page.locator('#trace-log li.Fired').first().waitFor();
+  await page.screenshot({ path: join(artifacts, '04-inference.png') });
+
+  step = 'no console errors';
+  check(problems.length === 0, problems.join('\n'));
+  console.log('editor e2e: all steps passed');
+} catch (e) {
+  failed = true;
+  console.error('editor e2e failed at step "' + step + '": ' + e.message);
+  if (problems.length) console.error(problems.join('\n'));
+} finally {
+  await browser.close();
+}
+process.exit(failed ? 1 : 0);

@@ -1,0 +1,142 @@
+package org.kicnp.cli;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import org.kicnp.core.Change;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.KnowledgeException;
+import org.kicnp.core.Provenance;
+import org.kicnp.core.xml.KnowledgeLoader;
+import org.kicnp.core.xml.SourcedFrame;
+import org.kicnp.inference.Action;
+import org.kicnp.inference.Answer;
+import org.kicnp.inference.EngineOptions;
+import org.kicnp.inference.GraalScriptHost;
+import org.kicnp.inference.InferenceEngine;
+import org.kicnp.inference.InferenceException;
+import org.kicnp.inference.TraceEvent;
+import org.kicnp.script.ScriptConfig;
+import org.kicnp.script.ScriptRuntime;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/**
+ * {@code kicnp infer}: loads a knowledge base, asserts instance frames as stimuli, runs the inference engine to
+ * quiescence and prints the instances it created and the actions it issued (to a recording sink: no robot is
+ * contacted), optionally the trace as JSON lines and the answers to questions asked by backward chaining.
+ */
+@Command(name = "infer", mixinStandardHelpOptions = true,
+        description = "Run the inference engine on a knowledge base with asserted instances and print what it did.")
+public final class InferCommand implements Callable<Integer> {
+    @CommandLine.Spec
+    CommandLine.Model.CommandSpec spec;
+
+    @Parameters(arity = "1..*", paramLabel = "KB", description = "Knowledge base XML files or directories.")
+    List<Path> knowledge = new ArrayList<>();
+
+    @Option(names = "--assert", arity = "1..*", paramLabel = "FILE_OR_XML",
+            description = "Instance frames to assert: an XML file, or XML text starting with '<'.")
+    List<String> asserts = new ArrayList<>();
+
+    @Option(names = "--trace", description = "Print every inference step as a JSON line.")
+    boolean trace;
+
+    @Option(names = "--ask", paramLabel = "CLASS", description = "After the run, ask for every instance of the class.")
+    List<String> asks = new ArrayList<>();
+
+    @Option(names = "--max-firings", paramLabel = "N", description = "Firings allowed per run (default: ${DEFAULT-VALUE}).")
+    int maxFirings = EngineOptions.defaults().maxFirings();
+
+    @Override public Integer call() {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        try (ScriptRuntime runtime = ScriptRuntime.create(ScriptConfig.defaults())) {
+            KnowledgeBase kb = KnowledgeBase.create();
+            List<SourcedFrame> declared = KnowledgeLoader.parse(knowledge, kb);
+            if (declared.stream().noneMatch(s -> s.frame().name().equals(InferenceEngine.FEEDBACK_CLASS))) {
+                kb.add(InferenceEngine.feedbackClass());
+            }
+            KnowledgeLoader.load(kb, knowledge);
+            List<Action> sent = new ArrayList<>();
+            Map<String, String> created = new LinkedHashMap<>();
+            InferenceEngine engine = InferenceEngine.builder(kb).options(EngineOptions.defaults().withMaxFirings(maxFirings))
+                    .scripts(new GraalScriptHost(runtime)).actionSink(sent::add).build();
+            ObjectMapper json = new ObjectMapper();
+            engine.addTraceListener(e -> {
+                if (e instanceof TraceEvent.Fired f) {
+                    created.put(f.instance(), f.frame());
+                } else if (e instanceof TraceEvent.Retracted r) {
+                    created.remove(r.instance());
+                }
+                if (trace) {
+                    ObjectNode node = json.createObjectNode().put("event", e.kind());
+                    node.setAll((ObjectNode) json.valueToTree(e));
+                    out.println(node);
+                }
+            });
+            engine.runToQuiescence();
+            for (String a : asserts) {
+                assertInstances(kb, a);
+                engine.runToQuiescence();
+            }
+            print(out, kb, created, sent);
+            for (String cls : asks) {
+                out.println("Answers for " + cls + ":");
+                for (Answer a : engine.ask(cls, Map.of())) {
+                    out.println("  " + a.instance().orElse("(derivable " + a.className() + ")") + " " + a.slots());
+                }
+            }
+            out.flush();
+            return 0;
+        } catch (KnowledgeException | InferenceException | IllegalArgumentException e) {
+            err.println("infer: " + e.getMessage());
+            err.flush();
+            return 1;
+        } catch (RuntimeException e) {
+            err.println("infer: " + e.getClass().getSimpleName() + ": " + e.getMessage());
+            err.flush();
+            return 1;
+        }
+    }
+
+    private static void assertInstances(KnowledgeBase kb, String source) {
+        List<SourcedFrame> frames = source.stripLeading().startsWith("<")
+                ? KnowledgeLoader.parseText(source, "--assert", kb)
+                : KnowledgeLoader.parse(List.of(Path.of(source)), kb);
+        List<Change> adds = new ArrayList<>();
+        for (SourcedFrame s : frames) {
+            Frame f = s.frame();
+            if (!f.isInstance()) {
+                throw new IllegalArgumentException("--assert takes instance frames, but '" + f.name() + "' ("
+                        + s.location() + ") is a class.");
+            }
+            adds.add(new Change.Add(f.toBuilder().provenance(Provenance.RUNTIME).build()));
+        }
+        kb.apply(adds);
+    }
+
+    private static void print(PrintWriter out, KnowledgeBase kb, Map<String, String> created, List<Action> sent) {
+        out.println("Created " + created.size() + " instance" + (created.size() == 1 ? "" : "s") + ":");
+        created.forEach((name, frame) -> {
+            StringBuilder sb = new StringBuilder("  ").append(name).append(" (").append(frame).append(")");
+            kb.frame(name).ifPresent(f -> f.slots().forEach(s -> s.value().ifPresent(v ->
+                    sb.append(' ').append(s.name()).append('=').append(v.text()))));
+            out.println(sb);
+        });
+        out.println("Issued " + sent.size() + " action" + (sent.size() == 1 ? "" : "s") + ":");
+        for (Action a : sent) {
+            String via = a.target().equals(a.robot()) ? "" : " (via " + a.target() + ")";
+            out.println("  " + a.id() + " " + a.robot() + via + " " + a.name() + " " + a.args() + " by " + a.instance());
+        }
+    }
+}

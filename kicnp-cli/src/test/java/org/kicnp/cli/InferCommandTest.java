@@ -1,0 +1,76 @@
+package org.kicnp.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class InferCommandTest {
+    private static final String TABLE5 = Path.of("..", "scenarios", "table5").toString();
+    private static final String NEW_USER = """
+            <FRAME><NAME>userA</NAME><ISA>NewUser</ISA><ISINSTANCE>TRUE</ISINSTANCE></FRAME>""";
+
+    private record Result(int code, String out, String err) { }
+
+    private static Result run(String... args) {
+        PrintStream oldOut = System.out;
+        PrintStream oldErr = System.err;
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        try {
+            System.setOut(new PrintStream(out, true, StandardCharsets.UTF_8));
+            System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
+            int code = Main.run(args);
+            return new Result(code, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
+        } finally {
+            System.setOut(oldOut);
+            System.setErr(oldErr);
+        }
+    }
+
+    @Test
+    void infer_withInlineNewUser_printsTheAskUserNameInstanceAndItsSpeechAction() {
+        Result r = run("infer", TABLE5, "--assert", NEW_USER);
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(r.out()).contains("(AskUserName) mUser=userA mMouth=RobovieMouth")
+                .contains("Robovie (via RobovieMouth) say [How are you! I have never seen you before. What is your name?]");
+    }
+
+    @Test
+    void infer_withTraceAndAsk_printsJsonLinesAndAnswers(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("user.xml");
+        Files.writeString(file, NEW_USER);
+        Result r = run("infer", TABLE5, "--assert", file.toString(), "--trace", "--ask", "AskUserName");
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(r.out()).contains("{\"event\":\"FactAsserted\",\"instance\":\"userA\"")
+                .contains("{\"event\":\"Fired\",\"frame\":\"AskUserName\"")
+                .contains("Answers for AskUserName:");
+    }
+
+    @Test
+    void infer_whenAssertingAClass_failsWithAMessage() {
+        Result r = run("infer", TABLE5, "--assert",
+                "<FRAME><NAME>Ghost</NAME><ISA>User</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>");
+        assertThat(r.code()).isEqualTo(1);
+        assertThat(r.err()).contains("infer: --assert takes instance frames, but 'Ghost'").contains("is a class.");
+    }
+
+    @Test
+    void infer_help_describesTheOptions() {
+        Result r = run("infer", "--help");
+        assertThat(r.code()).isZero();
+        assertThat(r.out()).contains("--assert").contains("--trace").contains("--ask");
+    }
+
+    @Test
+    void infer_whenKnowledgeBaseIsMissing_failsNamingThePath() {
+        Result r = run("infer", "no-such-dir");
+        assertThat(r.code()).isEqualTo(1);
+        assertThat(r.err()).contains("no-such-dir");
+    }
+}

@@ -1,0 +1,11 @@
+package org.kicnp.editor;
+
+/** The features of this build of the editor: XML transfer through kicnp-core, the script check through kicnp-script. */
+final class EditorFeatures {
+    private EditorFeatures() {
+    }
+
+    static Features available() {
+        return new Features(new XmlTransfer(), new ScriptCheck(), Features.noInference());
+    }
+}

@@ -1,0 +1,115 @@
+package org.kicnp.editor;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import org.kicnp.core.KnowledgeBase;
+
+/**
+ * The parts of the API that lean on other components: XML import/export (the paper's format), the script
+ * syntax check and the view of a running inference engine. Each is a seam so the editor runs without the
+ * component (the inference engine is optional per server); an absent feature answers 501 with a sentence
+ * saying so, and {@code GET /api/session} tells the page.
+ */
+record Features(Xml xml, Scripts scripts, Inference inference) {
+
+    /** XML export and all-or-nothing import. */
+    interface Xml {
+        boolean available();
+
+        Reply exportXml(KnowledgeBase kb);
+
+        /** Imports the XML text in {@code body.xml}; answers what was imported. */
+        Object importXml(KnowledgeBase kb, JsonNode body);
+    }
+
+    /** Syntax check of a script before it is saved. */
+    interface Scripts {
+        boolean available();
+
+        /** Checks {@code body.source}; answers {@code {ok, message, line, column}}. */
+        Object check(JsonNode body);
+    }
+
+    /** The live view of an inference engine: working memory, agenda, explanations, questions, runs. */
+    interface Inference extends AutoCloseable {
+        boolean available();
+
+        /** Starts forwarding trace events to the page. */
+        void attach(EventHub events);
+
+        Object status();
+
+        Object why(String instance);
+
+        Object ask(String className);
+
+        Object run();
+
+        @Override void close();
+    }
+
+    static Inference noInference() {
+        return new Inference() {
+            @Override public boolean available() {
+                return false;
+            }
+
+            @Override public void attach(EventHub events) {
+            }
+
+            @Override public Object status() {
+                throw unavailable();
+            }
+
+            @Override public Object why(String instance) {
+                throw unavailable();
+            }
+
+            @Override public Object ask(String className) {
+                throw unavailable();
+            }
+
+            @Override public Object run() {
+                throw unavailable();
+            }
+
+            @Override public void close() {
+            }
+
+            private ApiException unavailable() {
+                return new ApiException(501, "No inference engine is attached to this editor.");
+            }
+        };
+    }
+
+    Features withInference(Inference i) {
+        return new Features(xml, scripts, i);
+    }
+
+    static Xml noXml() {
+        return new Xml() {
+            @Override public boolean available() {
+                return false;
+            }
+
+            @Override public Reply exportXml(KnowledgeBase kb) {
+                throw new ApiException(501, "XML export is not available in this build of the editor.");
+            }
+
+            @Override public Object importXml(KnowledgeBase kb, JsonNode body) {
+                throw new ApiException(501, "XML import is not available in this build of the editor.");
+            }
+        };
+    }
+
+    static Scripts noScripts() {
+        return new Scripts() {
+            @Override public boolean available() {
+                return false;
+            }
+
+            @Override public Object check(JsonNode body) {
+                throw new ApiException(501, "The script check is not available in this build of the editor.");
+            }
+        };
+    }
+}

@@ -1,0 +1,231 @@
+package org.kicnp.editor;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import org.kicnp.core.ConditionParser;
+import org.kicnp.core.DataType;
+import org.kicnp.core.Frame;
+import org.kicnp.core.FrameKind;
+import org.kicnp.core.KnowledgeException;
+import org.kicnp.core.Provenance;
+import org.kicnp.core.Relation;
+import org.kicnp.core.Slot;
+import org.kicnp.core.Value;
+
+/**
+ * Reads a frame from the JSON the page sends (the shape of {@link FrameViews.Detail}, read leniently) and checks
+ * everything that needs no other frame: names, kinds, data types, values against their types, condition syntax,
+ * value and default both given. Every problem is collected, naming frame and slot, so the page can show them all
+ * at once; only a frame without any problem is returned.
+ */
+final class FrameInput {
+    private final JsonNode json;
+    private final String frameName;
+    private final List<ApiProblem> problems = new ArrayList<>();
+
+    private FrameInput(JsonNode json, String frameName) {
+        this.json = json;
+        this.frameName = frameName;
+    }
+
+    /**
+     * Reads the frame; {@code name} is the frame name from the URL, or empty to take it from the body.
+     *
+     * @throws ApiException 422 with every problem found
+     */
+    static Frame read(JsonNode json, Optional<String> name) {
+        if (json == null || !json.isObject()) {
+            throw new ApiException(400, "The request body must be a JSON object describing a frame.");
+        }
+        String n = name.orElseGet(() -> text(json, "name").orElse(""));
+        FrameInput in = new FrameInput(json, n);
+        Frame frame = in.build();
+        if (!in.problems.isEmpty()) {
+            throw ApiException.invalid(in.problems);
+        }
+        return frame;
+    }
+
+    private Frame build() {
+        if (frameName.isBlank()) {
+            problems.add(ApiProblem.of("", "", "A frame needs a name."));
+            return null;
+        }
+        Optional<String> bodyName = text(json, "name");
+        if (bodyName.isPresent() && !bodyName.get().equals(frameName)) {
+            problems.add(ApiProblem.of(frameName, "", "The body names frame '" + bodyName.get() + "' but the address "
+                    + "names '" + frameName + "'; use rename to change a frame's name."));
+        }
+        FrameKind kind = FrameKind.CLASS;
+        String kindText = text(json, "kind").orElse("CLASS").toUpperCase(Locale.ROOT);
+        switch (kindText) {
+            case "CLASS" -> kind = FrameKind.CLASS;
+            case "INSTANCE" -> kind = FrameKind.INSTANCE;
+            default -> problems.add(ApiProblem.of(frameName, "", "Frame '" + frameName + "' has kind '" + kindText
+                    + "'; it must be CLASS or INSTANCE."));
+        }
+        Frame.Builder b = Frame.builder(frameName, kind);
+        text(json, "parent").ifPresent(b::parent);
+        text(json, "provenance").ifPresent(p -> provenance(p).ifPresent(b::provenance));
+        if (json.hasNonNull("priority")) {
+            b.priority(json.get("priority").asInt());
+        }
+        strings(json, "parts").forEach(b::part);
+        for (JsonNode l : array(json, "linksTo")) {
+            link(l).ifPresent(sl -> b.linkTo(Relation.parse(sl[0]), sl[1]));
+        }
+        for (JsonNode l : array(json, "linksFrom")) {
+            link(l).ifPresent(sl -> b.linkFrom(Relation.parse(sl[0]), sl[1]));
+        }
+        List<String> seen = new ArrayList<>();
+        for (JsonNode s : array(json, "slots")) {
+            slot(s).ifPresent(slot -> {
+                if (seen.contains(slot.name())) {
+                    problems.add(ApiProblem.of(frameName, slot.name(), "Frame '" + frameName + "' has two slots named '"
+                            + slot.name() + "'."));
+                } else {
+                    seen.add(slot.name());
+                    b.slot(slot);
+                }
+            });
+        }
+        try {
+            return b.build();
+        } catch (KnowledgeException e) {
+            problems.add(ApiProblem.of(frameName, "", e.getMessage()));
+            return null;
+        }
+    }
+
+    private Optional<Provenance> provenance(String p) {
+        try {
+            return Optional.of(Provenance.valueOf(p.toUpperCase(Locale.ROOT)));
+        } catch (IllegalArgumentException e) {
+            problems.add(ApiProblem.of(frameName, "", "Frame '" + frameName + "' has provenance '" + p
+                    + "'; it must be DECLARED, LEARNED or RUNTIME."));
+            return Optional.empty();
+        }
+    }
+
+    private Optional<String[]> link(JsonNode l) {
+        Optional<String> relation = text(l, "relation");
+        Optional<String> frame = text(l, "frame");
+        if (relation.isEmpty() || frame.isEmpty()) {
+            problems.add(ApiProblem.of(frameName, "", "A semantic link of frame '" + frameName
+                    + "' needs both a relation and a frame."));
+            return Optional.empty();
+        }
+        return Optional.of(new String[] {relation.get(), frame.get()});
+    }
+
+    private Optional<Slot> slot(JsonNode s) {
+        String name = text(s, "name").orElse("");
+        String where = "Slot '" + name + "' of frame '" + frameName + "'";
+        if (name.isBlank()) {
+            problems.add(ApiProblem.of(frameName, "", "A slot of frame '" + frameName + "' has no name."));
+            return Optional.empty();
+        }
+        String typeText = text(s, "type").orElse("TYPE_STR");
+        Optional<DataType> type = DataType.parse(typeText);
+        if (type.isEmpty()) {
+            problems.add(ApiProblem.of(frameName, name, where + " has the unknown data type '" + typeText + "'."));
+            return Optional.empty();
+        }
+        int before = problems.size();
+        Slot.Builder b = Slot.builder(name, type.get());
+        text(s, "role").ifPresent(b::role);
+        text(s, "from").ifPresent(b::from);
+        text(s, "argument").ifPresent(b::argument);
+        text(s, "frameRelated").ifPresent(b::frameRelated);
+        b.frameListRelated(strings(s, "frameListRelated"));
+        text(s, "onNeeded").ifPresent(b::onNeeded);
+        text(s, "onAdded").ifPresent(b::onAdded);
+        text(s, "onRemoved").ifPresent(b::onRemoved);
+        b.required(flag(s, "required", false)).shared(flag(s, "shared", true)).unique(flag(s, "unique", false))
+                .reactive(flag(s, "reactive", true));
+        text(s, "condition").ifPresent(c -> {
+            try {
+                b.condition(ConditionParser.parse(c));
+            } catch (KnowledgeException e) {
+                problems.add(ApiProblem.of(frameName, name, where + ": " + e.getMessage()));
+            }
+        });
+        Optional<String> argument = text(s, "argument");
+        value(s.get("value"), type.get(), argument, name, where + " value").ifPresent(b::value);
+        value(s.get("defaultValue"), type.get(), argument, name, where + " default").ifPresent(b::defaultValue);
+        if (problems.size() > before) {
+            return Optional.empty();
+        }
+        try {
+            return Optional.of(b.build());
+        } catch (KnowledgeException e) {
+            problems.add(ApiProblem.of(frameName, name, "In frame '" + frameName + "': " + e.getMessage()));
+            return Optional.empty();
+        }
+    }
+
+    /** A value as text (a scalar) or an array of texts (a list); empty text and null mean "no value". */
+    private Optional<Value> value(JsonNode v, DataType type, Optional<String> argument, String slot, String what) {
+        if (v == null || v.isNull() || v.isTextual() && v.asText().isEmpty()) {
+            return Optional.empty();
+        }
+        try {
+            if (type == DataType.LIST) {
+                DataType item = argument.flatMap(DataType::parse).orElse(argument.isPresent() ? DataType.INSTANCE
+                        : DataType.STRING);
+                List<Value> items = new ArrayList<>();
+                if (v.isArray()) {
+                    for (JsonNode i : v) {
+                        items.add(Value.parse(item, i.asText()));
+                    }
+                } else {
+                    for (String part : v.asText().split(",")) {
+                        if (!part.isBlank()) {
+                            items.add(Value.parse(item, part.strip()));
+                        }
+                    }
+                }
+                return Optional.of(new Value.Lst(items));
+            }
+            if (!v.isValueNode()) {
+                throw new IllegalArgumentException("A " + type.xmlName() + " value must be written as text.");
+            }
+            return Optional.of(Value.parse(type, v.asText()));
+        } catch (IllegalArgumentException e) {
+            problems.add(ApiProblem.of(frameName, slot, what + " is not valid: " + e.getMessage()));
+            return Optional.empty();
+        }
+    }
+
+    private static boolean flag(JsonNode s, String field, boolean otherwise) {
+        JsonNode f = s.get(field);
+        return f == null || f.isNull() ? otherwise : f.asBoolean(otherwise);
+    }
+
+    static Optional<String> text(JsonNode node, String field) {
+        JsonNode f = node == null ? null : node.get(field);
+        if (f == null || f.isNull() || !f.isValueNode()) {
+            return Optional.empty();
+        }
+        String t = f.asText();
+        return t.isBlank() ? Optional.empty() : Optional.of(t);
+    }
+
+    private static Iterable<JsonNode> array(JsonNode node, String field) {
+        JsonNode f = node.get(field);
+        return f != null && f.isArray() ? f : List.of();
+    }
+
+    private static List<String> strings(JsonNode node, String field) {
+        List<String> out = new ArrayList<>();
+        for (JsonNode i : array(node, field)) {
+            if (!i.asText().isBlank()) {
+                out.add(i.asText().strip());
+            }
+        }
+        return out;
+    }
+}

@@ -1,0 +1,80 @@
+package org.kicnp.editor;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import org.kicnp.core.Change;
+import org.kicnp.core.ChangeSet;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+
+/**
+ * The frame operations of the API: list, read (with effective slots), create, replace with an expected revision,
+ * delete and rename. Every change is one knowledge-base batch, so a rejected request changes nothing; the
+ * knowledge base's own exceptions travel up to {@link ApiHandler}, which maps them to 404, 409 and 422.
+ */
+final class FrameResource {
+    /** The answer to a change: the knowledge-base version it made and the frame as it now is (if it exists). */
+    record Saved(long version, FrameViews.Detail frame) {
+    }
+
+    private final KnowledgeBase kb;
+
+    FrameResource(KnowledgeBase kb) {
+        this.kb = kb;
+    }
+
+    /** Every frame as a row, optionally only those whose name contains {@code q} (case-insensitive). */
+    List<FrameViews.Summary> list(Optional<String> q) {
+        String needle = q.map(s -> s.toLowerCase(Locale.ROOT)).orElse("");
+        return kb.frames().stream()
+                .filter(f -> needle.isEmpty() || f.name().toLowerCase(Locale.ROOT).contains(needle))
+                .map(f -> FrameViews.summary(kb, f)).toList();
+    }
+
+    FrameViews.Detail get(String name) {
+        return FrameViews.detail(kb, kb.require(name));
+    }
+
+    Saved create(JsonNode body) {
+        Frame f = FrameInput.read(body, Optional.empty());
+        ChangeSet cs = kb.apply(List.of(new Change.Add(f)));
+        return new Saved(cs.version(), get(f.name()));
+    }
+
+    /**
+     * Replaces the frame. The body must carry {@code expectedRevision} (the revision the page read) so that a
+     * frame someone else saved in between is never silently overwritten.
+     */
+    Saved replace(String name, JsonNode body) {
+        JsonNode rev = body == null ? null : body.get("expectedRevision");
+        if (rev == null || !rev.canConvertToLong()) {
+            throw new ApiException(400, "Saving frame '" + name + "' needs expectedRevision: the revision you read, "
+                    + "so that a change made in between is not overwritten.");
+        }
+        kb.require(name);
+        Frame f = FrameInput.read(body, Optional.of(name));
+        ChangeSet cs = kb.apply(List.of(new Change.Replace(f, rev.asLong())));
+        return new Saved(cs.version(), get(name));
+    }
+
+    long delete(String name) {
+        kb.require(name);
+        return kb.apply(List.of(new Change.Remove(name))).version();
+    }
+
+    Saved rename(String name, JsonNode body) {
+        String to = FrameInput.text(body, "newName").map(String::strip)
+                .orElseThrow(() -> new ApiException(400, "Renaming frame '" + name + "' needs newName."));
+        if (to.equals(name)) {
+            return new Saved(kb.version(), get(name));
+        }
+        if (kb.contains(to)) {
+            throw ApiException.invalid(List.of(ApiProblem.of(name, "", "Frame '" + name + "' cannot be renamed to '"
+                    + to + "': a frame of that name already exists.")));
+        }
+        ChangeSet cs = kb.apply(Renamer.changes(kb, name, to));
+        return new Saved(cs.version(), get(to));
+    }
+}

@@ -1,0 +1,82 @@
+package org.kicnp.editor;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Provenance;
+import org.kicnp.inference.InferenceEngine;
+import org.kicnp.inference.InferenceLimitException;
+import org.kicnp.inference.TraceListener;
+
+/**
+ * The editor's view of a running inference engine: the live (runtime) instances in working memory and whether the
+ * engine derived them, the agenda size, "why does this instance exist", "which instances of this class are there
+ * or could there be" (backward chaining), a run to quiescence, and every trace event pushed to the page over
+ * {@code /api/events} as {@code {"type":"trace", ...}}.
+ */
+final class InferenceResource implements Features.Inference {
+    private final InferenceEngine engine;
+    private final KnowledgeBase kb;
+    private TraceListener tracer;
+
+    InferenceResource(InferenceEngine engine, KnowledgeBase kb) {
+        this.engine = engine;
+        this.kb = kb;
+    }
+
+    @Override public boolean available() {
+        return true;
+    }
+
+    @Override public synchronized void attach(EventHub events) {
+        tracer = e -> events.publish("trace", InferenceJson.trace(e));
+        engine.addTraceListener(tracer);
+    }
+
+    @Override public Object status() {
+        List<Map<String, Object>> instances = new ArrayList<>();
+        for (Frame f : kb.frames()) {
+            if (f.isInstance() && f.provenance() == Provenance.RUNTIME) {
+                Map<String, Object> row = new LinkedHashMap<>();
+                row.put("name", f.name());
+                row.put("className", f.parent().orElse(""));
+                row.put("derived", engine.derivation(f.name()).isPresent());
+                instances.add(row);
+            }
+        }
+        Map<String, Object> out = new LinkedHashMap<>();
+        out.put("agenda", engine.agendaSize());
+        out.put("version", kb.version());
+        out.put("instances", instances);
+        out.put("actions", engine.actions().size());
+        return out;
+    }
+
+    @Override public Object why(String instance) {
+        return InferenceJson.explanation(engine.why(instance));
+    }
+
+    @Override public Object ask(String className) {
+        kb.require(className);
+        return InferenceJson.answers(engine.ask(className, Map.of()));
+    }
+
+    @Override public Object run() {
+        try {
+            int firings = engine.runToQuiescence();
+            return Map.of("firings", firings, "agenda", engine.agendaSize(), "version", kb.version());
+        } catch (InferenceLimitException e) {
+            throw new ApiException(422, e.getMessage());
+        }
+    }
+
+    @Override public synchronized void close() {
+        if (tracer != null) {
+            engine.removeTraceListener(tracer);
+            tracer = null;
+        }
+    }
+}

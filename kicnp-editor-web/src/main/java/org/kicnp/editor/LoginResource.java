@@ -1,0 +1,81 @@
+package org.kicnp.editor;
+
+import java.util.LinkedHashMap;
+import java.util.Map;
+import org.eclipse.jetty.http.HttpCookie;
+import org.eclipse.jetty.http.HttpHeader;
+import org.eclipse.jetty.server.Request;
+
+/**
+ * Login, logout and "who am I". A correct password opens a session whose token travels in an HttpOnly,
+ * SameSite=Strict cookie; scripts may instead send {@code Authorization: Bearer <password>}. A wrong password is
+ * refused with a sentence and a short pause; repeated wrong passwords from one address are refused for a while
+ * ({@link LoginThrottle}).
+ */
+final class LoginResource {
+    private static final long WRONG_PASSWORD_PAUSE_MS = 300;
+
+    private final Sessions sessions;
+    private final LoginThrottle throttle;
+
+    LoginResource(Sessions sessions, LoginThrottle throttle) {
+        this.sessions = sessions;
+        this.throttle = throttle;
+    }
+
+    boolean editingPossible() {
+        return sessions.editingPossible();
+    }
+
+    boolean loggedIn(Request request) {
+        String auth = request.getHeaders().get(HttpHeader.AUTHORIZATION);
+        if (auth != null && auth.regionMatches(true, 0, "Bearer ", 0, 7)) {
+            return sessions.matches(auth.substring(7).strip());
+        }
+        return ApiRequest.sessionToken(request).map(sessions::valid).orElse(false);
+    }
+
+    Map<String, Object> status(ApiRequest r, Features features) {
+        Map<String, Object> out = new LinkedHashMap<>();
+        out.put("loggedIn", r.editor());
+        out.put("editingPossible", sessions.editingPossible());
+        out.put("xml", features.xml().available());
+        out.put("scripts", features.scripts().available());
+        out.put("inference", features.inference().available());
+        return out;
+    }
+
+    Reply login(ApiRequest r) {
+        if (!sessions.editingPossible()) {
+            throw new ApiException(401, "Editing is disabled: no editor password is configured (editor.password).");
+        }
+        String address = r.remoteAddress();
+        long wait = throttle.waitSeconds(address);
+        if (wait > 0) {
+            throw new ApiException(429, "Too many wrong passwords from this address: try again in " + wait
+                    + " seconds.");
+        }
+        String password = FrameInput.text(r.body(), "password").orElse("");
+        if (!sessions.matches(password)) {
+            throttle.failed(address);
+            try {
+                Thread.sleep(WRONG_PASSWORD_PAUSE_MS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            throw new ApiException(401, "Wrong password: you were not logged in.");
+        }
+        throttle.succeeded(address);
+        HttpCookie cookie = HttpCookie.build(ApiRequest.SESSION_COOKIE, sessions.open())
+                .path("/").httpOnly(true).sameSite(HttpCookie.SameSite.STRICT)
+                .maxAge(sessions.lifetime().toSeconds()).build();
+        return Reply.json(200, "{\"loggedIn\":true}").withCookie(cookie);
+    }
+
+    Reply logout(ApiRequest r) {
+        r.sessionToken().ifPresent(sessions::close);
+        HttpCookie expired = HttpCookie.build(ApiRequest.SESSION_COOKIE, "").path("/").httpOnly(true)
+                .sameSite(HttpCookie.SameSite.STRICT).maxAge(0).build();
+        return Reply.json(200, "{\"loggedIn\":false}").withCookie(expired);
+    }
+}

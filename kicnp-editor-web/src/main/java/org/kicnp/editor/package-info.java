@@ -1,0 +1,7 @@
+/**
+ * The browser knowledge-base editor (the paper's figures 3 and 4): a Jetty 12 server with a JSON API over the
+ * {@link org.kicnp.core.KnowledgeBase}, a WebSocket that pushes knowledge changes live, and one static page that
+ * shows the IS-A hierarchy as clickable buttons and a slot editing table per frame. Start it with
+ * {@link org.kicnp.editor.EditorServer#start}.
+ */
+package org.kicnp.editor;

@@ -1,0 +1,91 @@
+// K-ICNP knowledge editor: the inference view: working memory, run, why, ask, trace.
+// An ES module loaded by index.html; no build step, nothing from the network.
+import { $, api, el, enc, showErrors, showMain, state } from './base.js';
+import { openFrame } from './frame.js';
+
+// ---- inference ----
+
+let inferenceTimer = null;
+
+export function scheduleInferenceReload() {
+  clearTimeout(inferenceTimer);
+  inferenceTimer = setTimeout(() => loadInference().catch(() => {}), 300);
+}
+
+export async function openInference() {
+  if (state.dirty && !window.confirm('Discard the unsaved changes to ' + state.selected + '?')) return;
+  state.dirty = false;
+  showMain('inference-panel');
+  await loadInference();
+}
+
+export async function loadInference() {
+  try {
+    const s = await api('GET', '/api/inference');
+    $('inference-meta').textContent = 'agenda ' + s.agenda + ' · ' + s.instances.length
+      + ' instance(s) in working memory · ' + s.actions + ' action(s) issued';
+    $('wm-rows').replaceChildren(...(s.instances.length ? s.instances.map((i) => el('tr', {},
+      el('td', {}, el('button', { type: 'button', class: 'chip', text: i.name, onclick: () => openFrame(i.name) })),
+      el('td', { text: i.className }),
+      el('td', { text: i.derived ? 'derived' : 'asserted' }),
+      el('td', {}, el('button', {
+        type: 'button', class: 'small ghost', text: 'Why?', 'aria-label': 'Why does ' + i.name + ' exist?',
+        onclick: () => why(i.name)
+      }))))
+      : [el('tr', {}, el('td', { colspan: '4', class: 'muted', text: 'Working memory is empty.' }))]));
+    showErrors('inference-errors', null);
+  } catch (e) {
+    showErrors('inference-errors', e);
+  }
+}
+
+export async function runInference() {
+  try {
+    const r = await api('POST', '/api/inference/run', {});
+    await loadInference();
+    $('inference-meta').textContent += ' · last run: ' + r.firings + ' firing(s)';
+  } catch (e) {
+    showErrors('inference-errors', e);
+  }
+}
+
+async function why(instance) {
+  try {
+    const e = await api('GET', '/api/inference/why/' + enc(instance));
+    $('why-tree').replaceChildren(el('ul', {}, explanationItem(e)));
+  } catch (err) {
+    showErrors('inference-errors', err);
+  }
+}
+
+function explanationItem(e) {
+  if (e.type === 'asserted') {
+    return el('li', {}, el('span', { class: 'what', text: e.instance }),
+      el('span', { class: 'how', text: ' asserted as ' + e.className }));
+  }
+  const d = e.derivation;
+  const binding = Object.entries(d.binding).map(([k, v]) => k + '=' + v).join(', ');
+  return el('li', {}, el('span', { class: 'what', text: e.instance }),
+    el('span', { class: 'how', text: ' made by ' + d.frame + ' (firing #' + d.firing + '; ' + binding + ')' }),
+    e.supports.length ? el('ul', {}, e.supports.map(explanationItem)) : null);
+}
+
+export async function askInference(event) {
+  event.preventDefault();
+  try {
+    const answers = await api('GET', '/api/inference/ask?class=' + enc($('ask-class').value.trim()));
+    $('ask-answers').replaceChildren(...(answers.length ? answers.map((a) => el('li', {
+      text: (a.instance || '(new ' + a.className + ')') + (a.derivable ? ' — derivable' : ' — exists')
+        + (Object.keys(a.slots).length ? ': ' + Object.entries(a.slots).map(([k, v]) => k + '=' + v).join(', ') : '')
+    })) : [el('li', { class: 'muted', text: 'No instance exists or could be derived.' })]));
+  } catch (e) {
+    showErrors('inference-errors', e);
+  }
+}
+
+export function addTrace(event) {
+  const log = $('trace-log');
+  log.append(el('li', { class: event.event }, el('span', { class: 'ev', text: event.event }), ' ', event.text));
+  while (log.children.length > 300) log.firstChild.remove();
+  log.scrollTop = log.scrollHeight;
+}

@@ -1,0 +1,352 @@
+package org.kicnp.editor;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.net.http.HttpResponse;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Value;
+
+/** The JSON API against a real Jetty on an ephemeral loopback port. */
+class EditorApiTest {
+    private static final ObjectMapper JSON = new ObjectMapper();
+    private static final String PASSWORD = "correct horse";
+
+    private KnowledgeBase kb;
+    private EditorServer server;
+    private Http http;
+
+    @BeforeEach void start() {
+        kb = SampleKnowledge.create();
+        server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb);
+        http = new Http(server.port());
+    }
+
+    @AfterEach void stop() {
+        server.close();
+    }
+
+    static JsonNode json(HttpResponse<String> r) {
+        try {
+            return JSON.readTree(r.body());
+        } catch (java.io.IOException e) {
+            throw new AssertionError("Not JSON: " + r.body(), e);
+        }
+    }
+
+    @Test void list_returnsEveryFrameWithKindParentLearnedAndRevision() {
+        HttpResponse<String> r = http.get("/api/frames");
+
+        assertThat(r.statusCode()).isEqualTo(200);
+        JsonNode rows = json(r);
+        assertThat(rows).hasSize(kb.size());
+        JsonNode robovie = find(rows, "Robovie");
+        assertThat(robovie.get("kind").asText()).isEqualTo("INSTANCE");
+        assertThat(robovie.get("parent").asText()).isEqualTo("HumanoidRobot");
+        assertThat(robovie.get("revision").asLong()).isEqualTo(kb.revision("Robovie"));
+        assertThat(find(rows, "Taro").get("learned").asBoolean()).isTrue();
+        assertThat(find(rows, "System").get("parent").isNull()).isTrue();
+    }
+
+    @Test void list_withQuery_keepsOnlyMatchingNames() {
+        JsonNode rows = json(http.get("/api/frames?q=user"));
+
+        assertThat(rows).extracting(n -> n.get("name").asText())
+                .containsExactlyInAnyOrder("User", "KnownUser", "NewUser", "AskUserName");
+    }
+
+    @Test void get_returnsOwnAndEffectiveSlotsWithEveryFacetAndDeclaringFrame() {
+        JsonNode f = json(http.get("/api/frames/AskUserName"));
+
+        assertThat(f.get("kind").asText()).isEqualTo("CLASS");
+        assertThat(f.get("ancestors")).extracting(JsonNode::asText).containsExactly("Speech", "Behavior", "System");
+        assertThat(f.get("slots")).extracting(s -> s.get("name").asText())
+                .containsExactly("mUser", "mMouth", "onInstantiate");
+        JsonNode mUser = f.get("slots").get(0);
+        for (String facet : List.of("name", "role", "from", "type", "value", "defaultValue", "condition", "argument",
+                "required", "shared", "unique", "frameRelated", "frameListRelated")) {
+            assertThat(mUser.has(facet)).as("facet %s", facet).isTrue();
+        }
+        assertThat(mUser.get("type").asText()).isEqualTo("TYPE_INSTANCE");
+        assertThat(mUser.get("argument").asText()).isEqualTo("NewUser");
+        assertThat(mUser.get("condition").asText()).isEqualTo("COND_ANY");
+        JsonNode inherited = find(f.get("effectiveSlots"), "mfunction");
+        assertThat(inherited.get("declaredBy").asText()).isEqualTo("Speech");
+        assertThat(inherited.get("inherited").asBoolean()).isTrue();
+        assertThat(inherited.get("slot").get("value").asText()).isEqualTo("sendmsg");
+        assertThat(json(http.get("/api/frames/Greeting")).get("linksTo").get(0).get("relation").asText())
+                .isEqualTo("SUCCESSION");
+        assertThat(f.get("linksIn")).extracting(l -> l.get("frame").asText()).containsExactly("Greeting");
+    }
+
+    @Test void get_ofClass_listsItsChildren() {
+        JsonNode f = json(http.get("/api/frames/User"));
+
+        assertThat(f.get("children")).extracting(c -> c.get("name").asText()).containsExactly("KnownUser", "NewUser");
+    }
+
+    @Test void get_unknownFrame_answers404WithSentence() {
+        HttpResponse<String> r = http.get("/api/frames/Nobody");
+
+        assertThat(r.statusCode()).isEqualTo(404);
+        assertThat(json(r).get("error").asText()).isEqualTo("There is no frame named 'Nobody'.");
+    }
+
+    @Test void createEditDelete_whenLoggedIn_changeTheKnowledgeBase() {
+        http.login(PASSWORD);
+
+        HttpResponse<String> created = http.post("/api/frames", """
+                {"name":"Scout","kind":"CLASS","parent":"Robot",
+                 "slots":[{"name":"sonars","type":"TYPE_INT","value":"16","required":true}]}""");
+        assertThat(created.statusCode()).as(created.body()).isEqualTo(201);
+        assertThat(kb.value("Scout", "sonars")).contains(Value.of(16));
+
+        ObjectNode body = (ObjectNode) json(created).get("frame");
+        ((ObjectNode) body.get("slots").get(0)).put("value", "17");
+        body.put("expectedRevision", body.get("revision").asLong());
+        HttpResponse<String> saved = http.put("/api/frames/Scout", body.toString());
+        assertThat(saved.statusCode()).as(saved.body()).isEqualTo(200);
+        assertThat(kb.value("Scout", "sonars")).contains(Value.of(17));
+        assertThat(kb.value("Scout", "battery")).contains(Value.of(100));
+
+        HttpResponse<String> deleted = http.delete("/api/frames/Scout");
+        assertThat(deleted.statusCode()).as(deleted.body()).isEqualTo(200);
+        assertThat(kb.contains("Scout")).isFalse();
+    }
+
+    @Test void put_withStaleRevision_answers409AndKeepsTheOtherEdit() {
+        http.login(PASSWORD);
+        ObjectNode mine = (ObjectNode) json(http.get("/api/frames/Robot"));
+        kb.replace(kb.require("Robot").toBuilder().priority(5).build());
+
+        mine.put("expectedRevision", mine.get("revision").asLong());
+        mine.put("priority", 9);
+        HttpResponse<String> r = http.put("/api/frames/Robot", mine.toString());
+
+        assertThat(r.statusCode()).isEqualTo(409);
+        assertThat(json(r).get("error").asText()).contains("Frame 'Robot' was changed by someone else");
+        assertThat(kb.require("Robot").priority()).isEqualTo(5);
+    }
+
+    @Test void put_withoutExpectedRevision_isRefused() {
+        http.login(PASSWORD);
+
+        HttpResponse<String> r = http.put("/api/frames/Robot", "{\"kind\":\"CLASS\",\"parent\":\"System\"}");
+
+        assertThat(r.statusCode()).isEqualTo(400);
+        assertThat(json(r).get("error").asText()).contains("expectedRevision");
+    }
+
+    @Test void put_withInvalidSlots_answers422WithEveryProblemAndChangesNothing() {
+        http.login(PASSWORD);
+        Frame before = kb.require("AskUserName");
+        ObjectNode f = (ObjectNode) json(http.get("/api/frames/AskUserName"));
+        f.put("expectedRevision", f.get("revision").asLong());
+        ArrayNode slots = (ArrayNode) f.get("slots");
+        ((ObjectNode) slots.get(0)).put("argument", "Martian");
+        ObjectNode bad = slots.addObject();
+        bad.put("name", "age").put("type", "TYPE_INT").put("value", "3").put("defaultValue", "4");
+        slots.addObject().put("name", "mood").put("type", "TYPE_INT").put("value", "happy");
+
+        HttpResponse<String> r = http.put("/api/frames/AskUserName", f.toString());
+
+        assertThat(r.statusCode()).isEqualTo(422);
+        List<String> messages = new ArrayList<>();
+        json(r).get("problems").forEach(p -> messages.add(p.get("slot").asText() + ": " + p.get("message").asText()));
+        assertThat(messages).anySatisfy(m -> assertThat(m).startsWith("age: ").contains("both a value and a default"))
+                .anySatisfy(m -> assertThat(m).startsWith("mood: ").contains("'happy' is not an integer"));
+        assertThat(kb.require("AskUserName")).isEqualTo(before);
+
+        slots.remove(slots.size() - 1);
+        slots.remove(slots.size() - 1);
+        HttpResponse<String> unknownClass = http.put("/api/frames/AskUserName", f.toString());
+        assertThat(unknownClass.statusCode()).isEqualTo(422);
+        assertThat(json(unknownClass).get("problems").get(0).get("message").asText()).contains("'Martian'");
+        assertThat(json(unknownClass).get("problems").get(0).get("frame").asText()).isEqualTo("AskUserName");
+        assertThat(kb.require("AskUserName")).isEqualTo(before);
+    }
+
+    @Test void create_withIsACycle_answers422() {
+        http.login(PASSWORD);
+        ObjectNode system = (ObjectNode) json(http.get("/api/frames/System"));
+        system.put("parent", "Robot").put("expectedRevision", system.get("revision").asLong());
+
+        HttpResponse<String> r = http.put("/api/frames/System", system.toString());
+
+        assertThat(r.statusCode()).isEqualTo(422);
+        assertThat(json(r).get("error").asText()).contains("System");
+        assertThat(kb.require("System").parent()).isEmpty();
+    }
+
+    @Test void delete_ofFrameWithSubFrames_answers422AndKeepsIt() {
+        http.login(PASSWORD);
+
+        HttpResponse<String> r = http.delete("/api/frames/User");
+
+        assertThat(r.statusCode()).isEqualTo(422);
+        assertThat(json(r).get("error").asText()).contains("'User' cannot be removed");
+        assertThat(kb.contains("User")).isTrue();
+    }
+
+    @Test void rename_movesTheFrameAndRewritesReferences() {
+        http.login(PASSWORD);
+
+        HttpResponse<String> r = http.post("/api/frames/NewUser/rename", "{\"newName\":\"Visitor\"}");
+
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(200);
+        assertThat(kb.contains("NewUser")).isFalse();
+        assertThat(kb.require("Visitor").parent()).contains("User");
+        assertThat(kb.require("AskUserName").ownSlot("mUser").flatMap(s -> s.argument())).contains("Visitor");
+    }
+
+    @Test void rename_ofClassWithSubFrames_rewritesTheirParent() {
+        http.login(PASSWORD);
+
+        HttpResponse<String> r = http.post("/api/frames/Robot/rename", "{\"newName\":\"Machine\"}");
+
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(200);
+        assertThat(kb.require("HumanoidRobot").parent()).contains("Machine");
+        assertThat(kb.value("Robovie", "battery")).contains(Value.of(100));
+    }
+
+    @Test void rename_toExistingName_answers422AndChangesNothing() {
+        http.login(PASSWORD);
+        long version = kb.version();
+
+        HttpResponse<String> r = http.post("/api/frames/NewUser/rename", "{\"newName\":\"KnownUser\"}");
+
+        assertThat(r.statusCode()).isEqualTo(422);
+        assertThat(kb.version()).isEqualTo(version);
+    }
+
+    @Test void writes_withoutLogin_answer401WhileReadsWork() {
+        assertThat(http.get("/api/frames/Robot").statusCode()).isEqualTo(200);
+
+        HttpResponse<String> r = http.post("/api/frames", "{\"name\":\"Intruder\",\"parent\":\"System\"}");
+
+        assertThat(r.statusCode()).isEqualTo(401);
+        assertThat(json(r).get("error").asText()).isEqualTo("Log in to edit: the editor is read-only without a login.");
+        assertThat(kb.contains("Intruder")).isFalse();
+        assertThat(http.delete("/api/frames/Taro").statusCode()).isEqualTo(401);
+    }
+
+    @Test void login_withWrongPassword_isRefusedWithMessageAndGrantsNothing() {
+        HttpResponse<String> r = http.login("guess");
+
+        assertThat(r.statusCode()).isEqualTo(401);
+        assertThat(json(r).get("error").asText()).isEqualTo("Wrong password: you were not logged in.");
+        assertThat(r.headers().firstValue("Set-Cookie")).isEmpty();
+        assertThat(http.delete("/api/frames/Taro").statusCode()).isEqualTo(401);
+    }
+
+    @Test void login_afterRepeatedWrongPasswords_isRefusedForAWhileEvenWithTheRightOne() {
+        for (int i = 0; i < LoginThrottle.MAX_FAILURES; i++) {
+            assertThat(http.login("guess " + i).statusCode()).isEqualTo(401);
+        }
+
+        HttpResponse<String> r = http.login(PASSWORD);
+
+        assertThat(r.statusCode()).isEqualTo(429);
+        assertThat(json(r).get("error").asText()).startsWith("Too many wrong passwords from this address");
+        assertThat(r.headers().firstValue("Set-Cookie")).isEmpty();
+    }
+
+    @Test void login_setsHttpOnlyStrictCookie_andLogoutEndsTheSession() {
+        HttpResponse<String> r = http.login(PASSWORD);
+
+        assertThat(r.statusCode()).isEqualTo(200);
+        assertThat(r.headers().firstValue("Set-Cookie")).hasValueSatisfying(c -> assertThat(c)
+                .contains("HttpOnly").containsIgnoringCase("SameSite=Strict"));
+        assertThat(json(http.get("/api/session")).get("loggedIn").asBoolean()).isTrue();
+        String session = r.headers().firstValue("Set-Cookie").orElseThrow().split(";", 2)[0];
+
+        http.post("/api/logout", "{}");
+
+        HttpResponse<String> after = http.send(http.jsonRequest("/api/frames/Taro").header("Cookie", session).DELETE());
+        assertThat(after.statusCode()).isEqualTo(401);
+    }
+
+    @Test void delete_withoutBodyOrContentType_worksWhenLoggedIn() {
+        http.login(PASSWORD);
+
+        HttpResponse<String> r = http.send(java.net.http.HttpRequest.newBuilder(
+                java.net.URI.create("http://127.0.0.1:" + server.port() + "/api/frames/Taro")).DELETE());
+
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(200);
+        assertThat(kb.contains("Taro")).isFalse();
+    }
+
+    @Test void bearerToken_allowsEditingWithoutCookie() {
+        HttpResponse<String> r = http.send(http.jsonRequest("/api/frames/Taro")
+                .header("Authorization", "Bearer " + PASSWORD).DELETE());
+
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(200);
+        assertThat(kb.contains("Taro")).isFalse();
+    }
+
+    @Test void writes_notJsonOrFromAnotherOrigin_areRefused() {
+        http.login(PASSWORD);
+
+        HttpResponse<String> form = http.send(http.jsonRequest("/api/frames").setHeader("Content-Type", "text/plain")
+                .POST(java.net.http.HttpRequest.BodyPublishers.ofString("{\"name\":\"X\"}")));
+        HttpResponse<String> foreign = http.send(http.jsonRequest("/api/frames").header("Origin", "http://evil.example")
+                .POST(java.net.http.HttpRequest.BodyPublishers.ofString("{\"name\":\"X\",\"parent\":\"System\"}")));
+
+        assertThat(form.statusCode()).isEqualTo(415);
+        assertThat(foreign.statusCode()).isEqualTo(403);
+        assertThat(kb.contains("X")).isFalse();
+    }
+
+    @Test void request_namingAForeignHost_isRefused_againstDnsRebinding() throws Exception {
+        try (java.net.Socket socket = new java.net.Socket("127.0.0.1", server.port())) {
+            socket.getOutputStream().write(("GET /api/frames HTTP/1.1\r\nHost: evil.example:" + server.port()
+                    + "\r\nConnection: close\r\n\r\n").getBytes(java.nio.charset.StandardCharsets.US_ASCII));
+            String answer = new String(socket.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+
+            assertThat(answer).startsWith("HTTP/1.1 421").doesNotContain("AskUserName");
+        }
+        assertThat(http.send(java.net.http.HttpRequest.newBuilder(java.net.URI.create(
+                "http://localhost:" + server.port() + "/api/frames"))).statusCode()).isEqualTo(200);
+    }
+
+    @Test void readOnlyEditor_withoutPassword_refusesLogin() {
+        try (EditorServer readOnly = EditorServer.start(EditorConfig.defaults().withPort(0), kb)) {
+            Http other = new Http(readOnly.port());
+
+            HttpResponse<String> r = other.login("anything");
+
+            assertThat(r.statusCode()).isEqualTo(401);
+            assertThat(json(r).get("error").asText()).contains("no editor password is configured");
+            assertThat(json(other.get("/api/session")).get("editingPossible").asBoolean()).isFalse();
+        }
+    }
+
+    @Test void page_isServedWithContentSecurityPolicy() {
+        HttpResponse<String> r = http.get("/");
+
+        assertThat(r.statusCode()).isEqualTo(200);
+        assertThat(r.body()).contains("<title>K-ICNP knowledge editor</title>");
+        assertThat(r.headers().firstValue("Content-Security-Policy")).hasValueSatisfying(c ->
+                assertThat(c).contains("default-src 'none'").contains("connect-src 'self'"));
+        assertThat(http.get("/../pom.xml").statusCode()).isNotEqualTo(200);
+    }
+
+    static JsonNode find(JsonNode array, String name) {
+        for (JsonNode n : array) {
+            JsonNode nameNode = n.has("slot") ? n.get("slot").get("name") : n.get("name");
+            if (nameNode.asText().equals(name)) {
+                return n;
+            }
+        }
+        throw new AssertionError("No '" + name + "' in " + array);
+    }
+}

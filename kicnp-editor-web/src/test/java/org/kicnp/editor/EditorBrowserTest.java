@@ -1,0 +1,97 @@
+package org.kicnp.editor;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.File;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Provenance;
+import org.kicnp.core.Slot;
+import org.kicnp.inference.GraalScriptHost;
+import org.kicnp.inference.InferenceEngine;
+import org.kicnp.script.ScriptConfig;
+import org.kicnp.script.ScriptRuntime;
+
+/**
+ * The page in a real headless Chromium: the Playwright script {@code editor-e2e/editor.e2e.mjs} drives it against
+ * a real editor server (with an inference engine attached) on an ephemeral loopback port. Skipped, with a
+ * message, only when Chromium (or Node.js to drive it) is not installed; screenshots are kept under
+ * {@code target/e2e/}.
+ */
+class EditorBrowserTest {
+    private static final Path CHROMIUM = Path.of("/usr/bin/chromium");
+    private static final String PASSWORD = "e2e-secret";
+
+    @Test void page_inChromium_opensEditsValidatesSavesAndRefusesWrongPassword() throws Exception {
+        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM),
+                "Chromium is not installed at /usr/bin/chromium (apt-get install -y chromium); browser test skipped.");
+        Path node = which("node");
+        Assumptions.assumeTrue(node != null, "Node.js is not installed (apt-get install -y nodejs npm); browser test skipped.");
+        Path e2e = Path.of(System.getProperty("user.dir")).resolve("../editor-e2e").normalize();
+        Path artifacts = Path.of(System.getProperty("user.dir"), "target", "e2e");
+        Files.createDirectories(artifacts);
+        if (!Files.isDirectory(e2e.resolve("node_modules/playwright-core"))) {
+            run(e2e, List.of("npm", "ci", "--no-audit", "--no-fund"), Map.of(), artifacts.resolve("npm-ci.log"), 180);
+        }
+
+        KnowledgeBase kb = SampleKnowledge.create();
+        kb.add(Frame.instance("visitor1", "KnownUser").provenance(Provenance.RUNTIME).build());
+        kb.add(Frame.instance("mouth1", "Mouth").provenance(Provenance.RUNTIME).build());
+        try (ScriptRuntime scripts = ScriptRuntime.create(ScriptConfig.defaults());
+                InferenceEngine engine = InferenceEngine.builder(kb).scripts(new GraalScriptHost(scripts)).build();
+                EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD),
+                        kb, engine)) {
+            Map<String, String> env = Map.of("EDITOR_URL", "http://127.0.0.1:" + server.port() + "/",
+                    "EDITOR_PASSWORD", PASSWORD, "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString());
+            Path log = artifacts.resolve("browser.log");
+
+            int exit = run(e2e, List.of(node.toString(), "editor.e2e.mjs"), env, log, 120);
+
+            assertThat(exit).as(Files.readString(log)).isZero();
+        }
+        Slot mUser = kb.require("AskUserName").ownSlot("mUser").orElseThrow();
+        assertThat(mUser.argument()).contains("KnownUser");
+        assertThat(mUser.role()).contains("the visitor asked for a name");
+        assertThat(kb.value("AskUserName", "onInstantiate").map(v -> v.text()))
+                .contains("sendmsg(s.mMouth, “What is your name?”);");
+        assertThat(artifacts.resolve("03-slot-table.png")).exists();
+        assertThat(kb.instancesOf("AskUserName")).hasSize(1);
+        assertThat(kb.contains("PINO")).isTrue();
+        assertThat(kb.contains("Scout")).isFalse();
+        assertThat(kb.require("AIBO").parent()).contains("Robot");
+        assertThat(kb.require("Greeting").ownSlot("mUser").flatMap(Slot::role)).contains("their edit");
+    }
+
+    private static int run(Path dir, List<String> command, Map<String, String> env, Path log, int seconds)
+            throws IOException, InterruptedException {
+        ProcessBuilder pb = new ProcessBuilder(command).directory(dir.toFile()).redirectErrorStream(true)
+                .redirectOutput(log.toFile());
+        pb.environment().putAll(env);
+        Process p = pb.start();
+        if (!p.waitFor(seconds, TimeUnit.SECONDS)) {
+            p.destroyForcibly();
+            throw new AssertionError(command + " did not finish in " + seconds + " s; log: "
+                    + Files.readString(log, StandardCharsets.UTF_8));
+        }
+        return p.exitValue();
+    }
+
+    private static Path which(String program) {
+        for (String dir : System.getenv().getOrDefault("PATH", "").split(File.pathSeparator)) {
+            Path p = Path.of(dir, program);
+            if (Files.isExecutable(p)) {
+                return p;
+            }
+        }
+        return null;
+    }
+}

@@ -1,0 +1,236 @@
+package org.kicnp.inference;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import java.util.function.Consumer;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Relation;
+import org.kicnp.core.SemanticLink;
+
+/**
+ * Follows every issued action through its life cycle and turns the coordination links of behavior frames into
+ * guarantees: succession (wait for the predecessor frames' unfinished actions to end; fail if one fails),
+ * synchronization (actions of linked frames are released together at quiescence with one start time) and restriction
+ * (while an action of a frame with a restriction link out of it runs, other robots' actions are held, in order).
+ * Owned by the engine thread.
+ */
+final class ActionCoordinator {
+    private final KnowledgeBase kb;
+    private final ActionSink sink;
+    private final Clock clock;
+    private final Duration timeout;
+    private final Consumer<TraceEvent> trace;
+    private final Consumer<Tracked> finished;
+    private final Map<String, Tracked> actions = new LinkedHashMap<>();
+    private final List<Tracked> held = new ArrayList<>();
+    private final List<Tracked> syncBuffer = new ArrayList<>();
+
+    /** An action and where it stands. */
+    static final class Tracked {
+        Action action;
+        Action.Status status = Action.Status.HELD;
+        long deadline;
+        String detail = "";
+        final Set<String> waitsOn = new HashSet<>();
+
+        Tracked(Action a) {
+            this.action = a;
+        }
+    }
+
+    ActionCoordinator(KnowledgeBase kb, ActionSink sink, Clock clock, Duration timeout, Consumer<TraceEvent> trace,
+                      Consumer<Tracked> finished) {
+        this.kb = kb;
+        this.sink = sink;
+        this.clock = clock;
+        this.timeout = timeout;
+        this.trace = trace;
+        this.finished = finished;
+    }
+
+    Optional<Action.Status> status(String id) {
+        return Optional.ofNullable(actions.get(id)).map(t -> t.status);
+    }
+
+    List<Action> all() {
+        return actions.values().stream().map(t -> t.action).toList();
+    }
+
+    void issue(Action a) {
+        Tracked t = new Tracked(a);
+        actions.put(a.id(), t);
+        trace.accept(new TraceEvent.ActionIssued(a));
+        Set<String> preds = related(a.frame(), Relation.Coordination.SUCCESSION, Direction.INTO);
+        for (Tracked o : actions.values()) {
+            if (o != t && !o.status.finished() && preds.contains(o.action.frame())) {
+                t.waitsOn.add(o.action.id());
+            }
+        }
+        if (!related(a.frame(), Relation.Coordination.SYNCHRONIZATION, Direction.BOTH).isEmpty()) {
+            syncBuffer.add(t);
+            changed(t, Action.Status.HELD, "waiting for its synchronization group");
+        } else if (!t.waitsOn.isEmpty() || restrictedByOther(t)) {
+            held.add(t);
+            changed(t, Action.Status.HELD, t.waitsOn.isEmpty() ? "restricted" : "after " + t.waitsOn);
+        } else {
+            send(t, clock.millis());
+        }
+    }
+
+    /** At quiescence: release every synchronized action together, with one start time. */
+    void releaseSynchronized() {
+        if (syncBuffer.isEmpty()) {
+            return;
+        }
+        long now = clock.millis();
+        for (Tracked t : List.copyOf(syncBuffer)) {
+            t.action = t.action.releasedAt(now);
+            if (t.waitsOn.isEmpty() && !restrictedByOther(t)) {
+                send(t, now);
+            } else {
+                held.add(t);
+            }
+        }
+        syncBuffer.clear();
+    }
+
+    /** Fails every action of the instance that is still held (not yet sent), with the reason. */
+    void withdraw(String instance, String reason) {
+        for (Tracked t : List.copyOf(held)) {
+            if (t.action.instance().equals(instance)) {
+                held.remove(t);
+                finish(t, Action.Status.FAILED, reason);
+            }
+        }
+        for (Tracked t : List.copyOf(syncBuffer)) {
+            if (t.action.instance().equals(instance)) {
+                syncBuffer.remove(t);
+                finish(t, Action.Status.FAILED, reason);
+            }
+        }
+    }
+
+    void started(String id) {
+        Tracked t = known(id);
+        if (t.status == Action.Status.SENT) {
+            changed(t, Action.Status.STARTED, "");
+        }
+    }
+
+    void ended(String id, String result) {
+        finish(known(id), Action.Status.ENDED, result);
+    }
+
+    void failed(String id, String reason) {
+        finish(known(id), Action.Status.FAILED, reason);
+    }
+
+    /** Times out every running action whose deadline has passed. */
+    void checkTimeouts() {
+        long now = clock.millis();
+        for (Tracked t : List.copyOf(actions.values())) {
+            if ((t.status == Action.Status.SENT || t.status == Action.Status.STARTED) && now > t.deadline) {
+                finish(t, Action.Status.TIMED_OUT, "no end reported within " + limit(t) + " ms");
+            }
+        }
+    }
+
+    private void finish(Tracked t, Action.Status status, String detail) {
+        if (t.status.finished()) {
+            return;
+        }
+        changed(t, status, detail);
+        finished.accept(t);
+        releaseHeld();
+    }
+
+    private void releaseHeld() {
+        boolean progress = true;
+        while (progress) {
+            progress = false;
+            for (Tracked t : List.copyOf(held)) {
+                Optional<Tracked> bad = t.waitsOn.stream().map(actions::get)
+                        .filter(o -> o.status == Action.Status.FAILED || o.status == Action.Status.TIMED_OUT).findFirst();
+                if (bad.isPresent()) {
+                    held.remove(t);
+                    Tracked b = bad.get();
+                    finish(t, Action.Status.FAILED, "predecessor action '" + b.action.id() + "' of frame '"
+                            + b.action.frame() + "' " + b.status.name().toLowerCase() + ": " + b.detail);
+                    progress = true;
+                } else if (t.waitsOn.stream().allMatch(id -> actions.get(id).status == Action.Status.ENDED)
+                        && !restrictedByOther(t)) {
+                    held.remove(t);
+                    send(t, t.action.startAt() > 0 ? t.action.startAt() : clock.millis());
+                    progress = true;
+                }
+            }
+        }
+    }
+
+    private void send(Tracked t, long startAt) {
+        t.action = t.action.releasedAt(startAt);
+        t.deadline = clock.millis() + limit(t);
+        changed(t, Action.Status.SENT, "");
+        sink.send(t.action);
+    }
+
+    private long limit(Tracked t) {
+        return t.action.timeoutMillis() > 0 ? t.action.timeoutMillis() : timeout.toMillis();
+    }
+
+    private boolean restrictedByOther(Tracked t) {
+        for (Tracked o : actions.values()) {
+            if (o != t && (o.status == Action.Status.SENT || o.status == Action.Status.STARTED)
+                    && !o.action.robot().equals(t.action.robot())
+                    && !related(o.action.frame(), Relation.Coordination.RESTRICTION, Direction.OUT_OF).isEmpty()) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private enum Direction { INTO, OUT_OF, BOTH }
+
+    /** Frames linked to {@code frame} by the relation, following links into it, out of it, or both. */
+    private Set<String> related(String frame, Relation rel, Direction d) {
+        Set<String> out = new HashSet<>();
+        if (!kb.contains(frame)) {
+            return out;
+        }
+        if (d != Direction.OUT_OF) {
+            for (SemanticLink l : kb.linksInto(frame)) {
+                if (l.relation().equals(rel)) {
+                    out.add(l.frame());
+                }
+            }
+        }
+        if (d != Direction.INTO) {
+            for (SemanticLink l : kb.linksOutOf(frame)) {
+                if (l.relation().equals(rel)) {
+                    out.add(l.frame());
+                }
+            }
+        }
+        return out;
+    }
+
+    private void changed(Tracked t, Action.Status s, String detail) {
+        t.status = s;
+        t.detail = detail == null ? "" : detail;
+        trace.accept(new TraceEvent.ActionChanged(t.action.id(), s, t.detail));
+    }
+
+    private Tracked known(String id) {
+        Tracked t = actions.get(id);
+        if (t == null) {
+            throw new InferenceException("Action '" + id + "' is not known to this engine.");
+        }
+        return t;
+    }
+}

@@ -1,0 +1,176 @@
+package org.kicnp.inference;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import java.util.function.Supplier;
+import org.kicnp.core.Condition;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Value;
+
+/**
+ * Backward chaining: to find the instances of a class, take those that exist, then for every behavior frame at or
+ * below the class find, slot by slot, instances that exist or could themselves be derived, and keep the combinations
+ * whose declarative conditions hold. Read-only: nothing is created, no script runs. Bounded in depth and answers;
+ * a frame is not used again inside its own proof.
+ */
+final class BackwardChainer {
+    private static final String HYPO = "?";
+    private final KnowledgeBase kb;
+    private final EngineOptions options;
+    private final Supports supports;
+    private final Supplier<List<Rule>> rules;
+    private long hypotheses;
+
+    BackwardChainer(KnowledgeBase kb, EngineOptions options, Supports supports, Supplier<List<Rule>> rules) {
+        this.kb = kb;
+        this.options = options;
+        this.supports = supports;
+        this.rules = rules;
+    }
+
+    List<Answer> ask(String className, Map<String, Value> partial) {
+        if (!kb.contains(className)) {
+            throw new org.kicnp.core.UnknownFrameException(className);
+        }
+        Map<String, Map<String, Value>> hypo = new HashMap<>();
+        Conditions conds = new Conditions((f, s) -> read(hypo, f, s));
+        List<Answer> out = new ArrayList<>();
+        for (Frame f : kb.instancesOf(className)) {
+            if (out.size() >= options.maxAnswers()) {
+                break;
+            }
+            if (partial.entrySet().stream().allMatch(e -> kb.value(f.name(), e.getKey()).map(v -> Values.test(v,
+                    Condition.Op.EQ, e.getValue())).orElse(false))) {
+                Map<String, String> slots = new LinkedHashMap<>();
+                supports.derivation(f.name()).ifPresent(d -> slots.putAll(d.binding()));
+                out.add(new Answer(f.parent().orElseThrow(), Optional.of(f.name()), slots,
+                        new Proof.Exists(f.name(), f.parent().orElseThrow())));
+            }
+        }
+        for (Rule r : rules.get()) {
+            if (kb.isA(r.frame(), className)) {
+                for (Proof.Derivable p : derive(r, partial, 1, Set.of(r.frame()), hypo, conds)) {
+                    if (out.size() >= options.maxAnswers()) {
+                        return out;
+                    }
+                    Map<String, String> slots = new LinkedHashMap<>();
+                    p.slots().forEach((s, sub) -> slots.put(s, sub instanceof Proof.Exists e ? e.instance()
+                            : HYPO + sub.className()));
+                    out.add(new Answer(r.frame(), Optional.empty(), slots, p));
+                }
+            }
+        }
+        return out;
+    }
+
+    private List<Proof> proofs(String cls, int depth, Set<String> using, Map<String, Map<String, Value>> hypo,
+                               Conditions conds) {
+        List<Proof> out = new ArrayList<>();
+        kb.forEachInstanceOf(cls, f -> out.add(new Proof.Exists(f.name(), f.parent().orElseThrow())));
+        if (depth < options.maxProofDepth()) {
+            for (Rule r : rules.get()) {
+                if (!using.contains(r.frame()) && kb.isA(r.frame(), cls)) {
+                    Set<String> next = new HashSet<>(using);
+                    next.add(r.frame());
+                    out.addAll(derive(r, Map.of(), depth + 1, next, hypo, conds));
+                }
+            }
+        }
+        return out;
+    }
+
+    private List<Proof.Derivable> derive(Rule r, Map<String, Value> partial, int depth, Set<String> using,
+                                         Map<String, Map<String, Value>> hypo, Conditions conds) {
+        List<List<Proof>> options = new ArrayList<>();
+        for (SlotPattern p : r.required()) {
+            Value want = partial.get(p.slot());
+            if (want instanceof Value.Ref ref) {
+                options.add(kb.frame(ref.frame()).filter(f -> f.isInstance() && kb.isA(f.name(), p.argument()))
+                        .<List<Proof>>map(f -> List.of(new Proof.Exists(f.name(), f.parent().orElseThrow())))
+                        .orElse(List.of()));
+            } else {
+                options.add(proofs(p.argument(), depth, using, hypo, conds));
+            }
+        }
+        List<Proof.Derivable> out = new ArrayList<>();
+        combine(r, options, 0, new LinkedHashMap<>(), out, hypo, conds);
+        return out;
+    }
+
+    private void combine(Rule r, List<List<Proof>> options, int k, Map<String, Proof> chosen,
+                         List<Proof.Derivable> out, Map<String, Map<String, Value>> hypo, Conditions conds) {
+        if (out.size() >= this.options.maxAnswers()) {
+            return;
+        }
+        if (k == options.size()) {
+            Map<String, String> binding = new LinkedHashMap<>();
+            chosen.forEach((s, p) -> binding.put(s, name(p, hypo)));
+            if (new HashSet<>(binding.values()).size() < binding.size() || exists(r, binding)) {
+                return;
+            }
+            List<String> assumptions = new ArrayList<>();
+            for (SlotPattern p : r.required()) {
+                if (p.condition() instanceof Condition.Script s) {
+                    assumptions.add(p.slot() + ": " + s.text());
+                } else if (!conds.holds(p.condition(), Value.ref(binding.get(p.slot())), r.frame(), binding)) {
+                    return;
+                }
+            }
+            out.add(new Proof.Derivable(r.frame(), chosen, assumptions));
+            return;
+        }
+        for (Proof p : options.get(k)) {
+            chosen.put(r.required().get(k).slot(), p);
+            combine(r, options, k + 1, chosen, out, hypo, conds);
+            chosen.remove(r.required().get(k).slot());
+        }
+    }
+
+    /** The name a proof's instance goes by while conditions are tested: real, or a made-up hypothetical one. */
+    private String name(Proof p, Map<String, Map<String, Value>> hypo) {
+        return switch (p) {
+            case Proof.Exists e -> e.instance();
+            case Proof.Derivable d -> {
+                String n = HYPO + d.frame() + "#" + (++hypotheses);
+                Map<String, Value> slots = new HashMap<>();
+                d.slots().forEach((s, sub) -> slots.put(s, Value.ref(name(sub, hypo))));
+                hypo.put(n, slots);
+                hypo.put(n + "/class", Map.of("class", Value.of(d.frame())));
+                yield n;
+            }
+        };
+    }
+
+    private Optional<Value> read(Map<String, Map<String, Value>> hypo, String frame, String slot) {
+        if (frame.startsWith(HYPO)) {
+            Map<String, Value> m = hypo.get(frame);
+            if (m == null) {
+                return Optional.empty();
+            }
+            if (m.containsKey(slot)) {
+                return Optional.of(m.get(slot));
+            }
+            String cls = hypo.get(frame + "/class").get("class").text();
+            return kb.value(cls, slot);
+        }
+        return kb.contains(frame) ? kb.value(frame, slot) : Optional.empty();
+    }
+
+    /** Whether the binding already has a derived instance of the frame. */
+    private boolean exists(Rule r, Map<String, String> binding) {
+        for (String d : supports.derivedFrom(r.frame())) {
+            if (supports.derivation(d).map(x -> r.required().stream().allMatch(p ->
+                    binding.get(p.slot()).equals(x.binding().get(p.slot())))).orElse(false)) {
+                return true;
+            }
+        }
+        return false;
+    }
+}

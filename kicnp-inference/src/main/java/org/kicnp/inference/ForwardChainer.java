@@ -1,0 +1,430 @@
+package org.kicnp.inference;
+
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import java.util.function.Consumer;
+import org.kicnp.core.Change;
+import org.kicnp.core.ChangeSet;
+import org.kicnp.core.DataType;
+import org.kicnp.core.Frame;
+import org.kicnp.core.FrameEvent;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.KnowledgeException;
+import org.kicnp.core.Provenance;
+import org.kicnp.core.Slot;
+import org.kicnp.core.UnknownFrameException;
+import org.kicnp.core.Value;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Forward chaining and truth maintenance on the engine thread: turns knowledge base events into match network
+ * updates and agenda entries, fires activations, and retracts what no longer holds. {@link InferenceEngine} owns
+ * the loop and the lock; this class owns the network, the agenda and the rules.
+ */
+final class ForwardChainer {
+    private static final Logger LOG = LoggerFactory.getLogger(ForwardChainer.class);
+    private final KnowledgeBase kb;
+    private final Conditions conditions;
+    private final RuleCompiler compiler;
+    private final MatchNetwork network;
+    private final Agenda agenda = new Agenda();
+    private final Supports supports;
+    private final ScriptCalls scripts;
+    private final Consumer<TraceEvent> tracer;
+    private final Map<String, Rule> rules = new LinkedHashMap<>();
+    private final Map<String, Long> stamps = new HashMap<>();
+    private long stampCounter;
+    private long seq;
+    private long firings;
+    private long names;
+
+    ForwardChainer(KnowledgeBase kb, Conditions conditions, Supports supports, ScriptCalls scripts,
+                   Consumer<TraceEvent> tracer) {
+        this.kb = kb;
+        this.conditions = conditions;
+        this.compiler = new RuleCompiler(kb);
+        this.network = new MatchNetwork(kb, conditions);
+        this.supports = supports;
+        this.scripts = scripts;
+        this.tracer = tracer;
+    }
+
+    /** Stamps the instances there are and installs every behavior frame, matching what is already there. */
+    void start() {
+        for (Frame f : kb.frames()) {
+            if (f.isInstance()) {
+                stamps.put(f.name(), ++stampCounter);
+            }
+        }
+        for (Frame f : kb.frames()) {
+            if (f.isClass()) {
+                install(f.name());
+            }
+        }
+    }
+
+    Optional<Activation> next() {
+        return agenda.poll();
+    }
+
+    void clearAgenda() {
+        agenda.clear();
+    }
+
+    int agendaSize() {
+        return agenda.size();
+    }
+
+    List<Rule> rules() {
+        return List.copyOf(rules.values());
+    }
+
+    long firings() {
+        return firings;
+    }
+
+    /** Applies one committed batch to the network, the agenda and the truth maintenance records. */
+    void process(ChangeSet cs) {
+        for (FrameEvent e : cs.events()) {
+            switch (e) {
+                case FrameEvent.Added a -> {
+                    if (a.frame().isInstance()) {
+                        factAdded(a.frame());
+                    } else {
+                        classChanged(a.name());
+                    }
+                }
+                case FrameEvent.Replaced r -> {
+                    if (r.frame().isInstance() && r.before_().isInstance()) {
+                        factReplaced(r.before_(), r.frame());
+                    } else {
+                        if (r.before_().isInstance()) {
+                            factRemoved(r.before_());
+                        }
+                        classChanged(r.name());
+                        if (r.frame().isClass() && r.before_().isClass() && (!r.before_().parent()
+                                .equals(r.frame().parent()) || !r.before_().slots().equals(r.frame().slots()))) {
+                            kb.instancesOf(r.name()).forEach(i -> rematch(i.name(), "class '" + r.name() + "' changed"));
+                        }
+                    }
+                }
+                case FrameEvent.Removed rm -> {
+                    if (rm.frame().isInstance()) {
+                        factRemoved(rm.frame());
+                    } else {
+                        uninstall(rm.name());
+                    }
+                }
+            }
+        }
+    }
+
+    // ---- facts ----
+
+    private void factAdded(Frame f) {
+        long stamp = ++stampCounter;
+        stamps.put(f.name(), stamp);
+        trace(new TraceEvent.FactAsserted(f.name(), f.parent().orElseThrow(), stamp));
+        if (kb.contains(f.name())) {
+            network.insert(f.name(), f.parent().orElseThrow()).forEach(this::consider);
+        }
+    }
+
+    private void factRemoved(Frame f) {
+        String name = f.name();
+        trace(new TraceEvent.FactRemoved(name));
+        network.retract(name);
+        agenda.withdrawFact(name);
+        supports.factGone(name);
+        stamps.remove(name);
+        Set<String> orphans = supports.closure(name);
+        Optional<Derivation> d = supports.release(name);
+        if (d.isPresent()) {
+            scripts.retracted(name);
+            boolean failed = supports.takeFailed(name);
+            if (!failed) {
+                kb.frame(d.get().frame()).flatMap(c -> kb.value(c.name(), "onDestroy")).ifPresent(src ->
+                        scripts.run(d.get().frame(), "onDestroy", src.text(), ScriptCalls.snapshot(f), name, Optional.empty()));
+            }
+            Rule r = rules.get(d.get().frame());
+            if (r != null) {
+                d.get().binding().forEach((slot, fact) -> network.rematch(r.frame(), slot, fact).forEach(this::consider));
+            }
+        }
+        retract(orphans, "it rests on '" + name + "', which was removed");
+    }
+
+    private void factReplaced(Frame before, Frame after) {
+        String name = after.name();
+        Set<String> changed = changedSlots(before, after);
+        scripts.runDemons(before, after, changed);
+        String cls = after.parent().orElseThrow();
+        boolean reactive = !before.parent().equals(after.parent()) || changed.stream().anyMatch(s ->
+                kb.slot(cls, s).map(e -> e.slot().reactive()).orElse(true));
+        if (!reactive || !kb.contains(name)) {
+            return;
+        }
+        rematch(name, "'" + name + "' changed");
+    }
+
+    /**
+     * Matches an instance again after it (or its class) changed: it leaves every memory, derived instances that rest
+     * on it are re-checked (and retracted when a condition no longer holds), and it enters again as a recent fact.
+     */
+    private void rematch(String name, String why) {
+        Optional<Frame> now = kb.frame(name);
+        if (now.isEmpty() || !now.get().isInstance()) {
+            return;
+        }
+        trace(new TraceEvent.FactChanged(name));
+        network.retract(name);
+        agenda.withdrawFact(name);
+        for (String dep : supports.dependentsOf(name)) {
+            supports.derivation(dep).filter(d -> d.binding().containsValue(name)).ifPresent(d ->
+                    failingSlot(d).ifPresent(slot -> {
+                        unmarkFired(d);
+                        Set<String> all = new LinkedHashSet<>(List.of(dep));
+                        all.addAll(supports.closure(dep));
+                        retract(all, "the condition of slot '" + slot + "' of '" + d.frame()
+                                + "' no longer holds after " + why);
+                    }));
+        }
+        stamps.put(name, ++stampCounter);
+        network.insert(name, now.get().parent().orElseThrow()).forEach(this::consider);
+    }
+
+    private static Set<String> changedSlots(Frame before, Frame after) {
+        Set<String> names = new LinkedHashSet<>();
+        before.slots().forEach(s -> names.add(s.name()));
+        after.slots().forEach(s -> names.add(s.name()));
+        names.removeIf(n -> before.ownSlot(n).flatMap(Slot::effectiveValue)
+                .equals(after.ownSlot(n).flatMap(Slot::effectiveValue)));
+        return names;
+    }
+
+
+    // ---- rules ----
+
+    private void classChanged(String name) {
+        if (!kb.contains(name)) {
+            return;
+        }
+        List<String> todo = new ArrayList<>(List.of(name));
+        for (int i = 0; i < todo.size(); i++) {
+            for (Frame c : kb.children(todo.get(i))) {
+                if (c.isClass()) {
+                    todo.add(c.name());
+                }
+            }
+        }
+        todo.forEach(this::install);
+    }
+
+    private void install(String frame) {
+        uninstall(frame);
+        compiler.compile(frame).ifPresent(r -> {
+            rules.put(frame, r);
+            network.addRule(r).forEach(this::consider);
+        });
+        for (String dep : supports.derivedFrom(frame)) {
+            supports.derivation(dep).ifPresent(d -> failingSlot(d).ifPresent(slot -> {
+                unmarkFired(d);
+                Set<String> all = new LinkedHashSet<>(List.of(dep));
+                all.addAll(supports.closure(dep));
+                retract(all, "frame '" + frame + "' changed and the condition of slot '" + slot + "' no longer holds");
+            }));
+        }
+    }
+
+    private void uninstall(String frame) {
+        if (rules.remove(frame) != null) {
+            network.removeRule(frame);
+            agenda.withdrawRule(frame);
+        }
+    }
+
+    // ---- matching and firing ----
+
+    private void consider(MatchNetwork.Match m) {
+        Rule r = m.rule();
+        String key = Activation.key(r.frame(), r, m.binding());
+        if (agenda.contains(key)) {
+            return;
+        }
+        trace(new TraceEvent.Matched(r.frame(), m.binding()));
+        Optional<String> blocked = supports.blocked(r, m.binding(), key).or(() -> scripts.conditionFails(r, m.binding()));
+        if (blocked.isPresent()) {
+            trace(new TraceEvent.Blocked(r.frame(), m.binding(), blocked.get()));
+            return;
+        }
+        long recency = m.binding().values().stream().mapToLong(f -> stamps.getOrDefault(f, 0L)).max().orElse(0);
+        agenda.add(new Activation(r, m.binding(), recency, ++seq));
+        trace(new TraceEvent.Activated(r.frame(), m.binding(), agenda.size()));
+    }
+
+    /** Fires one activation: creates the instance and runs its onInstantiate script. */
+    void fire(Activation a) {
+        Rule r = a.rule();
+        Optional<String> blocked = supports.blocked(r, a.binding(), a.key());
+        if (blocked.isPresent()) {
+            trace(new TraceEvent.Blocked(r.frame(), a.binding(), blocked.get()));
+            return;
+        }
+        Map<String, String> full = new LinkedHashMap<>();
+        r.required().forEach(p -> full.put(p.slot(), a.binding().get(p.slot())));
+        fillOptional(r, full);
+        String name = newName(r.frame());
+        String trigger = full.values().stream().max(Comparator.comparingLong(f -> stamps.getOrDefault(f, 0L)))
+                .orElseThrow();
+        Derivation d = new Derivation(name, r.frame(), full, checked(r, full), ++firings, trigger, Optional.empty());
+        supports.markFired(a.key(), a.binding().values());
+        supports.record(d, Optional.of(r));
+        Frame.Builder b = Frame.instance(name, r.frame()).provenance(Provenance.RUNTIME);
+        full.forEach((slot, fact) -> b.slot(Slot.builder(slot, DataType.INSTANCE).value(Value.ref(fact)).build()));
+        try {
+            kb.add(b.build());
+        } catch (KnowledgeException e) {
+            supports.release(name);
+            trace(new TraceEvent.Blocked(r.frame(), full, "the instance could not be created: " + e.getMessage()));
+            return;
+        }
+        trace(new TraceEvent.Fired(r.frame(), name, full, firings));
+        Optional<Value> script = kb.value(name, "onInstantiate");
+        if (script.isPresent() && !script.get().text().isBlank()) {
+            boolean ok = scripts.run(r.frame(), "onInstantiate", script.get().text(), new FrameView(kb, name, 0), name,
+                    Optional.of(name));
+            if (!ok) {
+                supports.markFailed(name);
+                removeQuietly(List.of(name), "its onInstantiate script failed");
+            }
+        }
+    }
+
+    private void fillOptional(Rule r, Map<String, String> full) {
+        for (SlotPattern p : r.optional()) {
+            String best = null;
+            for (String c : network.candidates(r.frame(), p.slot())) {
+                if (full.containsValue(c) || (!p.shared() && supports.consumed(r.frame(), p.slot(), c))) {
+                    continue;
+                }
+                Map<String, String> trial = new LinkedHashMap<>(full);
+                trial.put(p.slot(), c);
+                if (conditions.holds(p.condition(), Value.ref(c), r.frame(), trial)
+                        && (best == null || stamps.getOrDefault(c, 0L) > stamps.getOrDefault(best, 0L))) {
+                    best = c;
+                }
+            }
+            if (best != null) {
+                full.put(p.slot(), best);
+            }
+        }
+    }
+
+    private List<Derivation.CheckedCondition> checked(Rule r, Map<String, String> full) {
+        List<Derivation.CheckedCondition> out = new ArrayList<>();
+        for (SlotPattern p : r.patterns()) {
+            String fact = full.get(p.slot());
+            if (fact == null) {
+                continue;
+            }
+            String value = switch (p.condition()) {
+                case org.kicnp.core.Condition.Compare c -> conditions.follow(Value.ref(fact), c.left()).map(Value::text)
+                        .orElse(fact);
+                case org.kicnp.core.Condition.Between c -> conditions.follow(Value.ref(fact), c.left())
+                        .map(Value::text).orElse(fact);
+                case org.kicnp.core.Condition.OneOf c -> conditions.follow(Value.ref(fact), c.left()).map(Value::text)
+                        .orElse(fact);
+                case org.kicnp.core.Condition.Matches c -> conditions.follow(Value.ref(fact), c.left())
+                        .map(Value::text).orElse(fact);
+                default -> fact;
+            };
+            out.add(new Derivation.CheckedCondition(p.slot(), p.condition().text(), value));
+        }
+        return out;
+    }
+
+    /** The first slot of a derived instance whose class or condition no longer holds, if any. */
+    private Optional<String> failingSlot(Derivation d) {
+        Rule r = rules.get(d.frame());
+        if (r == null || d.createdBy().isPresent()) {
+            return Optional.empty();
+        }
+        for (SlotPattern p : r.patterns()) {
+            String fact = d.binding().get(p.slot());
+            if (fact == null) {
+                if (p.required()) {
+                    return Optional.of(p.slot());
+                }
+                continue;
+            }
+            if (!kb.contains(fact) || !kb.isA(fact, p.argument())
+                    || !conditions.holds(p.condition(), Value.ref(fact), r.frame(), d.binding())) {
+                return Optional.of(p.slot());
+            }
+        }
+        Map<String, String> required = new LinkedHashMap<>();
+        r.required().forEach(p -> required.put(p.slot(), d.binding().get(p.slot())));
+        return scripts.conditionFails(r, required).map(x -> "script");
+    }
+
+    private void unmarkFired(Derivation d) {
+        Rule r = rules.get(d.frame());
+        if (r != null) {
+            supports.unmarkFired(Activation.key(r.frame(), r, d.binding()));
+        }
+    }
+
+    // ---- truth maintenance ----
+
+    /** Removes an instance and every live instance resting on it, in one batch; returns the names. */
+    Set<String> destroyNow(String instance, String reason) {
+        if (!kb.frame(instance).map(Frame::isInstance).orElse(false)) {
+            throw new UnknownFrameException(instance);
+        }
+        Set<String> all = new LinkedHashSet<>(List.of(instance));
+        all.addAll(supports.closure(instance));
+        all.removeIf(n -> !kb.contains(n));
+        kb.apply(all.stream().map(Change.Remove::new).toList());
+        all.forEach(n -> trace(new TraceEvent.Retracted(n, n.equals(instance) ? reason
+                : "it rests on '" + instance + "', which was " + reason)));
+        return all;
+    }
+
+    private void retract(Set<String> names, String reason) {
+        removeQuietly(names, reason);
+    }
+
+    private void removeQuietly(Collection<String> names, String reason) {
+        List<String> live = names.stream().filter(kb::contains).toList();
+        if (live.isEmpty()) {
+            return;
+        }
+        try {
+            kb.apply(live.stream().map(Change.Remove::new).toList());
+            live.forEach(n -> trace(new TraceEvent.Retracted(n, reason)));
+        } catch (KnowledgeException e) {
+            LOG.error("Could not retract {} ({}): {}", live, reason, e.getMessage());
+        }
+    }
+
+    String newName(String prefix) {
+        String n;
+        do {
+            n = prefix + "-" + (++names);
+        } while (kb.contains(n));
+        return n;
+    }
+
+    private void trace(TraceEvent e) {
+        tracer.accept(e);
+    }
+}

@@ -1,0 +1,432 @@
+package org.kicnp.inference;
+
+import static java.util.Objects.requireNonNull;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.Executor;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.locks.ReentrantLock;
+import org.kicnp.core.ChangeSet;
+import org.kicnp.core.DataType;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.KnowledgeException;
+import org.kicnp.core.KnowledgeListener;
+import org.kicnp.core.Provenance;
+import org.kicnp.core.Slot;
+import org.kicnp.core.UnknownFrameException;
+import org.kicnp.core.Value;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The paper's inference engine. It listens to the knowledge base, matches instances against behavior frames,
+ * fires them in conflict-resolution order (creating runtime instances and running their {@code onInstantiate}
+ * scripts), keeps what it derived consistent with what it rests on, explains every derived instance, answers
+ * questions by backward chaining and coordinates the actions that firings issue.
+ *
+ * <p>Threading: knowledge base events and action reports may arrive on any thread; they are queued and take effect
+ * on the thread that calls {@link #runToQuiescence()}, which holds the engine's lock while it runs.
+ */
+public final class InferenceEngine implements ActionFeedback, AutoCloseable {
+    private static final Logger LOG = LoggerFactory.getLogger(InferenceEngine.class);
+    /** The class of the runtime instances that report finished actions, so frames can match on feedback. */
+    public static final String FEEDBACK_CLASS = "ActionFeedback";
+
+    private final KnowledgeBase kb;
+    private final EngineOptions options;
+    private final Supports supports = new Supports();
+    private final ActionCoordinator actions;
+    private final BackwardChainer backward;
+    private final ScriptCalls scripts;
+    private final ForwardChainer forward;
+    private final List<TraceListener> tracers = new CopyOnWriteArrayList<>();
+    private final ConcurrentLinkedQueue<Runnable> inbox = new ConcurrentLinkedQueue<>();
+    private final ReentrantLock lock = new ReentrantLock();
+    private final KnowledgeListener listener = this::changed;
+    private final Optional<Executor> runner;
+    private final AtomicBoolean scheduled = new AtomicBoolean();
+    private long actionIds;
+
+    private InferenceEngine(KnowledgeBase kb, EngineOptions options, ScriptHost host, ActionSink sink, Clock clock,
+                            Optional<Executor> runner) {
+        this.kb = kb;
+        this.options = options;
+        this.runner = runner;
+        Conditions conditions = new Conditions((f, s) -> kb.contains(f) ? kb.value(f, s) : Optional.empty());
+        this.actions = new ActionCoordinator(kb, sink, clock, options.actionTimeout(), this::trace, this::assertFeedback);
+        ScriptApi api = new ScriptApi(kb, new ScriptApi.Services() {
+            @Override public String newName(String prefix) {
+                return forward.newName(prefix);
+            }
+
+            @Override public String newActionId() {
+                return "a" + (++actionIds);
+            }
+
+            @Override public List<Map<String, Object>> ask(String cls, Map<String, Value> bindings) {
+                return backward.ask(cls, bindings).stream().map(Answer::toScript).toList();
+            }
+        });
+        this.scripts = new ScriptCalls(kb, host, api, supports, actions, this::trace, new ScriptCalls.Target() {
+            @Override public Set<String> destroy(String instance, String reason) {
+                return forward.destroyNow(instance, reason);
+            }
+
+            @Override public long firings() {
+                return forward.firings();
+            }
+        });
+        this.forward = new ForwardChainer(kb, conditions, supports, scripts, this::trace);
+        this.backward = new BackwardChainer(kb, options, supports, forward::rules);
+    }
+
+    /** Starts building an engine over the knowledge base. */
+    public static Builder builder(KnowledgeBase kb) {
+        return new Builder(kb);
+    }
+
+    /** Builds an engine; {@link #build()} attaches it to the knowledge base and matches what is already there. */
+    public static final class Builder {
+        private final KnowledgeBase kb;
+        private EngineOptions options = EngineOptions.defaults();
+        private ScriptHost scripts = ScriptHost.NONE;
+        private ActionSink sink = ActionSink.NONE;
+        private Clock clock = Clock.SYSTEM;
+        private Optional<Executor> runner = Optional.empty();
+
+        private Builder(KnowledgeBase kb) {
+            this.kb = requireNonNull(kb, "kb");
+        }
+
+        public Builder options(EngineOptions o) {
+            this.options = requireNonNull(o, "options");
+            return this;
+        }
+
+        public Builder scripts(ScriptHost s) {
+            this.scripts = requireNonNull(s, "scripts");
+            return this;
+        }
+
+        public Builder actionSink(ActionSink s) {
+            this.sink = requireNonNull(s, "sink");
+            return this;
+        }
+
+        public Builder clock(Clock c) {
+            this.clock = requireNonNull(c, "clock");
+            return this;
+        }
+
+        /**
+         * Runs to quiescence by itself on this executor (give it a single-threaded one) whenever a change or an
+         * action report arrives; without it, the owner calls {@link #runToQuiescence()}.
+         */
+        public Builder runOn(Executor executor) {
+            this.runner = Optional.of(requireNonNull(executor, "executor"));
+            return this;
+        }
+
+        public InferenceEngine build() {
+            InferenceEngine e = new InferenceEngine(kb, options, scripts, sink, clock, runner);
+            e.attach();
+            return e;
+        }
+    }
+
+    private void attach() {
+        lock.lock();
+        try {
+            if (!kb.contains(FEEDBACK_CLASS)) {
+                kb.add(feedbackClass());
+            }
+            kb.addListener(listener);
+            inbox.clear();
+            forward.start();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    @Override public void close() {
+        kb.removeListener(listener);
+    }
+
+    public void addTraceListener(TraceListener l) {
+        tracers.add(requireNonNull(l, "listener"));
+    }
+
+    public void removeTraceListener(TraceListener l) {
+        tracers.remove(l);
+    }
+
+    // ---- running ----
+
+    /**
+     * Processes every queued change and report and fires activations until nothing more fires; returns the number of
+     * firings.
+     *
+     * @throws InferenceLimitException when the run exceeds the configured number of firings; the agenda is cleared
+     */
+    public int runToQuiescence() {
+        lock.lock();
+        try {
+            int count = 0;
+            Map<String, Integer> perFrame = new HashMap<>();
+            while (true) {
+                drain();
+                actions.checkTimeouts();
+                drain();
+                Optional<Activation> next = forward.next();
+                if (next.isEmpty()) {
+                    actions.releaseSynchronized();
+                    if (inbox.isEmpty()) {
+                        return count;
+                    }
+                    continue;
+                }
+                count++;
+                perFrame.merge(next.get().rule().frame(), 1, Integer::sum);
+                if (count > options.maxFirings()) {
+                    forward.clearAgenda();
+                    List<String> top = perFrame.entrySet().stream()
+                            .sorted(Map.Entry.<String, Integer>comparingByValue().reversed()).limit(3)
+                            .map(Map.Entry::getKey).toList();
+                    trace(new TraceEvent.LimitReached(options.maxFirings(), top));
+                    throw new InferenceLimitException(options.maxFirings(), top);
+                }
+                forward.fire(next.get());
+            }
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /**
+     * Lets time-based work happen: on an engine that {@link Builder#runOn runs by itself}, schedules a run, which
+     * times out overdue actions; call it from a timer. On a hand-driven engine, {@link #runToQuiescence()} does this.
+     */
+    public void tick() {
+        submit(() -> { });
+    }
+
+    /** Activations waiting on the agenda (after the queued changes are processed). */
+    public int agendaSize() {
+        lock.lock();
+        try {
+            drain();
+            return forward.agendaSize();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    private void changed(ChangeSet cs) {
+        submit(() -> forward.process(cs));
+    }
+
+    private void submit(Runnable work) {
+        inbox.add(work);
+        runner.ifPresent(ex -> {
+            if (scheduled.compareAndSet(false, true)) {
+                ex.execute(() -> {
+                    scheduled.set(false);
+                    try {
+                        runToQuiescence();
+                    } catch (RuntimeException e) {
+                        LOG.error("Inference run failed: {}", e.getMessage(), e);
+                    }
+                });
+            }
+        });
+    }
+
+    private void drain() {
+        Runnable r;
+        while ((r = inbox.poll()) != null) {
+            r.run();
+        }
+    }
+
+    // ---- truth maintenance ----
+
+    /**
+     * Destroys an instance and everything derived from it, in one batch, then runs to quiescence so
+     * {@code onDestroy} scripts run and freed bindings may fire again. Returns the names removed.
+     *
+     * @throws UnknownFrameException when there is no such instance
+     * @throws KnowledgeException when a frame the engine did not derive still refers to one of them
+     */
+    public Set<String> destroy(String instance) {
+        lock.lock();
+        try {
+            drain();
+            Set<String> removed = forward.destroyNow(instance, "destroyed through the engine");
+            runToQuiescence();
+            return removed;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    // ---- explanations and questions ----
+
+    /** Why an instance exists: its derivation and, recursively, those of what it rests on, down to the stimuli. */
+    public Explanation why(String instance) {
+        lock.lock();
+        try {
+            drain();
+            return why(instance, new HashSet<>());
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    private Explanation why(String instance, Set<String> seen) {
+        Frame f = kb.frame(instance).orElseThrow(() -> new UnknownFrameException(instance));
+        Optional<Derivation> d = supports.derivation(instance);
+        if (d.isEmpty() || !seen.add(instance)) {
+            return new Explanation.Asserted(instance, f.parent().orElse(""));
+        }
+        List<Explanation> sup = new ArrayList<>();
+        for (String s : d.get().supports()) {
+            if (kb.contains(s)) {
+                sup.add(why(s, seen));
+            }
+        }
+        return new Explanation.Derived(d.get(), sup);
+    }
+
+    /** The derivation of an instance the engine derived, if it did. */
+    public Optional<Derivation> derivation(String instance) {
+        lock.lock();
+        try {
+            return supports.derivation(instance);
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /**
+     * Every answer to "which instances of {@code className} (with these slot values) are there or could there be":
+     * existing instances, then those backward chaining through behavior frames shows derivable. No side effects.
+     */
+    public List<Answer> ask(String className, Map<String, Value> partialBindings) {
+        lock.lock();
+        try {
+            drain();
+            return backward.ask(className, partialBindings);
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** The proof trees of {@link #ask}. */
+    public List<Proof> prove(String className, Map<String, Value> partialBindings) {
+        return ask(className, partialBindings).stream().map(Answer::proof).toList();
+    }
+
+    /**
+     * Reads a slot through the engine: when it has no value and its slot has an {@code onNeeded} demon, the demon
+     * computes one (it is returned, not stored).
+     */
+    public Optional<Value> read(String instance, String slot) {
+        lock.lock();
+        try {
+            drain();
+            return scripts.read(instance, slot);
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    // ---- actions ----
+
+    @Override public void actionStarted(String actionId) {
+        submit(() -> actions.started(actionId));
+    }
+
+    @Override public void actionEnded(String actionId, String result) {
+        submit(() -> actions.ended(actionId, result));
+    }
+
+    @Override public void actionFailed(String actionId, String reason) {
+        submit(() -> actions.failed(actionId, reason));
+    }
+
+    /** Where the action stands, if the engine issued it. */
+    public Optional<Action.Status> actionStatus(String actionId) {
+        lock.lock();
+        try {
+            drain();
+            return actions.status(actionId);
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Every action issued so far, in order. */
+    public List<Action> actions() {
+        lock.lock();
+        try {
+            return actions.all();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    private void assertFeedback(ActionCoordinator.Tracked t) {
+        Action a = t.action;
+        Frame f = Frame.instance(FEEDBACK_CLASS + "-" + a.id(), FEEDBACK_CLASS).provenance(Provenance.RUNTIME)
+                .slot(str("action", a.id())).slot(str("robot", a.robot())).slot(str("name", a.name()))
+                .slot(str("status", t.status.name().toLowerCase(Locale.ROOT))).slot(str("result", t.detail))
+                .slot(str("frame", a.frame())).slot(str("issuedBy", a.instance())).build();
+        try {
+            kb.put(f);
+        } catch (KnowledgeException e) {
+            LOG.warn("Could not record feedback for action '{}': {}", a.id(), e.getMessage());
+        }
+    }
+
+    /**
+     * The {@value #FEEDBACK_CLASS} class frame the engine adds when it is missing. Knowledge bases whose frames
+     * match on feedback declare it (or add this frame) before those frames load.
+     */
+    public static Frame feedbackClass() {
+        Frame.Builder b = Frame.classFrame(FEEDBACK_CLASS);
+        for (String s : List.of("action", "robot", "name", "status", "result", "frame", "issuedBy")) {
+            b.slot(Slot.builder(s, DataType.STRING).build());
+        }
+        return b.build();
+    }
+
+    private static Slot str(String name, String value) {
+        return Slot.ofValue(name, DataType.STRING, Value.of(value));
+    }
+
+    // ---- helpers ----
+
+    private void trace(TraceEvent e) {
+        for (TraceListener t : tracers) {
+            try {
+                t.trace(e);
+            } catch (RuntimeException ex) {
+                LOG.warn("Trace listener {} failed: {}", t, ex.getMessage());
+            }
+        }
+    }
+
+    private static String message(Throwable e) {
+        return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+    }
+}

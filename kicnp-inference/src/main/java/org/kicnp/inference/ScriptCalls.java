@@ -1,0 +1,206 @@
+package org.kicnp.inference;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import java.util.function.Consumer;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.KnowledgeException;
+import org.kicnp.core.Provenance;
+import org.kicnp.core.Slot;
+import org.kicnp.core.Value;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Every way the engine calls scripts: behavior scripts ({@code onInstantiate}, {@code onDestroy}), script
+ * conditions, and the FRL demons. A script's effects are collected while it runs and applied only if it succeeds.
+ */
+final class ScriptCalls {
+    private static final Logger LOG = LoggerFactory.getLogger(ScriptCalls.class);
+
+    /** What applying effects needs from the forward chainer. */
+    interface Target {
+        Set<String> destroy(String instance, String reason);
+
+        long firings();
+    }
+
+    private final KnowledgeBase kb;
+    private final ScriptHost host;
+    private final ScriptApi scriptApi;
+    private final Supports supports;
+    private final ActionCoordinator actions;
+    private final Consumer<TraceEvent> tracer;
+    private final Target target;
+
+    ScriptCalls(KnowledgeBase kb, ScriptHost host, ScriptApi scriptApi, Supports supports, ActionCoordinator actions,
+                Consumer<TraceEvent> tracer, Target target) {
+        this.kb = kb;
+        this.host = host;
+        this.scriptApi = scriptApi;
+        this.supports = supports;
+        this.actions = actions;
+        this.tracer = tracer;
+        this.target = target;
+    }
+
+
+    /** Runs a script; on success applies its effects, on failure traces it and changes nothing. */
+    boolean run(String frame, String slot, String source, Object self, String instance,
+                              Optional<String> supporter) {
+        List<Effect> effects = new ArrayList<>();
+        trace(new TraceEvent.ScriptCalled(frame, slot, instance));
+        try {
+            host.run(frame, slot, source, scriptApi.globals(() -> self, effects, frame));
+        } catch (RuntimeException e) {
+            LOG.warn("Script in slot '{}' of frame '{}' failed for '{}': {}", slot, frame, instance, message(e));
+            trace(new TraceEvent.ScriptFailed(frame, slot, instance, message(e)));
+            return false;
+        }
+        apply(effects, frame, instance, supporter);
+        return true;
+    }
+
+    private void apply(List<Effect> effects, String frame, String instance, Optional<String> supporter) {
+        for (Effect e : effects) {
+            try {
+                switch (e) {
+                    case Effect.Create c -> create(c, supporter);
+                    case Effect.Destroy x -> target.destroy(x.name(), "destroyed by a script of frame '" + frame + "'");
+                    case Effect.Issue i -> actions.issue(action(i, frame, instance));
+                    case Effect.Learn l -> learn(l.frame());
+                }
+            } catch (KnowledgeException | InferenceException ex) {
+                LOG.warn("An effect of a script of frame '{}' failed: {}", frame, ex.getMessage());
+                trace(new TraceEvent.ScriptFailed(frame, "effect", instance, ex.getMessage()));
+            }
+        }
+    }
+
+    /**
+     * The action an issue effect stands for: the robot is the target's {@code robot} slot when it has one (a Mouth
+     * names its robot), else the target itself; the timeout is the behavior frame's {@code timeout} slot (ms) when
+     * it has one, else the engine's default (0 here).
+     */
+    private Action action(Effect.Issue i, String frame, String instance) {
+        String robot = kb.contains(i.robot()) ? kb.value(i.robot(), "robot").map(Value::text).orElse(i.robot())
+                : i.robot();
+        long timeout = kb.contains(frame) ? kb.value(frame, "timeout")
+                .map(v -> v instanceof Value.Int n ? n.value() : 0L).orElse(0L) : 0L;
+        return new Action(i.id(), robot, i.robot(), i.action(), i.args(), frame, instance, timeout, 0);
+    }
+
+    /** Adds or updates a learned frame; a declared or runtime frame of that name is never overwritten. */
+    private void learn(Frame f) {
+        Optional<Frame> existing = kb.frame(f.name());
+        if (existing.isPresent() && !existing.get().learned()) {
+            throw new InferenceException("learn() cannot replace frame '" + f.name() + "': it was not learned.");
+        }
+        kb.put(f);
+    }
+
+    /** A derived instance was retracted: actions it issued that are still held will not be sent. */
+    void retracted(String instance) {
+        actions.withdraw(instance, "the instance '" + instance + "' that issued it was retracted");
+    }
+
+    private void create(Effect.Create c, Optional<String> supporter) {
+        Frame.Builder b = Frame.instance(c.name(), c.className()).provenance(Provenance.RUNTIME);
+        c.slots().forEach((slot, v) -> b.slot(Slot.builder(slot, kb.slot(c.className(), slot)
+                .map(e -> e.slot().type()).orElse(v.type())).value(v).build()));
+        supporter.filter(kb::contains).ifPresent(s -> supports.record(new Derivation(c.name(), c.className(), Map.of(),
+                List.of(), target.firings(), s, Optional.of(s)), Optional.empty()));
+        try {
+            kb.add(b.build());
+        } catch (KnowledgeException e) {
+            supports.release(c.name());
+            throw e;
+        }
+    }
+
+    static Map<String, Object> snapshot(Frame f) {
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put(FrameView.NAME, f.name());
+        f.slots().forEach(s -> s.effectiveValue().ifPresent(v -> m.put(s.name(), v.text())));
+        return Collections.unmodifiableMap(m);
+    }
+
+    /** Why a script condition of the binding fails, if one does: false, or it threw. */
+    Optional<String> conditionFails(Rule r, Map<String, String> binding) {
+        for (SlotPattern p : r.patterns()) {
+            if (p.condition() instanceof org.kicnp.core.Condition.Script s && binding.containsKey(p.slot())) {
+                Map<String, Object> view = new LinkedHashMap<>();
+                binding.forEach((slot, fact) -> view.put(slot, new FrameView(kb, fact, 0)));
+                try {
+                    Map<String, Object> g = new LinkedHashMap<>();
+                    g.put("s", Collections.unmodifiableMap(view));
+                    if (!host.test(r.frame(), p.slot(), s.source(), g)) {
+                        return Optional.of("the script condition of slot '" + p.slot() + "' is false");
+                    }
+                } catch (RuntimeException e) {
+                    trace(new TraceEvent.ScriptFailed(r.frame(), p.slot(), "", message(e)));
+                    return Optional.of("the script condition of slot '" + p.slot() + "' failed: " + message(e));
+                }
+            }
+        }
+        return Optional.empty();
+    }
+
+    /** Runs the onAdded / onRemoved demons of the slots an instance change touched. */
+    void runDemons(Frame before, Frame after, Set<String> changed) {
+        if (!kb.contains(after.name())) {
+            return;
+        }
+        for (String slot : changed) {
+            Optional<Value> was = before.ownSlot(slot).flatMap(Slot::effectiveValue);
+            Optional<Value> now = after.ownSlot(slot).flatMap(Slot::effectiveValue);
+            kb.slot(after.name(), slot).ifPresent(e -> {
+                Optional<String> demon = now.isPresent() ? e.slot().onAdded() : e.slot().onRemoved();
+                demon.filter(src -> was.isPresent() || now.isPresent()).ifPresent(src -> run(e.declaredBy(),
+                        now.isPresent() ? "onAdded" : "onRemoved", src, new FrameView(kb, after.name(), 0),
+                        after.name(), supports.isDerived(after.name()) ? Optional.of(after.name()) : Optional.empty()));
+            });
+        }
+    }
+
+    /**
+     * Reads a slot through the engine: when it has no value and its slot has an {@code onNeeded} demon, the demon
+     * computes one (it is returned, not stored).
+     */
+    Optional<Value> read(String instance, String slot) {
+        Optional<Value> v = kb.value(instance, slot);
+        if (v.isPresent()) {
+            return v;
+        }
+        var e = kb.slot(instance, slot);
+        if (e.isEmpty() || e.get().slot().onNeeded().isEmpty()) {
+            return Optional.empty();
+        }
+        List<Effect> effects = new ArrayList<>();
+        trace(new TraceEvent.ScriptCalled(e.get().declaredBy(), "onNeeded", instance));
+        Object out;
+        try {
+            out = host.run(e.get().declaredBy(), slot, e.get().slot().onNeeded().get(),
+                    scriptApi.globals(() -> new FrameView(kb, instance, 0), effects, e.get().declaredBy()));
+        } catch (RuntimeException ex) {
+            trace(new TraceEvent.ScriptFailed(e.get().declaredBy(), "onNeeded", instance, message(ex)));
+            return Optional.empty();
+        }
+        apply(effects, e.get().declaredBy(), instance, Optional.empty());
+        return out == null ? Optional.empty() : Optional.of(ScriptApi.toValue(out, e.get().slot().type()));
+    }
+
+    private void trace(TraceEvent e) {
+        tracer.accept(e);
+    }
+
+    static String message(Throwable e) {
+        return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+    }
+}

@@ -1,0 +1,188 @@
+package org.kicnp.inference;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.time.Duration;
+import org.junit.jupiter.api.Test;
+import org.kicnp.core.Frame;
+import org.kicnp.core.Relation;
+
+class ActionCoordinationTest {
+
+    /** Two behavior frames A and B on a Go stimulus; each commands its robot. */
+    private static Fixture twoFrames(Relation relation) {
+        Fixture f = new Fixture();
+        f.cls("Go", null);
+        f.kb.add(Frame.classFrame("A").priority(1).slot(Fixture.inst("mGo", "Go"))
+                .slot(Fixture.str("onInstantiate", "cmd-a")).build());
+        Frame.Builder b = Frame.classFrame("B").slot(Fixture.inst("mGo", "Go")).slot(Fixture.str("onInstantiate", "cmd-b"));
+        if (relation != null) {
+            b.linkFrom(relation, "A");
+        }
+        f.kb.add(b.build());
+        f.scripts.define("cmd-a", g -> Fixture.call(g, "command", "PINO", "walk", "2m"));
+        f.scripts.define("cmd-b", g -> Fixture.call(g, "command", "AIBO", "lie_down"));
+        return f;
+    }
+
+    @Test
+    void withoutRelation_bothActionsAreSentAtOnce() {
+        Fixture f = twoFrames(null);
+        InferenceEngine e = f.engine();
+        f.assertFact("go", "Go");
+        e.runToQuiescence();
+        assertThat(f.sent).extracting(Action::robot).containsExactly("PINO", "AIBO");
+    }
+
+    @Test
+    void succession_holdsTheFollowerUntilThePredecessorEnds() {
+        Fixture f = twoFrames(Relation.Coordination.SUCCESSION);
+        InferenceEngine e = f.engine();
+        f.assertFact("go", "Go");
+        e.runToQuiescence();
+        assertThat(f.sent).extracting(Action::robot).containsExactly("PINO");
+        String walk = f.sent.getFirst().id();
+        e.actionStarted(walk);
+        e.runToQuiescence();
+        assertThat(f.sent).hasSize(1);
+        e.actionEnded(walk, "arrived");
+        e.runToQuiescence();
+        assertThat(f.sent).extracting(Action::robot).containsExactly("PINO", "AIBO");
+        assertThat(e.actionStatus(walk)).contains(Action.Status.ENDED);
+    }
+
+    @Test
+    void succession_whenPredecessorFails_failsTheFollowerWithTheReason() {
+        Fixture f = twoFrames(Relation.Coordination.SUCCESSION);
+        InferenceEngine e = f.engine();
+        f.assertFact("go", "Go");
+        e.runToQuiescence();
+        String walk = f.sent.getFirst().id();
+        String follower = e.actions().get(1).id();
+        e.actionFailed(walk, "fell over");
+        e.runToQuiescence();
+        assertThat(f.sent).hasSize(1);
+        assertThat(e.actionStatus(follower)).contains(Action.Status.FAILED);
+        assertThat(f.traced(TraceEvent.ActionChanged.class)).anySatisfy(c -> {
+            assertThat(c.actionId()).isEqualTo(follower);
+            assertThat(c.detail()).isEqualTo("predecessor action '" + walk + "' of frame 'A' failed: fell over");
+        });
+    }
+
+    @Test
+    void succession_whenFollowerIsRetractedWhileHeld_itsActionIsFailedNotSent() {
+        Fixture f = twoFrames(Relation.Coordination.SUCCESSION);
+        InferenceEngine e = f.engine();
+        f.assertFact("go", "Go");
+        e.runToQuiescence();
+        String follower = e.actions().get(1).id();
+        e.destroy(e.actions().get(1).instance());
+        e.actionEnded(f.sent.getFirst().id(), "ok");
+        e.runToQuiescence();
+        assertThat(f.sent).hasSize(1);
+        assertThat(e.actionStatus(follower)).contains(Action.Status.FAILED);
+    }
+
+    @Test
+    void timeout_whenNoEndIsReported_timesOutAndFailsTheFollower() {
+        Fixture f = twoFrames(Relation.Coordination.SUCCESSION);
+        InferenceEngine e = f.engine(EngineOptions.defaults().withActionTimeout(Duration.ofSeconds(5)));
+        f.assertFact("go", "Go");
+        e.runToQuiescence();
+        String walk = f.sent.getFirst().id();
+        f.now += 4_000;
+        e.runToQuiescence();
+        assertThat(e.actionStatus(walk)).contains(Action.Status.SENT);
+        f.now += 2_000;
+        e.runToQuiescence();
+        assertThat(e.actionStatus(walk)).contains(Action.Status.TIMED_OUT);
+        assertThat(e.actionStatus(e.actions().get(1).id())).contains(Action.Status.FAILED);
+    }
+
+    @Test
+    void timeoutSlot_onBehaviorFrame_overridesTheDefaultTimeout() {
+        Fixture f = twoFrames(null);
+        f.kb.replace(f.kb.require("A").withSlot(Fixture.num("timeout", 1_000)));
+        InferenceEngine e = f.engine();
+        f.assertFact("go", "Go");
+        e.runToQuiescence();
+        f.now += 1_500;
+        e.runToQuiescence();
+        assertThat(e.actionStatus(f.sent.get(0).id())).contains(Action.Status.TIMED_OUT);
+        assertThat(e.actionStatus(f.sent.get(1).id())).contains(Action.Status.SENT);
+        assertThat(f.traced(TraceEvent.ActionChanged.class)).anySatisfy(c ->
+                assertThat(c.detail()).isEqualTo("no end reported within 1000 ms"));
+    }
+
+    @Test
+    void sendmsgToAPart_isPerformedByTheRobotItsRobotSlotNames() {
+        Fixture f = twoFrames(null);
+        f.cls("Mouth", null);
+        f.assertFact("robovie", "Go");
+        f.assertFact("mouth1", "Mouth", "robot", "Robovie");
+        f.scripts.define("cmd-a", g -> Fixture.call(g, "sendmsg", "mouth1", "hello"));
+        InferenceEngine e = f.engine();
+        e.runToQuiescence();
+        assertThat(f.sent).filteredOn(a -> a.name().equals("say")).isNotEmpty().allSatisfy(a -> {
+            assertThat(a.robot()).isEqualTo("Robovie");
+            assertThat(a.target()).isEqualTo("mouth1");
+        });
+    }
+
+    @Test
+    void synchronization_releasesLinkedActionsTogetherWithOneStartTime() {
+        Fixture f = twoFrames(Relation.Coordination.SYNCHRONIZATION);
+        InferenceEngine e = f.engine();
+        f.assertFact("go", "Go");
+        e.runToQuiescence();
+        assertThat(f.sent).hasSize(2);
+        assertThat(f.sent).extracting(Action::startAt).containsOnly(f.now);
+        assertThat(f.traced(TraceEvent.ActionChanged.class)).extracting(TraceEvent.ActionChanged::status)
+                .containsSubsequence(Action.Status.HELD, Action.Status.HELD, Action.Status.SENT, Action.Status.SENT);
+    }
+
+    @Test
+    void restriction_whileRestrictedActionRuns_otherRobotsWaitInOrder() {
+        Fixture f = twoFrames(null);
+        f.kb.replace(f.kb.require("A").toBuilder().linkTo(Relation.Coordination.RESTRICTION, "B").build());
+        f.kb.add(Frame.classFrame("C").slot(Fixture.inst("mGo", "Go")).slot(Fixture.str("onInstantiate", "cmd-c"))
+                .build());
+        f.scripts.define("cmd-c", g -> Fixture.call(g, "command", "Scout", "bring", "tea"));
+        InferenceEngine e = f.engine();
+        f.assertFact("go", "Go");
+        e.runToQuiescence();
+        assertThat(f.sent).extracting(Action::robot).containsExactly("PINO");
+        e.actionEnded(f.sent.getFirst().id(), "ok");
+        e.runToQuiescence();
+        assertThat(f.sent).extracting(Action::robot).containsExactlyInAnyOrder("PINO", "AIBO", "Scout");
+    }
+
+    @Test
+    void feedback_whenActionEnds_isAnInstanceThatSlotConditionsCanMatch() {
+        Fixture f = twoFrames(null);
+        f.kb.add(InferenceEngine.feedbackClass());
+        f.kb.add(Frame.classFrame("AfterWalk").slot(Fixture.inst("mFb", InferenceEngine.FEEDBACK_CLASS,
+                ".status == \"ended\"")).slot(Fixture.str("onInstantiate", "cmd-b")).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("go", "Go");
+        e.runToQuiescence();
+        e.actionFailed(f.sent.get(1).id(), "battery");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("AfterWalk")).isEmpty();
+        e.actionEnded(f.sent.getFirst().id(), "arrived");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("AfterWalk")).hasSize(1);
+        assertThat(f.kb.value(InferenceEngine.FEEDBACK_CLASS + "-" + f.sent.getFirst().id(), "result"))
+                .map(v -> v.text()).contains("arrived");
+    }
+
+    @Test
+    void feedback_forUnknownAction_isRefusedWithItsId() {
+        Fixture f = twoFrames(null);
+        InferenceEngine e = f.engine();
+        e.actionEnded("a99", "ok");
+        assertThatThrownBy(e::runToQuiescence).isInstanceOf(InferenceException.class)
+                .hasMessage("Action 'a99' is not known to this engine.");
+    }
+}

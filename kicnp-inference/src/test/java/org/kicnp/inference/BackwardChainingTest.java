@@ -1,0 +1,105 @@
+package org.kicnp.inference;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+import org.kicnp.core.Frame;
+import org.kicnp.core.Value;
+
+class BackwardChainingTest {
+
+    @Test
+    void ask_whenNothingHasFired_showsWhatCouldBeDerivedWithoutCreatingAnythingOrRunningScripts() {
+        Fixture f = ForwardChainingTest.chain3();
+        f.kb.replace(f.kb.require("Step1").withSlot(Fixture.str("onInstantiate", "side-effect")));
+        f.assertFact("s1", "Stimulus");
+        f.assertFact("s2", "Stimulus");
+        InferenceEngine e = f.engine();
+        long version = f.kb.version();
+
+        List<Answer> answers = e.ask("Step3", Map.of());
+
+        assertThat(answers).hasSize(2).allSatisfy(a -> {
+            assertThat(a.derivable()).isTrue();
+            assertThat(a.proof().depth()).isEqualTo(3);
+        });
+        assertThat(answers.stream().map(a -> ((Proof.Derivable) a.proof()).slots().get("mIn"))
+                .map(p -> ((Proof.Derivable) p).slots().get("mIn")).map(p -> ((Proof.Derivable) p).slots().get("mIn")))
+                .containsExactlyInAnyOrder(new Proof.Exists("s1", "Stimulus"), new Proof.Exists("s2", "Stimulus"));
+        assertThat(f.kb.version()).isEqualTo(version);
+        assertThat(f.scripts.calls("side-effect")).isZero();
+        assertThat(f.instancesOf("Step1")).isEmpty();
+    }
+
+    @Test
+    void ask_afterForwardChaining_returnsExistingInstancesAndOnlyNewDerivations() {
+        Fixture f = ForwardChainingTest.chain3();
+        InferenceEngine e = f.engine();
+        f.assertFact("s1", "Stimulus");
+        e.runToQuiescence();
+        f.kb.add(Frame.instance("s2", "Stimulus").build());
+
+        List<Answer> answers = e.ask("Step1", Map.of());
+
+        assertThat(answers).hasSize(2);
+        assertThat(answers.get(0).instance()).isPresent();
+        assertThat(answers.get(0).slots()).containsEntry("mIn", "s1");
+        assertThat(answers.get(1).derivable()).isTrue();
+        assertThat(answers.get(1).slots()).containsEntry("mIn", "s2");
+    }
+
+    @Test
+    void ask_withPartialBinding_andConditions_keepsOnlyFittingAnswers() {
+        Fixture f = Fixture.paper();
+        f.kb.add(Frame.classFrame("Taro").parent("KnownUser").build());
+        f.assertFact("mouth1", "Mouth");
+        f.assertFact("u1", "Taro");
+        f.assertFact("u2", "Taro");
+        f.assertFact("n1", "NewUser");
+        InferenceEngine e = f.engine();
+
+        assertThat(e.ask("Greeting", Map.of("mUser", Value.ref("u2")))).singleElement()
+                .satisfies(a -> assertThat(a.slots()).containsEntry("mUser", "u2").containsEntry("mMouth", "mouth1"));
+        assertThat(e.ask("Speech", Map.of())).extracting(Answer::className)
+                .containsExactlyInAnyOrder("AskUserName", "Greeting", "Greeting");
+        assertThat(e.ask("Greeting", Map.of("mUser", Value.ref("n1")))).isEmpty();
+    }
+
+    @Test
+    void prove_throughAJoinCondition_testsTheHypotheticalInstanceSlots() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Order", null);
+        f.kb.add(Frame.classFrame("Known").slot(Fixture.inst("mUser", "User")).build());
+        f.kb.add(Frame.classFrame("Deliver").slot(Fixture.inst("mK", "Known"))
+                .slot(Fixture.inst("mOrder", "Order", ".user == mK.mUser")).build());
+        f.assertFact("u1", "User");
+        f.assertFact("u2", "User");
+        f.assertFact("o1", "Order", "user", "@u2");
+        InferenceEngine e = f.engine();
+
+        List<Proof> proofs = e.prove("Deliver", Map.of());
+
+        assertThat(proofs).singleElement().isInstanceOfSatisfying(Proof.Derivable.class, p -> {
+            assertThat(p.slots().get("mOrder")).isEqualTo(new Proof.Exists("o1", "Order"));
+            assertThat(((Proof.Derivable) p.slots().get("mK")).slots()).containsEntry("mUser",
+                    new Proof.Exists("u2", "User"));
+        });
+    }
+
+    @Test
+    void ask_fromScript_returnsAnswersAsPlainMaps() {
+        Fixture f = ForwardChainingTest.chain3();
+        f.kb.add(Frame.classFrame("Probe").slot(Fixture.inst("mIn", "Step1"))
+                .slot(Fixture.str("onInstantiate", "probe")).build());
+        Object[] seen = new Object[1];
+        f.scripts.define("probe", g -> seen[0] = Fixture.call(g, "ask", "Step3", Map.of()));
+        InferenceEngine e = f.engine();
+        f.assertFact("s1", "Stimulus");
+        e.runToQuiescence();
+        assertThat(seen[0]).asInstanceOf(org.assertj.core.api.InstanceOfAssertFactories.LIST).isNotEmpty()
+                .allSatisfy(m -> assertThat(((Map<?, ?>) m).keySet()).extracting(Object::toString)
+                        .contains("class", "instance", "derivable", "slots"));
+    }
+}

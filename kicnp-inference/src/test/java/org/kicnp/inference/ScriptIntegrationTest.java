@@ -1,0 +1,222 @@
+package org.kicnp.inference;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.kicnp.core.DataType;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Provenance;
+import org.kicnp.core.Slot;
+import org.kicnp.core.Value;
+import org.kicnp.core.xml.KnowledgeLoader;
+import org.kicnp.script.ScriptConfig;
+import org.kicnp.script.ScriptRuntime;
+
+/** The engine with the real GraalJS runtime and the paper's frames as XML. */
+class ScriptIntegrationTest {
+    private static final Path TABLE5 = Path.of("..", "scenarios", "table5");
+    private static ScriptRuntime runtime;
+
+    @BeforeAll
+    static void start() {
+        runtime = ScriptRuntime.create(ScriptConfig.defaults().withTimeLimit(Duration.ofMillis(500)));
+    }
+
+    @AfterAll
+    static void stop() {
+        runtime.close();
+    }
+
+    private final List<Action> sent = new ArrayList<>();
+    private final List<TraceEvent> trace = new ArrayList<>();
+
+    private InferenceEngine engine(KnowledgeBase kb) {
+        InferenceEngine e = InferenceEngine.builder(kb).scripts(new GraalScriptHost(runtime)).actionSink(sent::add)
+                .build();
+        e.addTraceListener(trace::add);
+        return e;
+    }
+
+    private static KnowledgeBase paper() {
+        KnowledgeBase kb = KnowledgeBase.create();
+        KnowledgeLoader.load(kb, List.of(TABLE5));
+        return kb;
+    }
+
+    private static void fact(KnowledgeBase kb, String name, String cls, Slot... slots) {
+        Frame.Builder b = Frame.instance(name, cls).provenance(Provenance.RUNTIME);
+        for (Slot s : slots) {
+            b.slot(s);
+        }
+        kb.add(b.build());
+    }
+
+    @Test
+    void paperScenario_newUserAndMouth_askTheName_knownUserIsGreetedWithThePaperScript() {
+        KnowledgeBase kb = paper();
+        InferenceEngine e = engine(kb);
+        fact(kb, "userA", "NewUser");
+        e.runToQuiescence();
+        // hierarchy.xml gives Mouth a required robot slot, so Mouth is itself a behavior frame (section 4.4: "Mouth"
+        // is activated when a robot connects) and each robot gets a Mouth; RobovieMouth is the declared one.
+        assertThat(kb.instancesOf("AskUserName")).filteredOn(f -> kb.value(f.name(), "mMouth")
+                .equals(java.util.Optional.of(Value.ref("RobovieMouth")))).hasSize(1);
+        assertThat(sent).anySatisfy(a -> {
+            assertThat(a.target()).isEqualTo("RobovieMouth");
+            assertThat(a.robot()).isEqualTo("Robovie");
+            assertThat(a.name()).isEqualTo("say");
+            assertThat(a.args()).containsExactly("How are you! I have never seen you before. What is your name?");
+        });
+
+        kb.add(Frame.classFrame("Taro").parent("KnownUser").provenance(Provenance.LEARNED).build());
+        fact(kb, "userB", "Taro");
+        e.runToQuiescence();
+        assertThat(kb.instancesOf("Greeting")).isNotEmpty().allSatisfy(g ->
+                assertThat(kb.value(g.name(), "mUser")).contains(Value.ref("userB")));
+        assertThat(sent).anySatisfy(a ->
+                assertThat(a.args()).containsExactly("Hi! Nice to meet you. Welcome to visit my room!"));
+    }
+
+    private static KnowledgeBase small(String onInstantiate, String condition) {
+        KnowledgeBase kb = KnowledgeBase.create();
+        kb.add(Frame.classFrame("User").slot(Slot.builder("age", DataType.INTEGER).build())
+                .slot(Slot.builder("name", DataType.STRING).build()).build());
+        kb.add(Frame.classFrame("Mouth").build());
+        kb.add(Frame.classFrame("KnownUser").parent("User").build());
+        Slot.Builder user = Slot.builder("mUser", DataType.INSTANCE).argument("User").required(true);
+        if (condition != null) {
+            user.condition(org.kicnp.core.ConditionParser.parse(condition));
+        }
+        kb.add(Frame.classFrame("Talk").slot(user.build())
+                .slot(Slot.builder("mMouth", DataType.INSTANCE).argument("Mouth").required(true).build())
+                .slot(Slot.ofValue("onInstantiate", DataType.STRING, Value.of(onInstantiate))).build());
+        kb.add(Frame.instance("m1", "Mouth").build());
+        return kb;
+    }
+
+    @Test
+    void scriptCondition_seesTheBindingAsS() {
+        KnowledgeBase kb = small("sendmsg(s.mMouth, 'hello ' + s.mUser.name)", "js: s.mUser.age > 3");
+        InferenceEngine e = engine(kb);
+        fact(kb, "baby", "User", Slot.ofValue("age", DataType.INTEGER, Value.of(2)),
+                Slot.ofValue("name", DataType.STRING, Value.of("Ken")));
+        fact(kb, "kid", "User", Slot.ofValue("age", DataType.INTEGER, Value.of(7)),
+                Slot.ofValue("name", DataType.STRING, Value.of("Ann")));
+        e.runToQuiescence();
+        assertThat(sent).singleElement().satisfies(a -> {
+            assertThat(a.robot()).isEqualTo("m1");
+            assertThat(a.args()).containsExactly("hello Ann");
+        });
+    }
+
+    @Test
+    void scriptApi_createLearnCommandAndLog_takeEffectAfterTheScriptSucceeds() {
+        KnowledgeBase kb = small("""
+                log('registering', s.mUser.name);
+                learn(s.mUser.name + 'User', 'KnownUser', {heard: s.mUser.name});
+                const id = command('PINO', 'shake_hands', ['both']);
+                create('Note', {text: 'hi'});
+                """, null);
+        kb.add(Frame.classFrame("Note").slot(Slot.builder("text", DataType.STRING).build()).build());
+        InferenceEngine e = engine(kb);
+        fact(kb, "u1", "User", Slot.ofValue("name", DataType.STRING, Value.of("Taro")));
+        e.runToQuiescence();
+        assertThat(kb.require("TaroUser").provenance()).isEqualTo(Provenance.LEARNED);
+        assertThat(kb.require("TaroUser").parent()).contains("KnownUser");
+        assertThat(kb.value("TaroUser", "heard")).contains(Value.of("Taro"));
+        assertThat(sent).singleElement().satisfies(a -> {
+            assertThat(a.name()).isEqualTo("shake_hands");
+            assertThat(a.args()).containsExactly("both");
+        });
+        assertThat(kb.instancesOf("Note")).singleElement()
+                .satisfies(n -> assertThat(kb.value(n.name(), "text")).contains(Value.of("hi")));
+    }
+
+    @Test
+    void learn_neverOverwritesADeclaredFrame() {
+        KnowledgeBase kb = small("learn('Mouth', 'KnownUser', {})", null);
+        InferenceEngine e = engine(kb);
+        fact(kb, "u1", "User");
+        e.runToQuiescence();
+        assertThat(kb.require("Mouth").parent()).isEmpty();
+        assertThat(trace).filteredOn(t -> t instanceof TraceEvent.ScriptFailed).singleElement()
+                .satisfies(t -> assertThat(((TraceEvent.ScriptFailed) t).message())
+                        .isEqualTo("learn() cannot replace frame 'Mouth': it was not learned."));
+    }
+
+    @Test
+    void endlessLoop_isStoppedByTheTimeBound_andTheEngineCarriesOn() {
+        KnowledgeBase kb = small("sendmsg(s.mMouth, 'before'); while (true) {}", null);
+        InferenceEngine e = engine(kb);
+        fact(kb, "u1", "User");
+        e.runToQuiescence();
+        assertThat(sent).isEmpty();
+        assertThat(kb.instancesOf("Talk")).isEmpty();
+        assertThat(trace).filteredOn(t -> t instanceof TraceEvent.ScriptFailed).singleElement()
+                .satisfies(t -> assertThat(((TraceEvent.ScriptFailed) t).message()).contains("onInstantiate")
+                        .contains("Talk"));
+        kb.replace(kb.require("Talk").withSlot(Slot.ofValue("onInstantiate", DataType.STRING, Value.of("1"))));
+        fact(kb, "u2", "User");
+        e.runToQuiescence();
+        assertThat(kb.instancesOf("Talk")).hasSize(1);
+    }
+
+    @Test
+    void syntaxError_failsTheFiringWithAMessageNamingFrameAndSlot() {
+        KnowledgeBase kb = small("sendmsg(s.mMouth, 'unclosed);", null);
+        InferenceEngine e = engine(kb);
+        fact(kb, "u1", "User");
+        e.runToQuiescence();
+        assertThat(kb.instancesOf("Talk")).isEmpty();
+        assertThat(trace).filteredOn(t -> t instanceof TraceEvent.ScriptFailed).singleElement()
+                .satisfies(t -> assertThat(((TraceEvent.ScriptFailed) t).message())
+                        .contains("'onInstantiate'").contains("'Talk'"));
+    }
+
+    @Test
+    void demons_onNeededComputesMissingValue_onAddedAndOnRemovedRunWhenSlotChanges() {
+        KnowledgeBase kb = small("1", null);
+        kb.replace(kb.require("User").withSlot(Slot.builder("nick", DataType.STRING)
+                .onNeeded("'nick-' + s.name").onAdded("sendmsg('log', 'added ' + s.nick)")
+                .onRemoved("sendmsg('log', 'removed')").reactive(false).build()));
+        kb.replace(kb.require("User").withSlot(Slot.builder("mood", DataType.STRING).onNeeded("void 0").build()));
+        InferenceEngine e = engine(kb);
+        fact(kb, "u1", "User", Slot.ofValue("name", DataType.STRING, Value.of("Ann")));
+        e.runToQuiescence();
+        assertThat(e.read("u1", "nick")).contains(Value.of("nick-Ann"));
+        assertThat(e.read("u1", "name")).contains(Value.of("Ann"));
+        assertThat(e.read("u1", "age")).isEmpty();
+        assertThat(e.read("u1", "mood")).isEmpty();
+        int fired = trace.stream().filter(t -> t instanceof TraceEvent.Fired).toList().size();
+
+        kb.replace(kb.require("u1").withSlot(Slot.ofValue("nick", DataType.STRING, Value.of("A"))));
+        e.runToQuiescence();
+        kb.replace(kb.require("u1").toBuilder().removeSlot("nick").build());
+        e.runToQuiescence();
+
+        assertThat(sent).extracting(a -> a.args().getFirst()).containsExactly("added A", "removed");
+        assertThat(trace).filteredOn(t -> t instanceof TraceEvent.FactChanged).isEmpty();
+        assertThat(trace.stream().filter(t -> t instanceof TraceEvent.Fired).toList()).hasSize(fired);
+    }
+
+    @Test
+    void reactiveSlot_whenChanged_isMatchedAgain() {
+        KnowledgeBase kb = small("1", ".age >= 18");
+        InferenceEngine e = engine(kb);
+        fact(kb, "u1", "User", Slot.ofValue("age", DataType.INTEGER, Value.of(17)));
+        e.runToQuiescence();
+        assertThat(kb.instancesOf("Talk")).isEmpty();
+        kb.replace(kb.require("u1").withSlot(Slot.ofValue("age", DataType.INTEGER, Value.of(18))));
+        e.runToQuiescence();
+        assertThat(kb.instancesOf("Talk")).hasSize(1);
+        assertThat(e.ask("Talk", Map.of())).hasSize(1);
+    }
+}

@@ -1,0 +1,215 @@
+package org.kicnp.inference;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+import org.kicnp.core.BatchRejectedException;
+import org.kicnp.core.DataType;
+import org.kicnp.core.Frame;
+import org.kicnp.core.Slot;
+import org.kicnp.core.Value;
+
+class TruthMaintenanceTest {
+
+    private static Fixture chainWithOnDestroy(List<String> destroyed) {
+        Fixture f = ForwardChainingTest.chain3();
+        for (String step : List.of("Step1", "Step2", "Step3")) {
+            f.kb.replace(f.kb.require(step).withSlot(Fixture.str("onDestroy", "bye")));
+        }
+        f.scripts.define("bye", g -> destroyed.add((String) Fixture.view(g).get("$name")));
+        return f;
+    }
+
+    @Test
+    void destroy_whenStimulusGoes_retractsEverythingDerivedFromItAndRunsOnDestroy() {
+        List<String> destroyed = new ArrayList<>();
+        Fixture f = chainWithOnDestroy(destroyed);
+        InferenceEngine e = f.engine();
+        f.assertFact("s1", "Stimulus");
+        e.runToQuiescence();
+        var derived = new ArrayList<String>();
+        for (String c : List.of("Step1", "Step2", "Step3")) {
+            derived.addAll(f.instancesOf(c));
+        }
+
+        var removed = e.destroy("s1");
+
+        assertThat(removed).containsExactlyInAnyOrderElementsOf(concat("s1", derived));
+        assertThat(f.instancesOf("Step1")).isEmpty();
+        assertThat(f.instancesOf("Step3")).isEmpty();
+        assertThat(destroyed).containsExactlyInAnyOrderElementsOf(derived);
+        assertThat(f.traced(TraceEvent.Retracted.class)).extracting(TraceEvent.Retracted::instance)
+                .containsAll(derived);
+    }
+
+    @Test
+    void removeThroughKnowledgeBase_whenDerivedInstancesReferToIt_isRefusedAllOrNothing() {
+        Fixture f = ForwardChainingTest.chain3();
+        InferenceEngine e = f.engine();
+        f.assertFact("s1", "Stimulus");
+        e.runToQuiescence();
+        assertThatThrownBy(() -> f.kb.remove("s1")).isInstanceOf(BatchRejectedException.class);
+        assertThat(f.instancesOf("Step3")).hasSize(1);
+    }
+
+    @Test
+    void destroyMiddle_retractsOnlyWhatRestsOnIt_andRefractionKeepsItFromComingBack() {
+        Fixture f = ForwardChainingTest.chain3();
+        InferenceEngine e = f.engine();
+        f.assertFact("s1", "Stimulus");
+        e.runToQuiescence();
+        String step2 = f.instancesOf("Step2").getFirst();
+        e.destroy(step2);
+        assertThat(f.instancesOf("Step1")).hasSize(1);
+        assertThat(f.instancesOf("Step2")).isEmpty();
+        assertThat(f.instancesOf("Step3")).isEmpty();
+    }
+
+    @Test
+    void conditionChange_whenSlotNoLongerSatisfiesCondition_retractsAndRefiresWhenItHoldsAgain() {
+        Fixture f = new Fixture();
+        f.cls("Order", null);
+        f.kb.add(Frame.classFrame("ServeTea").slot(Fixture.inst("mOrder", "Order", ".drink == \"tea\"")).build());
+        f.kb.add(Frame.classFrame("Pour").slot(Fixture.inst("mServe", "ServeTea")).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("o1", "Order", "drink", "tea");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Pour")).hasSize(1);
+
+        f.kb.replace(f.kb.require("o1").withSlot(Fixture.str("drink", "coffee")));
+        e.runToQuiescence();
+        assertThat(f.instancesOf("ServeTea")).isEmpty();
+        assertThat(f.instancesOf("Pour")).isEmpty();
+        assertThat(f.traced(TraceEvent.Retracted.class)).anySatisfy(r ->
+                assertThat(r.reason()).contains("condition of slot 'mOrder' of 'ServeTea' no longer holds"));
+
+        f.kb.replace(f.kb.require("o1").withSlot(Fixture.str("drink", "tea")));
+        e.runToQuiescence();
+        assertThat(f.instancesOf("ServeTea")).hasSize(1);
+        assertThat(f.instancesOf("Pour")).hasSize(1);
+    }
+
+    @Test
+    void joinChange_whenPartnerValueChanges_retractsTheJoinedInstance() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Order", null);
+        f.kb.add(Frame.classFrame("Deliver").slot(Fixture.inst("mUser", "User"))
+                .slot(Fixture.inst("mOrder", "Order", ".who == mUser.name")).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("u1", "User", "name", "Ann");
+        f.assertFact("o1", "Order", "who", "Ann");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Deliver")).hasSize(1);
+        f.kb.replace(f.kb.require("u1").withSlot(Fixture.str("name", "Eve")));
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Deliver")).isEmpty();
+    }
+
+    @Test
+    void hotEdit_whenFrameConditionChanges_existingInstancesAreRecheckedAtOnce() {
+        Fixture f = new Fixture();
+        f.cls("Order", null);
+        f.kb.add(Frame.classFrame("Serve").slot(Fixture.inst("mOrder", "Order")).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("o1", "Order", "drink", "tea");
+        f.assertFact("o2", "Order", "drink", "coffee");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Serve")).hasSize(2);
+
+        f.kb.replace(f.kb.require("Serve").withSlot(Fixture.inst("mOrder", "Order", ".drink == \"tea\"")));
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Serve")).singleElement()
+                .satisfies(n -> assertThat(f.kb.value(n, "mOrder")).contains(Value.ref("o1")));
+    }
+
+    @Test
+    void classEdit_whenInheritedDefaultChanges_rechecksItsInstances() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("Order").slot(Slot.builder("drink", DataType.STRING).defaultValue(Value.of("tea"))
+                .build()).build());
+        f.kb.add(Frame.classFrame("ServeTea").slot(Fixture.inst("mOrder", "Order", ".drink == \"tea\"")).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("o1", "Order");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("ServeTea")).hasSize(1);
+        f.kb.replace(f.kb.require("Order").withSlot(Slot.builder("drink", DataType.STRING)
+                .defaultValue(Value.of("coffee")).build()));
+        e.runToQuiescence();
+        assertThat(f.instancesOf("ServeTea")).isEmpty();
+    }
+
+    @Test
+    void classEdit_whenClassMovesUnderKnownUser_itsInstancesAreGreeted() {
+        Fixture f = Fixture.paper();
+        f.kb.add(Frame.classFrame("Taro").parent("User").build());
+        InferenceEngine e = f.engine();
+        f.assertFact("mouth1", "Mouth");
+        f.assertFact("face1", "Taro");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Greeting")).isEmpty();
+        f.kb.replace(f.kb.require("Taro").toBuilder().parent("KnownUser").build());
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Greeting")).hasSize(1);
+    }
+
+    @Test
+    void hotEdit_whenNewBehaviorFrameIsAdded_matchesInstancesAlreadyThere() {
+        Fixture f = Fixture.paper();
+        InferenceEngine e = f.engine();
+        f.assertFact("mouth1", "Mouth");
+        f.assertFact("userA", "NewUser");
+        e.runToQuiescence();
+        f.kb.add(Frame.classFrame("FaceDetection").parent("Behaviors").slot(Fixture.inst("mUser", "User")).build());
+        assertThat(e.runToQuiescence()).isEqualTo(1);
+        assertThat(f.instancesOf("FaceDetection")).hasSize(1);
+    }
+
+    @Test
+    void failingScript_failsThatFiring_discardsItsEffects_andTheEngineCarriesOn() {
+        Fixture f = Fixture.paper();
+        f.scripts.define("ask-name", g -> {
+            Fixture.call(g, "sendmsg", Fixture.view(g).get("mMouth"), "never sent");
+            Fixture.call(g, "create", "KnownUser", Map.of());
+            throw new IllegalStateException("Script in slot 'onInstantiate' of frame 'AskUserName' ran out of time.");
+        });
+        InferenceEngine e = f.engine();
+        f.assertFact("mouth1", "Mouth");
+        f.assertFact("userA", "NewUser");
+        e.runToQuiescence();
+        assertThat(f.sent).isEmpty();
+        assertThat(f.instancesOf("KnownUser")).isEmpty();
+        assertThat(f.instancesOf("AskUserName")).isEmpty();
+        assertThat(f.traced(TraceEvent.ScriptFailed.class)).singleElement().satisfies(x ->
+                assertThat(x.message()).contains("ran out of time"));
+        f.assertFact("userB", "NewUser");
+        f.scripts.define("ask-name", g -> null);
+        assertThat(e.runToQuiescence()).isEqualTo(1);
+        assertThat(e.runToQuiescence()).isZero();
+    }
+
+    @Test
+    void scriptCreatedInstance_restsOnTheInstanceWhoseScriptCreatedIt() {
+        Fixture f = Fixture.paper();
+        f.kb.add(Frame.classFrame("Note").slot(Slot.builder("text", DataType.STRING).build()).build());
+        f.scripts.define("ask-name", g -> Fixture.call(g, "create", "Note", Map.of("text", "asked")));
+        InferenceEngine e = f.engine();
+        f.assertFact("mouth1", "Mouth");
+        f.assertFact("userA", "NewUser");
+        e.runToQuiescence();
+        String note = f.instancesOf("Note").getFirst();
+        assertThat(f.kb.value(note, "text")).contains(Value.of("asked"));
+        assertThat(e.why(note).stimuli()).containsExactlyInAnyOrder("userA", "mouth1");
+        e.destroy("userA");
+        assertThat(f.instancesOf("Note")).isEmpty();
+    }
+
+    private static List<String> concat(String first, List<String> rest) {
+        List<String> out = new ArrayList<>(List.of(first));
+        out.addAll(rest);
+        return out;
+    }
+}
