@@ -1,0 +1,46 @@
+package org.kicnp.language;
+
+import java.util.ArrayList;
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+
+/**
+ * What the parser knows about one sentence while it reads it: the text, the expectation, the robot addressed by a
+ * vocative, and whether the sentence corrects an earlier one or was polite. Owned by one parse call, never shared.
+ */
+final class Utterance {
+    final String text;
+    final Expectation expectation;
+    Optional<Filler> vocative = Optional.empty();
+    boolean correction;
+    boolean polite;
+    boolean thanked;
+    private final List<String> reasons = new ArrayList<>();
+
+    Utterance(String text, Expectation expectation) {
+        this.text = text;
+        this.expectation = expectation;
+    }
+
+    /** Remembers why a rule could not apply; the first reason is the one reported. */
+    void miss(String reason) {
+        reasons.add(reason);
+    }
+
+    Optional<String> firstReason() {
+        return reasons.stream().findFirst();
+    }
+
+    /** A frame of the act with the vocative as agent (commands, requests) or recipient (everything else). */
+    CaseFrame frame(Act act, Map<Case, Filler> cases) {
+        Map<Case, Filler> all = new EnumMap<>(Case.class);
+        all.putAll(cases);
+        vocative.ifPresent(v -> {
+            Case c = act == Act.ROBOT_COMMAND || act == Act.DRINK_REQUEST ? Case.AGENT : Case.RECIPIENT;
+            all.put(c, v);
+        });
+        return new CaseFrame(act, all, correction, text);
+    }
+}
