@@ -54,7 +54,7 @@ final class CaseGrammar {
         Optional<Verb> found = subject == Subject.I ? lexicon.firstPersonVerb(verbToken.word())
                 : lexicon.verb(verbToken.word());
         if (found.isEmpty()) {
-            u.miss("'" + verbToken.surface() + "' is not a verb the lexicon knows"
+            u.missWeakly("'" + verbToken.surface() + "' is not a verb the lexicon knows"
                     + (subject == Subject.I ? " after 'I'." : "."));
             return Optional.empty();
         }
@@ -87,7 +87,14 @@ final class CaseGrammar {
                     return miss(u, "After '" + prep + "' a noun phrase is missing in '" + NounPhrases.text(t, 0, t.size()) + "'.");
                 }
                 Case c = caseFor(prep, np.get(), verb);
-                if (!put(cases, c, np.get().head(), verb, u)) {
+                Filler head = np.get().head();
+                if (c == Case.INSTRUMENT && !head.known() && !verb.allowed().contains(c)
+                        && verb.allowed().contains(Case.CO_AGENT)) { // "shake hands with ken": a name, said lower-case
+                    c = Case.CO_AGENT;
+                    head = Filler.known(head.text(), SemanticClass.PERSON,
+                            Character.toUpperCase(head.value().charAt(0)) + head.value().substring(1));
+                }
+                if (!put(cases, c, head, verb, u)) {
                     return false;
                 }
                 i = np.get().end();
@@ -121,7 +128,9 @@ final class CaseGrammar {
         }
         for (Case c : verb.required()) {
             if (!cases.containsKey(c)) {
-                return miss(u, "'" + verb.lemma() + "' needs a " + c.name().toLowerCase(java.util.Locale.ROOT) + ".");
+                String name = c.name().toLowerCase(java.util.Locale.ROOT).replace('_', '-');
+                return miss(u, "'" + verb.lemma() + "' needs " + ("aeiou".indexOf(name.charAt(0)) >= 0 ? "an " : "a ")
+                        + name + ".");
             }
         }
         return true;
@@ -218,7 +227,10 @@ final class CaseGrammar {
             }
         }
         Optional<NounPhrases.Np> np = phrases.read(t.subList(0, to), from, 0);
-        if (np.isEmpty() || np.get().end() != to) {
+        if (np.isEmpty()) {
+            return Optional.empty();
+        }
+        if (np.get().end() != to && !beneficiary(t.subList(0, to), np.get().end(), cases)) {
             return Optional.empty();
         }
         cases.put(Case.OBJECT, np.get().head());
@@ -228,6 +240,19 @@ final class CaseGrammar {
             return Optional.empty();
         }
         return drinkRequest(cases, u);
+    }
+
+    /** "Tea for Ken", "Coffee for me": a recipient after the drink, and nothing more. */
+    private boolean beneficiary(List<Token> t, int at, Map<Case, Filler> cases) {
+        if (!t.get(at).word().equals("for")) {
+            return false;
+        }
+        Optional<NounPhrases.Np> np = phrases.read(t, at + 1, 0);
+        if (np.isEmpty() || np.get().end() != t.size() || !np.get().animate()) {
+            return false;
+        }
+        cases.put(Case.RECIPIENT, np.get().head());
+        return true;
     }
 
     /** The index where "would be nice", "is fine", "sounds good" starts, or -1. */

@@ -59,11 +59,15 @@ public final class Lexicon {
     private final Map<String, Noun> nouns;
     private final Map<String, Verb> verbs;
     private final Map<String, Case> markers;
+    private final Set<String> particles;
 
     private Lexicon(Map<String, Noun> nouns, Map<String, Verb> verbs, Map<String, Case> markers) {
         this.nouns = Map.copyOf(nouns);
         this.verbs = Map.copyOf(verbs);
         this.markers = Map.copyOf(markers);
+        Set<String> p = new HashSet<>();
+        verbs.values().forEach(v -> p.addAll(v.particles()));
+        this.particles = Set.copyOf(p);
     }
 
     /** A noun by its lower-case form, also found through a plural -s ("cups", "teas"). */
@@ -100,6 +104,7 @@ public final class Lexicon {
     /** True if the word has any entry or is one the rules use, so it cannot be a proper name. */
     public boolean isKnownWord(String word) {
         return noun(word).isPresent() || verbs.containsKey(word) || verbs.containsKey("i:" + word)
+                || particles.contains(word)
                 || markers.containsKey(word)
                 || DETERMINERS.contains(word) || NUMBERS.containsKey(word) || MODIFIERS.contains(word)
                 || DIRECTIONS.contains(word) || TIMES.containsKey(word) || EVALUATIVES.contains(word)

@@ -181,12 +181,15 @@ public final class SentenceParser {
     }
 
     private String reason(List<Token> clause, Utterance u) {
+        if (u.firstReason().isPresent()) {
+            return u.firstReason().get();
+        }
         for (Token t : clause) {
             if (t.isAlphabetic() && !lexicon.isKnownWord(t.word())) {
                 return "The word '" + t.surface() + "' is not in the lexicon, and no rule of the grammar reads '"
                         + u.text + "'.";
             }
         }
-        return u.firstReason().orElse("No rule of the grammar reads '" + u.text + "'.");
+        return u.firstWeakReason().orElse("No rule of the grammar reads '" + u.text + "'.");
     }
 }

@@ -18,6 +18,7 @@ final class Utterance {
     boolean polite;
     boolean thanked;
     private final List<String> reasons = new ArrayList<>();
+    private final List<String> weakReasons = new ArrayList<>();
 
     Utterance(String text, Expectation expectation) {
         this.text = text;
@@ -29,8 +30,17 @@ final class Utterance {
         reasons.add(reason);
     }
 
+    /** Remembers that a rule did not even start (no verb where one was looked for): reported only if nothing else is. */
+    void missWeakly(String reason) {
+        weakReasons.add(reason);
+    }
+
     Optional<String> firstReason() {
         return reasons.stream().findFirst();
+    }
+
+    Optional<String> firstWeakReason() {
+        return weakReasons.stream().findFirst();
     }
 
     /** A frame of the act with the vocative as agent (commands, requests) or recipient (everything else). */
