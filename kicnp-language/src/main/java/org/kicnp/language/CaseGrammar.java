@@ -81,10 +81,10 @@ final class CaseGrammar {
             String w = t.get(i).word();
             int prepLength = prepositionLength(t, i);
             if (prepLength > 0) {
-                String prep = NounPhrases.text(t, i, i + prepLength).toLowerCase(java.util.Locale.ROOT);
+                String prep = FixedExpressions.words(t, i, i + prepLength);
                 Optional<NounPhrases.Np> np = phrases.read(t, i + prepLength, 0);
                 if (np.isEmpty()) {
-                    return miss(u, "After '" + prep + "' a noun phrase is missing in '" + NounPhrases.text(t, 0, t.size()) + "'.");
+                    return miss(u, "After '" + prep + "' a noun phrase is missing in '" + u.text + "'.");
                 }
                 Case c = caseFor(prep, np.get(), verb);
                 Filler head = np.get().head();
@@ -138,7 +138,7 @@ final class CaseGrammar {
 
     private int prepositionLength(List<Token> t, int i) {
         for (int n = 3; n >= 1; n--) {
-            if (i + n <= t.size() && lexicon.marker(NounPhrases.text(t, i, i + n).toLowerCase(java.util.Locale.ROOT)).isPresent()) {
+            if (i + n <= t.size() && lexicon.marker(FixedExpressions.words(t, i, i + n)).isPresent()) {
                 return n;
             }
         }

@@ -50,7 +50,8 @@ class ParserAgentTest {
     @Test
     void register_putsTheLanguageClassesIntoTheKnowledgeBase() {
         assertThat(kb.contains("Utterance")).isTrue();
-        assertThat(kb.children("Utterance")).extracting(org.kicnp.core.Frame::name).contains("SaidDrinkRequest", "SaidName", "SaidUnknown");
+        assertThat(kb.children("Utterance")).extracting(org.kicnp.core.Frame::name)
+                .contains("SaidDrinkRequest", "SaidName", "SaidUnknown");
     }
 
     @Test

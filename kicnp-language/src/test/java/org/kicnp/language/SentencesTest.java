@@ -93,7 +93,8 @@ class SentencesTest {
         CaseFrame frame = ((ParseResult.Parsed) result).frame();
         assertThat(frame.act()).as(row + " act; got " + frame).isEqualTo(act);
         assertThat(frame.correction()).as(row + " correction; got " + frame).isEqualTo(correction);
-        assertThat(frame.cases().keySet()).as(row + " cases; got " + frame).containsExactlyInAnyOrderElementsOf(expected.keySet());
+        assertThat(frame.cases().keySet()).as(row + " cases; got " + frame)
+                .containsExactlyInAnyOrderElementsOf(expected.keySet());
         expected.forEach((c, e) -> {
             Filler f = frame.cases().get(c);
             assertThat(f.value()).as(row + " value of " + c).isEqualTo(e.value());
