@@ -28,7 +28,7 @@ final class CaseGrammar {
     }
 
     /** A clause with a verb: a command, or a request with a verb of wanting or of bringing. */
-    Optional<CaseFrame> verbClause(List<Token> t, Utterance u) {
+    Optional<CaseFrame> verbClause(List<Token> t, Reading u) {
         int i = 0;
         Subject subject = Subject.NONE;
         if (t.size() > 2 && ASKING.contains(t.get(0).word()) && t.get(1).word().equals("you")) {
@@ -75,7 +75,7 @@ final class CaseGrammar {
         return decide(verb, subject, cases, u);
     }
 
-    private boolean arguments(List<Token> t, int start, Verb verb, Map<Case, Filler> cases, Utterance u) {
+    private boolean arguments(List<Token> t, int start, Verb verb, Map<Case, Filler> cases, Reading u) {
         int i = start;
         while (i < t.size()) {
             String w = t.get(i).word();
@@ -156,7 +156,7 @@ final class CaseGrammar {
         return c;
     }
 
-    private static boolean put(Map<Case, Filler> cases, Case c, Filler f, Verb verb, Utterance u) {
+    private static boolean put(Map<Case, Filler> cases, Case c, Filler f, Verb verb, Reading u) {
         if (!verb.allowed().contains(c)) {
             return miss(u, "'" + verb.lemma() + "' takes no " + c.name().toLowerCase(java.util.Locale.ROOT)
                     + " such as '" + f.text() + "'.");
@@ -168,7 +168,7 @@ final class CaseGrammar {
         return true;
     }
 
-    private Optional<CaseFrame> decide(Verb verb, Subject subject, Map<Case, Filler> cases, Utterance u) {
+    private Optional<CaseFrame> decide(Verb verb, Subject subject, Map<Case, Filler> cases, Reading u) {
         switch (verb.kind()) {
             case WANT, CORRECT -> {
                 if (subject != Subject.I) {
@@ -207,7 +207,7 @@ final class CaseGrammar {
     }
 
     /** The verbless requests: a noun phrase alone, "X would be nice", "make it X", "how about X". */
-    Optional<CaseFrame> verblessRequest(List<Token> t, Utterance u) {
+    Optional<CaseFrame> verblessRequest(List<Token> t, Reading u) {
         Map<Case, Filler> cases = new EnumMap<>(Case.class);
         boolean clearly = u.polite || u.correction || u.expectation == Expectation.DRINK;
         int from = 0;
@@ -270,7 +270,7 @@ final class CaseGrammar {
         return -1;
     }
 
-    private static Optional<CaseFrame> drinkRequest(Map<Case, Filler> cases, Utterance u) {
+    private static Optional<CaseFrame> drinkRequest(Map<Case, Filler> cases, Reading u) {
         Filler object = cases.get(Case.OBJECT);
         if (object.known() && object.semanticClass() != SemanticClass.DRINK) {
             u.miss("'" + object.text() + "' is not something to drink.");
@@ -282,7 +282,7 @@ final class CaseGrammar {
         return Optional.of(u.frame(Act.DRINK_REQUEST, cases));
     }
 
-    private static boolean miss(Utterance u, String reason) {
+    private static boolean miss(Reading u, String reason) {
         u.miss(reason);
         return false;
     }

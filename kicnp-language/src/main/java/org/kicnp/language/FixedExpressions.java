@@ -42,14 +42,14 @@ final class FixedExpressions {
         return NO.contains(words) ? Optional.of("no") : Optional.empty();
     }
 
-    Optional<CaseFrame> answer(List<Token> t, Utterance u) {
+    Optional<CaseFrame> answer(List<Token> t, Reading u) {
         String words = words(t, 0, t.size());
         return polarity(words).map(p -> u.frame(Act.YES_NO_ANSWER,
                 Map.of(Case.POLARITY, Filler.known(NounPhrases.text(t, 0, t.size()), SemanticClass.ANSWER, p))));
     }
 
     /** A greeting, optionally followed by a robot's name ("Hello Robovie"). */
-    Optional<CaseFrame> greeting(List<Token> t, Utterance u) {
+    Optional<CaseFrame> greeting(List<Token> t, Reading u) {
         int end = t.size();
         Optional<String> robot = lexicon.robot(t.getLast().word());
         if (robot.isPresent() && end > 1) {
@@ -68,12 +68,12 @@ final class FixedExpressions {
     }
 
     /** "Thank you" alone. */
-    static CaseFrame thanks(Utterance u) {
+    static CaseFrame thanks(Reading u) {
         return u.frame(Act.GREETING, Map.of(Case.ACTION, Filler.known("thank you", SemanticClass.ACTION, "thanks")));
     }
 
     /** A name statement; a bare name only when the dialogue expects one. */
-    Optional<CaseFrame> name(List<Token> t, Utterance u) {
+    Optional<CaseFrame> name(List<Token> t, Reading u) {
         for (String before : NAME_BEFORE) {
             int n = before.split(" ").length;
             if (t.size() > n && words(t, 0, n).equals(before)) {
@@ -95,7 +95,7 @@ final class FixedExpressions {
         return u.expectation == Expectation.NAME ? nameAt(t, 0, t.size(), u) : Optional.empty();
     }
 
-    private Optional<CaseFrame> nameAt(List<Token> t, int from, int to, Utterance u) {
+    private Optional<CaseFrame> nameAt(List<Token> t, int from, int to, Reading u) {
         if (to - from < 1 || to - from > 3) {
             return Optional.empty();
         }

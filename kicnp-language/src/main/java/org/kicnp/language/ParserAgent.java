@@ -2,6 +2,8 @@ package org.kicnp.language;
 
 import static java.util.Objects.requireNonNull;
 
+import java.util.ArrayDeque;
+import java.util.Deque;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.atomic.AtomicLong;
@@ -21,7 +23,8 @@ import org.slf4j.LoggerFactory;
  * to match, then relays back to the speaker {@code understood} (body: the instance's name) or, when it did not
  * understand, asserts a {@code SaidUnknown} instance and relays {@code say-again} with the polite reply. It
  * registers the class frames of {@link LanguageFrames} as its capabilities, so a knowledge base has them whenever
- * the parser is connected.
+ * the parser is connected. It keeps the latest {@value #KEEP} instances it asserted and destroys older ones, so a long
+ * conversation does not fill the knowledge base.
  */
 public final class ParserAgent extends AgentBase {
     /** The subject of a relay carrying a sentence. */
@@ -31,10 +34,15 @@ public final class ParserAgent extends AgentBase {
     /** The subject of the reply asking the speaker to say it again. */
     public static final String SAY_AGAIN = "say-again";
 
+    /** How many of its instances the agent leaves in the knowledge base. */
+    public static final int KEEP = 64;
+
     private static final Logger LOG = LoggerFactory.getLogger(ParserAgent.class);
 
     private final SentenceParser parser;
     private final AtomicLong counter = new AtomicLong();
+    /** Touched only on the SDK's single event thread. */
+    private final Deque<String> asserted = new ArrayDeque<>();
 
     public ParserAgent(AgentOptions options, SentenceParser parser) {
         super(options);
@@ -58,17 +66,32 @@ public final class ParserAgent extends AgentBase {
             switch (parser.parse(relay.body(), expectation)) {
                 case ParseResult.Parsed p -> {
                     assertFrame(CaseFrames.toFrame(p.frame(), instance, speaker));
+                    remember(instance);
                     LOG.debug("'{}' said '{}': {}", speaker, relay.body(), p.frame());
                     relayTo(speaker, UNDERSTOOD, instance);
                 }
                 case ParseResult.NotUnderstood n -> {
                     assertFrame(CaseFrames.unknown(n, relay.body(), instance, speaker));
+                    remember(instance);
                     LOG.debug("Did not understand '{}' from '{}': {}", relay.body(), speaker, n.reason());
                     relayTo(speaker, SAY_AGAIN, n.reply());
                 }
             }
         } catch (AgentException e) {
             LOG.warn("Could not handle '{}' from '{}': {}", relay.body(), speaker, e.getMessage());
+        }
+    }
+
+    /** Keeps the instance's name, destroying the oldest beyond {@link #KEEP}. */
+    private void remember(String instance) {
+        asserted.addLast(instance);
+        while (asserted.size() > KEEP) {
+            String old = asserted.removeFirst();
+            try {
+                destroy(old);
+            } catch (AgentException e) { // a behaviour frame may have consumed it already
+                LOG.debug("Could not destroy '{}': {}", old, e.getMessage());
+            }
         }
     }
 

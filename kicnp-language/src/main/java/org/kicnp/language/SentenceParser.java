@@ -48,7 +48,7 @@ public final class SentenceParser {
     public ParseResult parse(String sentence, Expectation expectation) {
         requireNonNull(sentence, "sentence");
         requireNonNull(expectation, "expectation");
-        Utterance u = new Utterance(sentence.strip(), expectation);
+        Reading u = new Reading(sentence.strip(), expectation);
         List<List<Token>> segments = segments(tokenizer.tokenize(sentence));
         if (segments.isEmpty()) {
             return ParseResult.NotUnderstood.because("Nothing was said.");
@@ -69,7 +69,7 @@ public final class SentenceParser {
                 .orElseGet(() -> ParseResult.NotUnderstood.because(reason(clause, u)));
     }
 
-    private Optional<CaseFrame> clause(List<Token> t, Utterance u) {
+    private Optional<CaseFrame> clause(List<Token> t, Reading u) {
         Optional<CaseFrame> f = fixed.answer(t, u);
         if (f.isEmpty()) {
             f = fixed.greeting(t, u);
@@ -104,7 +104,7 @@ public final class SentenceParser {
     }
 
     /** Takes vocatives, politeness and correction markers off the segments and joins what is left into one clause. */
-    private List<Token> surroundings(List<List<Token>> segments, Utterance u) {
+    private List<Token> surroundings(List<List<Token>> segments, Reading u) {
         List<List<Token>> rest = new ArrayList<>();
         for (int s = 0; s < segments.size(); s++) {
             List<Token> seg = strip(segments.get(s), u);
@@ -124,7 +124,7 @@ public final class SentenceParser {
             }
         }
         if (rest.size() > 1) { // "Hi, I'm Ken", "Yes, I'd like tea": the greeting or the yes adds nothing
-            rest.removeIf(seg -> fixed.greeting(seg, new Utterance("", Expectation.NONE)).isPresent());
+            rest.removeIf(seg -> fixed.greeting(seg, new Reading("", Expectation.NONE)).isPresent());
         }
         if (rest.size() > 1 && FixedExpressions.polarity(FixedExpressions.words(rest.getFirst(), 0,
                 rest.getFirst().size())).filter("yes"::equals).isPresent()) {
@@ -145,7 +145,7 @@ public final class SentenceParser {
     }
 
     /** "AIBO sit down", "sit down AIBO": a robot's name next to a verb is a vocative even without a comma. */
-    private void vocativeWithoutComma(List<Token> clause, Utterance u) {
+    private void vocativeWithoutComma(List<Token> clause, Reading u) {
         if (u.vocative.isPresent() || clause.size() < 2) {
             return;
         }
@@ -163,7 +163,7 @@ public final class SentenceParser {
     }
 
     /** Drops fillers at the start, every "please", and "thanks"/"thank you". */
-    private static List<Token> strip(List<Token> seg, Utterance u) {
+    private static List<Token> strip(List<Token> seg, Reading u) {
         List<Token> out = new ArrayList<>();
         for (int i = 0; i < seg.size(); i++) {
             String w = seg.get(i).word();
@@ -180,7 +180,7 @@ public final class SentenceParser {
         return out;
     }
 
-    private String reason(List<Token> clause, Utterance u) {
+    private String reason(List<Token> clause, Reading u) {
         if (u.firstReason().isPresent()) {
             return u.firstReason().get();
         }

@@ -100,6 +100,18 @@ class ParserAgentTest {
         assertThat(kb.value(last.body(), "action")).contains(Value.of("sit"));
     }
 
+    @Test
+    void longConversation_keepsOnlyTheLatestInstances() {
+        int n = ParserAgent.KEEP + 3;
+        for (int i = 0; i < n; i++) {
+            alice.relayTo("parser", ParserAgent.SUBJECT, i % 2 == 0 ? "Tea, please" : "blorf");
+        }
+        awaitReply(n - 1);
+        assertThat(kb.instancesOf("Utterance")).hasSize(ParserAgent.KEEP);
+        assertThat(kb.contains("said-alice-1")).isFalse();
+        assertThat(kb.contains("said-alice-" + n)).isTrue();
+    }
+
     private Message.Relay awaitReply(int index) {
         await("reply " + index + " reaches alice", () -> alice.relays().size() > index);
         return alice.relays().get(index);

@@ -10,7 +10,7 @@ import java.util.Optional;
  * What the parser knows about one sentence while it reads it: the text, the expectation, the robot addressed by a
  * vocative, and whether the sentence corrects an earlier one or was polite. Owned by one parse call, never shared.
  */
-final class Utterance {
+final class Reading {
     final String text;
     final Expectation expectation;
     Optional<Filler> vocative = Optional.empty();
@@ -20,7 +20,7 @@ final class Utterance {
     private final List<String> reasons = new ArrayList<>();
     private final List<String> weakReasons = new ArrayList<>();
 
-    Utterance(String text, Expectation expectation) {
+    Reading(String text, Expectation expectation) {
         this.text = text;
         this.expectation = expectation;
     }
