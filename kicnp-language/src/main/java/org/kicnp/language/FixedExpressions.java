@@ -25,8 +25,8 @@ final class FixedExpressions {
             Map.entry("see you later", "goodbye"), Map.entry("good night", "goodbye"));
     private static final List<String> NAME_BEFORE = List.of("my name is", "the name is", "name is", "i am called",
             "i am", "you can call me", "call me", "they call me", "people call me", "everyone calls me",
-            "friends call me", "it is me", "it is", "this is", "i go by", "me");
-    private static final List<String> NAME_AFTER = List.of("is my name", "here");
+            "friends call me", "it is me", "it is", "this is", "i go by");
+    private static final List<String> NAME_AFTER = List.of("is my name");
 
     private final Lexicon lexicon;
 

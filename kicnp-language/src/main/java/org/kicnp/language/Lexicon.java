@@ -84,9 +84,10 @@ public final class Lexicon {
         return Optional.ofNullable(verbs.get(word));
     }
 
-    /** A robot's canonical name ({@code AIBO}, {@code Scout}) by the word said. */
+    /** A robot's canonical name ({@code AIBO}, {@code Scout}) by the word said; not the pronoun "you". */
     public Optional<String> robot(String word) {
-        return noun(word).filter(n -> n.semanticClass() == SemanticClass.ROBOT).map(Noun::value);
+        return noun(word).filter(n -> n.semanticClass() == SemanticClass.ROBOT && !n.value().equals("addressee"))
+                .map(Noun::value);
     }
 
     /** The default case a preposition marks, one or two words ("next to"). */

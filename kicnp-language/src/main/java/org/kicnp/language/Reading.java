@@ -15,7 +15,9 @@ final class Reading {
     final Expectation expectation;
     Optional<Filler> vocative = Optional.empty();
     boolean correction;
+    /** "please" was said: the sentence is a request. */
     boolean polite;
+    /** "thanks" or "thank you" was said. */
     boolean thanked;
     private final List<String> reasons = new ArrayList<>();
     private final List<String> weakReasons = new ArrayList<>();

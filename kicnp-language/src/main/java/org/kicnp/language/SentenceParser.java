@@ -60,7 +60,7 @@ public final class SentenceParser {
                 return new ParseResult.Parsed(u.frame(Act.YES_NO_ANSWER, java.util.Map.of(Case.POLARITY,
                         Filler.known("no", SemanticClass.ANSWER, "no"))));
             }
-            if (u.thanked && u.vocative.isEmpty()) {
+            if (u.thanked) {
                 return new ParseResult.Parsed(FixedExpressions.thanks(u));
             }
             return ParseResult.NotUnderstood.because("Only '" + u.text + "' was said: no clause to understand.");
@@ -162,7 +162,10 @@ public final class SentenceParser {
         }
     }
 
-    /** Drops fillers at the start, every "please", and "thanks"/"thank you". */
+    /**
+     * Drops fillers at the start, every "please" (which marks a request) and "thanks"/"thank you" (which does not:
+     * "thanks blorf" is no request for a blorf).
+     */
     private static List<Token> strip(List<Token> seg, Reading u) {
         List<Token> out = new ArrayList<>();
         for (int i = 0; i < seg.size(); i++) {
@@ -170,7 +173,6 @@ public final class SentenceParser {
             if (w.equals("please")) {
                 u.polite = true;
             } else if (w.equals("thanks") || w.equals("thank") && i + 1 < seg.size() && seg.get(i + 1).word().equals("you")) {
-                u.polite = true;
                 u.thanked = true;
                 i += w.equals("thank") ? 1 : 0;
             } else if (!(out.isEmpty() && FILLERS.contains(w))) {
