@@ -21,8 +21,8 @@ final class CommandLog {
     /** Records a command the editor sent; answers its row. */
     synchronized Map<String, Object> sent(String id, String robot, String action, Map<String, String> args) {
         Map<String, Object> row = row(id, robot, action);
-        row.put("args", Map.copyOf(args));
-        return Map.copyOf(row);
+        row.put("args", java.util.Collections.unmodifiableMap(new LinkedHashMap<>(args)));
+        return snapshot(row);
     }
 
     /** Records feedback; answers the command's row as it now is. */
@@ -31,21 +31,25 @@ final class CommandLog {
         row.put("status", f.status().name().toLowerCase(Locale.ROOT));
         row.put("detail", f.detail());
         row.put("at", f.at().toString());
-        return Map.copyOf(row);
+        return snapshot(row);
     }
 
     /** Records a "wrong" judgement; answers the row. */
     synchronized Map<String, Object> wrong(String id, String reason) {
         Map<String, Object> row = row(id, "", "");
         row.put("wrong", reason);
-        return Map.copyOf(row);
+        return snapshot(row);
     }
 
     /** Newest first. */
     synchronized List<Map<String, Object>> recent() {
         List<Map<String, Object>> out = new ArrayList<>();
-        entries.values().forEach(r -> out.addFirst(Map.copyOf(r)));
+        entries.values().forEach(r -> out.addFirst(snapshot(r)));
         return out;
+    }
+
+    private static Map<String, Object> snapshot(Map<String, Object> row) {
+        return java.util.Collections.unmodifiableMap(new LinkedHashMap<>(row));
     }
 
     private Map<String, Object> row(String id, String robot, String action) {
