@@ -244,7 +244,7 @@ try {
   await page.fill('#wrong-reason', 'went to the wrong place');
   await page.press('#wrong-reason', 'Enter');
   await command.locator('.wrong-note', { hasText: 'went to the wrong place' }).waitFor();
-  check(await page.isHidden('#wrong-form'), 'the wrong form stayed open');
+  await page.locator('#wrong-form').waitFor({ state: 'hidden' });
   await page.locator('#chat-text').focus();
   await page.screenshot({ path: join(artifacts, '05-world.png') });
 
