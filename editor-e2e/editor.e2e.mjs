@@ -245,6 +245,16 @@ try {
   await page.press('#wrong-reason', 'Enter');
   await command.locator('.wrong-note', { hasText: 'went to the wrong place' }).waitFor();
   await page.locator('#wrong-form').waitFor({ state: 'hidden' });
+
+  step = 'world panel: the robot list keeps keyboard focus while the robots move';
+  const rowWrong = page.locator('#robot-rows tr[data-robot="scout"] button', { hasText: 'Wrong' });
+  await rowWrong.focus();
+  await page.waitForTimeout(400);
+  check(await rowWrong.evaluate((b) => document.activeElement === b), 'the robot list lost keyboard focus while the robots moved');
+  await page.keyboard.press('Enter');
+  await page.locator('#wrong-form').waitFor({ state: 'visible' });
+  check((await page.textContent('#wrong-question')).includes('c9'), 'the wrong form does not name the running action c9');
+  await page.click('#wrong-cancel');
   await page.locator('#chat-text').focus();
   await page.screenshot({ path: join(artifacts, '05-world.png') });
 

@@ -213,9 +213,16 @@ function pill(g, text, x, y) {
   g.fillText(text, x, y + 1);
 }
 
+let robotsShown = '';
+
+// Rebuilt only when something in it changed, so a focused "Wrong" button keeps its focus while the robots move.
 function renderRobots() {
   if (!latest) return;
   const canJudge = state.session.loggedIn && state.session.teleOperation;
+  const shown = JSON.stringify([canJudge, latest.robots.map((r) => [r.name, r.kind, r.actions, r.state]),
+    latest.users.map((u) => u.name), latest.cups.map((c) => c.holder)]);
+  if (shown === robotsShown) return;
+  robotsShown = shown;
   $('robot-rows').replaceChildren(...latest.robots.map((r) => el('tr', { dataset: { robot: r.name } },
     el('th', { scope: 'row' }, el('i', { class: 'swatch kind-' + (COLORS[r.kind] ? r.kind : 'other') }),
       r.name),
