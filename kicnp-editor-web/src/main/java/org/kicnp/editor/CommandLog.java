@@ -2,6 +2,7 @@ package org.kicnp.editor;
 
 import java.time.Instant;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -21,7 +22,7 @@ final class CommandLog {
     /** Records a command the editor sent; answers its row. */
     synchronized Map<String, Object> sent(String id, String robot, String action, Map<String, String> args) {
         Map<String, Object> row = row(id, robot, action);
-        row.put("args", java.util.Collections.unmodifiableMap(new LinkedHashMap<>(args)));
+        row.put("args", Collections.unmodifiableMap(new LinkedHashMap<>(args)));
         return snapshot(row);
     }
 
@@ -49,7 +50,7 @@ final class CommandLog {
     }
 
     private static Map<String, Object> snapshot(Map<String, Object> row) {
-        return java.util.Collections.unmodifiableMap(new LinkedHashMap<>(row));
+        return Collections.unmodifiableMap(new LinkedHashMap<>(row));
     }
 
     private Map<String, Object> row(String id, String robot, String action) {

@@ -9,6 +9,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.function.Supplier;
 
 /**
@@ -54,7 +55,7 @@ final class PlatformResource implements AutoCloseable {
     }
 
     /** {@code GET /api/world}: the latest snapshot, or empty (204) before the first. */
-    java.util.Optional<WorldSnapshot> world() {
+    Optional<WorldSnapshot> world() {
         return port(ports.world().orElse(null), "world view").latest();
     }
 

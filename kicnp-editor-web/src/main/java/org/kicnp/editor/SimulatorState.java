@@ -4,7 +4,9 @@ import com.fasterxml.jackson.databind.JsonNode;
 import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
+import java.util.function.BiConsumer;
 import org.kicnp.editor.WorldSnapshot.Box;
 import org.kicnp.editor.WorldSnapshot.Point;
 import org.kicnp.editor.WorldSnapshot.Room;
@@ -85,12 +87,12 @@ public final class SimulatorState {
         }
         double speed = r.path("v_mps").asDouble(0);
         if (Math.abs(speed) >= 0.01) {
-            parts.add(String.format(java.util.Locale.ROOT, "moving %.2f m/s", speed));
+            parts.add(String.format(Locale.ROOT, "moving %.2f m/s", speed));
         }
         return String.join(", ", parts);
     }
 
-    private static void each(JsonNode object, java.util.function.BiConsumer<String, JsonNode> action) {
+    private static void each(JsonNode object, BiConsumer<String, JsonNode> action) {
         if (!object.isObject()) {
             return;
         }
