@@ -107,24 +107,11 @@ function draw() {
   for (let y = 1; y < room.height; y++) line(g, X(0), Y(y), X(room.width), Y(y));
   g.textAlign = 'center';
   for (let x = 0; x <= room.width; x += 2) {
-    if (Math.abs(x - room.door.x) > 0.8) g.fillText(x + ' m', X(x), Y(0) + 14);
+    if (room.door.y > 0.01 || Math.abs(x - room.door.x) > 0.8) g.fillText(x + ' m', X(x), Y(0) + 14);
   }
 
-  // walls with the door gap, the counter, obstacles
-  const doorHalf = 0.45;
-  g.strokeStyle = '#344054';
-  g.lineWidth = 4;
-  g.beginPath();
-  g.moveTo(X(room.door.x - doorHalf), Y(0));
-  g.lineTo(X(0), Y(0));
-  g.lineTo(X(0), Y(room.height));
-  g.lineTo(X(room.width), Y(room.height));
-  g.lineTo(X(room.width), Y(0));
-  g.lineTo(X(room.door.x + doorHalf), Y(0));
-  g.stroke();
-  g.fillStyle = '#667085';
-  g.font = '11px system-ui, sans-serif';
-  g.fillText('door', X(room.door.x), Y(0) + 14);
+  // walls with the door gap (on whichever wall the door is), the counter, obstacles
+  drawWalls(g, room, X, Y);
   const c = room.counter;
   g.fillStyle = '#f2e6d3';
   g.strokeStyle = '#b08a5a';
@@ -163,6 +150,40 @@ function draw() {
     }
   }
   $('world-time').textContent = 't = ' + latest.time.toFixed(1) + ' s';
+}
+
+function drawWalls(g, room, X, Y) {
+  const w = room.width;
+  const h = room.height;
+  const d = room.door;
+  const half = 0.45;
+  const walls = { S: [[0, 0], [w, 0]], E: [[w, 0], [w, h]], N: [[w, h], [0, h]], W: [[0, h], [0, 0]] };
+  const doorWall = d.y <= 0.01 ? 'S' : d.y >= h - 0.01 ? 'N' : d.x <= 0.01 ? 'W' : 'E';
+  g.strokeStyle = '#344054';
+  g.lineWidth = 4;
+  g.lineCap = 'square';
+  for (const [name, [a, b]] of Object.entries(walls)) {
+    if (name !== doorWall) {
+      line(g, X(a[0]), Y(a[1]), X(b[0]), Y(b[1]));
+      continue;
+    }
+    const along = name === 'S' || name === 'N' ? 0 : 1;
+    const at = along === 0 ? d.x : d.y;
+    const lo = a[along] < b[along] ? a : b;
+    const hi = a[along] < b[along] ? b : a;
+    const gapLo = [...lo];
+    const gapHi = [...hi];
+    gapLo[along] = at - half;
+    gapHi[along] = at + half;
+    line(g, X(lo[0]), Y(lo[1]), X(gapLo[0]), Y(gapLo[1]));
+    line(g, X(gapHi[0]), Y(gapHi[1]), X(hi[0]), Y(hi[1]));
+  }
+  g.lineCap = 'butt';
+  const offset = { S: [0, 14], N: [0, -8], W: [-16, 4], E: [16, 4] }[doorWall];
+  g.fillStyle = '#667085';
+  g.font = '11px system-ui, sans-serif';
+  g.textAlign = 'center';
+  g.fillText('door', X(d.x) + offset[0], Y(d.y) + offset[1]);
 }
 
 function line(g, x0, y0, x1, y1) {
