@@ -14,7 +14,7 @@ import picocli.CommandLine.Spec;
  * {@code ./kicnp bench gateway}: the command around {@link GatewayBench}, printing its table and, as the last line,
  * one JSON object per the bench convention (a peer that could not be measured has {@code null} figures).
  */
-@Command(name = "gateway",
+@Command(name = "gateway-pingpong",
         mixinStandardHelpOptions = true,
         description = {
             "Round-trip latency and rate of the K-ICNP gateway and agent SDK, side by side with Mosquitto (MQTT QoS 1)",
