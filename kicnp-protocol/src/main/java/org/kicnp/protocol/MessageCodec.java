@@ -37,15 +37,37 @@ public final class MessageCodec {
 
     /** Encodes a message as the UTF-8 JSON payload of one frame, envelope first. */
     public byte[] encode(Message message) {
-        ObjectNode node = mapper.createObjectNode();
-        node.put("v", VERSION);
-        node.put("type", MessageType.of(message).wireName());
-        node.setAll((ObjectNode) mapper.valueToTree(message));
+        MessageType type = MessageType.of(message);
+        byte[] members;
         try {
-            return mapper.writeValueAsBytes(node);
+            members = mapper.writeValueAsBytes(message); // {"id":...,...}: the record's own members
         } catch (JacksonException e) {
-            throw new IllegalStateException("Could not encode a '" + MessageType.of(message).wireName() + "' message.", e);
+            throw new IllegalStateException("Could not encode a '" + type.wireName() + "' message.", e);
         }
+        // The envelope, then the members, spliced as bytes: no intermediate tree (this is the relay hot path).
+        byte[] head = ENVELOPES.get(type);
+        boolean empty = members.length <= 2;
+        byte[] out = new byte[head.length + (empty ? 1 : members.length)];
+        System.arraycopy(head, 0, out, 0, head.length);
+        if (empty) {
+            out[head.length] = '}';
+        } else {
+            out[head.length] = ',';
+            System.arraycopy(members, 1, out, head.length + 1, members.length - 1);
+        }
+        return out;
+    }
+
+    /** {@code {"v":1,"type":"NAME"} without its closing brace, per message type. */
+    private static final java.util.Map<MessageType, byte[]> ENVELOPES = envelopes();
+
+    private static java.util.Map<MessageType, byte[]> envelopes() {
+        java.util.Map<MessageType, byte[]> m = new java.util.EnumMap<>(MessageType.class);
+        for (MessageType t : MessageType.values()) {
+            m.put(t, ("{\"v\":" + VERSION + ",\"type\":\"" + t.wireName() + "\"")
+                    .getBytes(java.nio.charset.StandardCharsets.UTF_8));
+        }
+        return m;
     }
 
     /**
@@ -70,6 +92,9 @@ public final class MessageCodec {
         body.remove("v");
         body.remove("type");
         requireMembers(type, body);
+        if (type == MessageType.RELAY) {
+            return relay(body); // the hub's hot path: read straight from the tree, without data binding
+        }
         try {
             return mapper.treeToValue(body, type.recordClass());
         } catch (JacksonException | IllegalArgumentException e) {
@@ -92,13 +117,50 @@ public final class MessageCodec {
     }
 
     private static void requireMembers(MessageType type, ObjectNode body) {
-        for (RecordComponent c : type.recordClass().getRecordComponents()) {
-            JsonNode member = body.get(c.getName());
-            if (c.getType() != Optional.class && (member == null || member.isNull())) {
+        for (String name : REQUIRED.get(type)) {
+            JsonNode member = body.get(name);
+            if (member == null || member.isNull()) {
                 throw new ProtocolException(ErrorCode.BAD_MESSAGE,
-                        "A '" + type.wireName() + "' message needs the member '" + c.getName() + "'.");
+                        "A '" + type.wireName() + "' message needs the member '" + name + "'.");
             }
         }
+    }
+
+    /** The required (non-{@code Optional}) members of each type, looked up once rather than per message. */
+    private static final java.util.Map<MessageType, java.util.List<String>> REQUIRED = required();
+
+    private static java.util.Map<MessageType, java.util.List<String>> required() {
+        java.util.Map<MessageType, java.util.List<String>> m = new java.util.EnumMap<>(MessageType.class);
+        for (MessageType t : MessageType.values()) {
+            m.put(t, java.util.Arrays.stream(t.recordClass().getRecordComponents())
+                    .filter(c -> c.getType() != Optional.class).map(RecordComponent::getName).toList());
+        }
+        return m;
+    }
+
+    /** A {@code relay} read member by member, with the same checks data binding makes. */
+    private static Message.Relay relay(ObjectNode b) {
+        try {
+            return new Message.Relay(text(b, "id"), text(b, "from"), optionalText(b, "toAgent"),
+                    optionalText(b, "toKind").map(k -> AgentKind.valueOf(k.toUpperCase(java.util.Locale.ROOT))),
+                    text(b, "subject"), text(b, "body"));
+        } catch (IllegalArgumentException e) {
+            throw new ProtocolException(ErrorCode.BAD_MESSAGE, "Bad 'relay' message: " + e.getMessage(), e);
+        }
+    }
+
+    private static String text(ObjectNode b, String name) {
+        JsonNode n = b.get(name);
+        if (!n.isTextual()) {
+            throw new ProtocolException(ErrorCode.BAD_MESSAGE, "Bad 'relay' message: the member '" + name
+                    + "' must be a string, not " + n.getNodeType().name().toLowerCase(java.util.Locale.ROOT) + ".");
+        }
+        return n.textValue();
+    }
+
+    private static Optional<String> optionalText(ObjectNode b, String name) {
+        JsonNode n = b.get(name);
+        return n == null || n.isNull() ? Optional.empty() : Optional.of(text(b, name));
     }
 
     private static String rootMessage(Throwable e) {
