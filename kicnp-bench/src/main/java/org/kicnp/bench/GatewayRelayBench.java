@@ -52,14 +52,15 @@ final class GatewayRelayBench {
                 progress.accept("K-ICNP gateway, " + agents + " agents ...");
                 long shedBefore = gateway.metrics().shed();
                 HubFigures kicnp = measure(new KicnpRelayClient(o.messageBytes()), gateway.address(), agents, o,
-                        () -> gateway.metrics().shed() - shedBefore);
+                        () -> gateway.metrics().shed() - shedBefore, GatewayRelayBench::processCpuMinus);
                 progress.accept("  " + gateway.metrics());
                 Optional<HubFigures> mqtt = Optional.empty();
                 Optional<String> note = broker == null ? Optional.of(brokerNote) : Optional.empty();
                 if (broker != null) {
                     progress.accept("Mosquitto, " + agents + " agents ...");
+                    MosquittoBroker b = broker;
                     mqtt = Optional.of(measure(new MqttRelayClient(o.messageBytes()), broker.address(), agents, o,
-                            () -> 0L));
+                            () -> 0L, clients -> b.cpuNanos()));
                 }
                 runs.add(new RelayRun(agents, o.windowFor(agents), kicnp, mqtt, note));
             }
@@ -72,12 +73,21 @@ final class GatewayRelayBench {
     }
 
     private static HubFigures measure(RelayClient client, InetSocketAddress hub, int agents, RelayBenchOptions o,
-                                      java.util.function.LongSupplier shed) throws InterruptedException {
+                                      java.util.function.LongSupplier shed,
+                                      java.util.function.LongUnaryOperator hubCpu) throws InterruptedException {
         try (RelayDriver d = RelayDriver.connect(client, hub, agents, o.clientThreads(), CONNECT_TIMEOUT)) {
-            double rate = d.throughput(o.windowFor(agents), o.warmup(), o.throughputTime());
+            RelayDriver.Throughput t = d.throughput(o.windowFor(agents), o.warmup(), o.throughputTime(), hubCpu);
             LatencyFigures latency = d.latency(o.rate(), o.warmup(), o.latencyTime());
-            return new HubFigures(rate, latency, shed.getAsLong());
+            return new HubFigures(t.msgsPerSecond(), latency, shed.getAsLong(), t.hubCpuMicrosPerMsg(),
+                    t.clientCpuMicrosPerMsg());
         }
+    }
+
+    /** This process's CPU time minus the given client CPU time: the in-process gateway's share, in nanoseconds. */
+    private static long processCpuMinus(long clientCpuNanos) {
+        var os = java.lang.management.ManagementFactory.getOperatingSystemMXBean();
+        long process = os instanceof com.sun.management.OperatingSystemMXBean sun ? sun.getProcessCpuTime() : 0;
+        return process - clientCpuNanos;
     }
 
     /** An agent file for the bench agents {@code a00000 ...}: each a user with its own token. */

@@ -91,6 +91,19 @@ final class MosquittoBroker implements AutoCloseable {
         }).orElse("");
     }
 
+    /** The broker's CPU time so far (user and system), in nanoseconds, from {@code /proc}; 0 if unreadable. */
+    long cpuNanos() {
+        try {
+            String pid = Files.readString(dir.resolve("mosquitto.pid")).strip();
+            String stat = Files.readString(Path.of("/proc", pid, "stat"));
+            String[] f = stat.substring(stat.lastIndexOf(')') + 2).split(" ");
+            long ticks = Long.parseLong(f[11]) + Long.parseLong(f[12]); // utime, stime (fields 14 and 15)
+            return ticks * 10_000_000L; // USER_HZ is 100 on Linux
+        } catch (IOException | RuntimeException e) {
+            return 0;
+        }
+    }
+
     @Override public void close() throws IOException, InterruptedException {
         Process p = new ProcessBuilder("bash", script.toString(), "stop", dir.toString())
                 .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();

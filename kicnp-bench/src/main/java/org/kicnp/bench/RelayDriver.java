@@ -108,17 +108,22 @@ final class RelayDriver implements AutoCloseable {
      * Closed loop: each agent keeps {@code window} messages outstanding to its peer; after {@code warmup}, counts
      * deliveries for {@code measure}. Returns delivered (relayed) messages per second.
      */
-    double throughput(int window, Duration warmup, Duration measure) throws InterruptedException {
+    Throughput throughput(int window, Duration warmup, Duration measure, java.util.function.LongUnaryOperator hubCpu)
+            throws InterruptedException {
         onLoops(loop -> {
             loop.startClosed(window);
             return null;
         });
         Thread.sleep(warmup.toMillis());
+        long clientCpu0 = clientCpuNanos();
+        long hubCpu0 = hubCpu.applyAsLong(clientCpu0);
         long before = delivered();
         long t0 = System.nanoTime();
         Thread.sleep(measure.toMillis());
         long after = delivered();
         long t1 = System.nanoTime();
+        long clientCpu1 = clientCpuNanos();
+        long hubCpu1 = hubCpu.applyAsLong(clientCpu1);
         onLoops(loop -> {
             loop.stopClosed();
             return null;
@@ -128,7 +133,22 @@ final class RelayDriver implements AutoCloseable {
                 && System.nanoTime() < deadline) {
             Thread.sleep(20);
         }
-        return (after - before) * 1e9 / (t1 - t0);
+        long n = Math.max(1, after - before);
+        return new Throughput((after - before) * 1e9 / (t1 - t0), (hubCpu1 - hubCpu0) / 1e3 / n,
+                (clientCpu1 - clientCpu0) / 1e3 / n);
+    }
+
+    /**
+     * The closed-loop result: delivered messages per second, and the CPU time the hub and the clients spent per
+     * delivered message (on a shared machine the CPU cost is steadier than the rate, which depends on the share).
+     */
+    record Throughput(double msgsPerSecond, double hubCpuMicrosPerMsg, double clientCpuMicrosPerMsg) {
+    }
+
+    /** CPU time of the client event loops so far, in nanoseconds. */
+    long clientCpuNanos() throws InterruptedException {
+        return onLoops(loop -> java.lang.management.ManagementFactory.getThreadMXBean().getCurrentThreadCpuTime())
+                .stream().mapToLong(Long::longValue).sum();
     }
 
     /**

@@ -40,10 +40,11 @@ final class RelayReport {
     }
 
     static String table(List<RelayRun> runs, int rate) {
-        StringBuilder sb = new StringBuilder(String.format(Locale.ROOT, "%-7s %-10s %7s %12s %10s %9s %9s %9s %9s %7s%n",
-                "agents", "hub", "window", "msgs/s", "delivered", "p50 ms", "p99 ms", "p99.9 ms", "max ms", "lost"));
-        sb.append(String.format(Locale.ROOT, "%-7s %-10s %7s %12s %10s %s%n", "", "", "", "(max)", "(open)",
-                "   (open loop at " + String.format(Locale.ROOT, "%,d", rate) + " msgs/s)"));
+        StringBuilder sb = new StringBuilder(String.format(Locale.ROOT,
+                "%-7s %-10s %7s %12s %8s %8s %10s %9s %9s %9s %9s %7s%n", "agents", "hub", "window", "msgs/s",
+                "hub CPU", "cli CPU", "delivered", "p50 ms", "p99 ms", "p99.9 ms", "max ms", "lost"));
+        sb.append(String.format(Locale.ROOT, "%-7s %-10s %7s %12s %8s %8s %10s %s%n", "", "", "", "(max)", "µs/msg",
+                "µs/msg", "(open)", "   (open loop at " + String.format(Locale.ROOT, "%,d", rate) + " msgs/s)"));
         for (RelayRun r : runs) {
             row(sb, r.agents(), "K-ICNP", r.window(), r.kicnp());
             if (r.mosquitto().isPresent()) {
@@ -59,8 +60,9 @@ final class RelayReport {
 
     private static void row(StringBuilder sb, int agents, String hub, int window, HubFigures f) {
         LatencyFigures l = f.latency();
-        sb.append(String.format(Locale.ROOT, "%-7d %-10s %7d %,12.0f %,10.0f %9.3f %9.3f %9.3f %9.3f %7d%s%n", agents,
-                hub, window, f.msgsPerSecond(), l.deliveredPerSecond(), l.p50Millis(), l.p99Millis(), l.p999Millis(),
+        sb.append(String.format(Locale.ROOT, "%-7d %-10s %7d %,12.0f %8.1f %8.1f %,10.0f %9.3f %9.3f %9.3f %9.3f %7d%s%n",
+                agents, hub, window, f.msgsPerSecond(), f.hubCpuMicrosPerMsg(), f.clientCpuMicrosPerMsg(),
+                l.deliveredPerSecond(), l.p50Millis(), l.p99Millis(), l.p999Millis(),
                 l.maxMillis(), l.lost(), f.shed() > 0 ? "  (hub shed " + f.shed() + ")" : ""));
     }
 
@@ -76,6 +78,9 @@ final class RelayReport {
                     .append(", \"mosquitto_msgs_per_s\": ").append(opt(r.mosquitto().map(HubFigures::msgsPerSecond), 0))
                     .append(", \"ratio\": ").append(opt(r.ratio(), 3))
                     .append(", \"kicnp_p99_ms_at_50k\": ").append(num(k.p99Millis(), 3))
+                    .append(", \"kicnp_hub_cpu_us_per_msg\": ").append(num(r.kicnp().hubCpuMicrosPerMsg(), 2))
+                    .append(", \"mosquitto_hub_cpu_us_per_msg\": ")
+                    .append(opt(r.mosquitto().map(HubFigures::hubCpuMicrosPerMsg), 2))
                     .append(", \"kicnp_p50_ms_at_50k\": ").append(num(k.p50Millis(), 3))
                     .append(", \"kicnp_p999_ms_at_50k\": ").append(num(k.p999Millis(), 3))
                     .append(", \"kicnp_lost_at_50k\": ").append(k.lost())
