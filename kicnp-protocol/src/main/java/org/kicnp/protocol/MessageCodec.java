@@ -37,6 +37,15 @@ public final class MessageCodec {
 
     /** Encodes a message as the UTF-8 JSON payload of one frame, envelope first. */
     public byte[] encode(Message message) {
+        switch (message) {
+            case Message.Relay r -> {
+                return relay(r); // the hub's hot path: a relay and its ack per message relayed
+            }
+            case Message.Ack a -> {
+                return ack(a);
+            }
+            default -> { }
+        }
         MessageType type = MessageType.of(message);
         byte[] members;
         try {
@@ -56,6 +65,46 @@ public final class MessageCodec {
             System.arraycopy(members, 1, out, head.length + 1, members.length - 1);
         }
         return out;
+    }
+
+    /** A relay written with the streaming generator: the same bytes data binding gives, at a fraction of the cost. */
+    private byte[] relay(Message.Relay r) {
+        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream(64 + r.body().length() + r.subject().length());
+        try (com.fasterxml.jackson.core.JsonGenerator g = mapper.getFactory().createGenerator(out)) {
+            envelope(g, MessageType.RELAY);
+            g.writeStringField("id", r.id());
+            g.writeStringField("from", r.from());
+            if (r.toAgent().isPresent()) {
+                g.writeStringField("toAgent", r.toAgent().get());
+            }
+            if (r.toKind().isPresent()) {
+                g.writeStringField("toKind", r.toKind().get().name().toLowerCase(java.util.Locale.ROOT));
+            }
+            g.writeStringField("subject", r.subject());
+            g.writeStringField("body", r.body());
+            g.writeEndObject();
+        } catch (IOException e) {
+            throw new IllegalStateException("Could not encode a 'relay' message.", e);
+        }
+        return out.toByteArray();
+    }
+
+    private byte[] ack(Message.Ack a) {
+        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream(48 + a.id().length());
+        try (com.fasterxml.jackson.core.JsonGenerator g = mapper.getFactory().createGenerator(out)) {
+            envelope(g, MessageType.ACK);
+            g.writeStringField("id", a.id());
+            g.writeEndObject();
+        } catch (IOException e) {
+            throw new IllegalStateException("Could not encode an 'ack' message.", e);
+        }
+        return out.toByteArray();
+    }
+
+    private static void envelope(com.fasterxml.jackson.core.JsonGenerator g, MessageType type) throws IOException {
+        g.writeStartObject();
+        g.writeNumberField("v", VERSION);
+        g.writeStringField("type", type.wireName());
     }
 
     /** {@code {"v":1,"type":"NAME"} without its closing brace, per message type. */
