@@ -47,6 +47,16 @@ final class GatewayRelayBench {
         }
         try (GatewayServer gateway = GatewayServer.start(GatewayConfig.defaults().withPort(0), directory(most),
                 KnowledgeBase.create(), FeedbackListener.NONE)) {
+            if (!o.jitWarmup().isZero()) {
+                // Untimed: the JIT compiles the gateway's and both clients' hot paths before anything is measured
+                // (Mosquitto is native and needs no such start).
+                int n = Math.min(100, o.agentCounts().get(0));
+                progress.accept("Warming up the JIT for " + o.jitWarmup().toSeconds() + " s per hub (not measured) ...");
+                warm(new KicnpRelayClient(o.messageBytes()), gateway.address(), n, o);
+                if (broker != null) {
+                    warm(new MqttRelayClient(o.messageBytes()), broker.address(), n, o);
+                }
+            }
             List<RelayRun> runs = new ArrayList<>();
             for (int agents : o.agentCounts()) {
                 progress.accept("K-ICNP gateway, " + agents + " agents ...");
@@ -80,6 +90,13 @@ final class GatewayRelayBench {
             LatencyFigures latency = d.latency(o.rate(), o.warmup(), o.latencyTime());
             return new HubFigures(t.msgsPerSecond(), latency, shed.getAsLong(), t.hubCpuMicrosPerMsg(),
                     t.clientCpuMicrosPerMsg());
+        }
+    }
+
+    private static void warm(RelayClient client, InetSocketAddress hub, int agents, RelayBenchOptions o)
+            throws InterruptedException {
+        try (RelayDriver d = RelayDriver.connect(client, hub, agents, o.clientThreads(), CONNECT_TIMEOUT)) {
+            d.throughput(o.windowFor(agents), o.jitWarmup(), Duration.ofMillis(100), clients -> 0);
         }
     }
 

@@ -43,6 +43,11 @@ final class GatewayRelayCommand implements Callable<Integer> {
     @Option(names = "--warmup", defaultValue = "2", description = "Warm-up seconds before each measurement (default: ${DEFAULT-VALUE}).")
     int warmupSeconds;
 
+    @Option(names = "--jit-warmup", defaultValue = "10",
+            description = "Seconds of an untimed run on each hub before the first measurement, so the JIT has compiled "
+                    + "the gateway and the clients (default: ${DEFAULT-VALUE}; 0: none).")
+    int jitWarmupSeconds;
+
     @Option(names = "--seconds", defaultValue = "5",
             description = "Seconds of each throughput and each latency measurement (default: ${DEFAULT-VALUE}).")
     int seconds;
@@ -64,8 +69,9 @@ final class GatewayRelayCommand implements Callable<Integer> {
     Optional<Path> script;
 
     @Override public Integer call() throws Exception {
-        if (seconds < 1 || warmupSeconds < 0) {
-            throw new ParameterException(spec.commandLine(), "Need --seconds of 1 or more and --warmup of 0 or more.");
+        if (seconds < 1 || warmupSeconds < 0 || jitWarmupSeconds < 0) {
+            throw new ParameterException(spec.commandLine(),
+                    "Need --seconds of 1 or more, and --warmup and --jit-warmup of 0 or more.");
         }
         quietGatewayLog();
         Optional<Path> mosquitto = noMosquitto ? Optional.empty() : script.or(MosquittoBroker::defaultScript);
@@ -75,7 +81,8 @@ final class GatewayRelayCommand implements Callable<Integer> {
         RelayBenchOptions o;
         try {
             o = new RelayBenchOptions(agents, messageBytes, rate, Duration.ofSeconds(warmupSeconds),
-                    Duration.ofSeconds(seconds), Duration.ofSeconds(seconds), outstanding, clientThreads, mosquitto,
+                    Duration.ofSeconds(seconds), Duration.ofSeconds(seconds), outstanding, clientThreads,
+                    Duration.ofSeconds(jitWarmupSeconds), mosquitto,
                     !noInstall);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());

@@ -15,17 +15,20 @@ import java.util.Optional;
  * @param rate the fixed offered load of the latency measurement, messages per second in total
  * @param outstanding the closed-loop messages outstanding in total, spread over the agents (at least 2 each)
  * @param clientThreads the client event loops
+ * @param jitWarmup an untimed closed-loop run on each hub before the first measurement (zero: none)
  * @param mosquittoScript {@code scripts/mosquitto.sh}; empty skips Mosquitto
  * @param install whether the script may install Mosquitto with apt-get
  */
 record RelayBenchOptions(List<Integer> agentCounts, int messageBytes, int rate, Duration warmup, Duration throughputTime,
-                         Duration latencyTime, int outstanding, int clientThreads, Optional<Path> mosquittoScript,
+                         Duration latencyTime, int outstanding, int clientThreads, Duration jitWarmup,
+                         Optional<Path> mosquittoScript,
                          boolean install) {
     RelayBenchOptions {
         agentCounts = List.copyOf(agentCounts);
         requireNonNull(warmup, "warmup");
         requireNonNull(throughputTime, "throughputTime");
         requireNonNull(latencyTime, "latencyTime");
+        requireNonNull(jitWarmup, "jitWarmup");
         requireNonNull(mosquittoScript, "mosquittoScript");
         if (agentCounts.isEmpty() || agentCounts.stream().anyMatch(n -> n < 2 || n % 2 != 0)) {
             throw new IllegalArgumentException("Agent counts must be even numbers of 2 or more, not " + agentCounts + ".");

@@ -18,13 +18,14 @@ final class RelayReport {
                            each client subscribes to its own topic and publishes to its peer's); loopback TCP, Nagle off
                   delivery: K-ICNP fire-and-forget relay (the hub still acks each relay to its sender, read and
                            discarded) vs MQTT QoS 0 (no acks); %d bytes per message on the wire for both
+                  JIT: an untimed %d s run on each hub first, so the JVM's hot paths are compiled before measuring
                   throughput: closed loop, %d messages outstanding in total (window per agent shown), %d s after %d s
-                           warm-up; msgs/s = messages delivered to agents per second
+                           warm-up; msgs/s = messages delivered to agents per second; CPU µs per delivered message
                   latency: open loop, %,d msgs/s in total at a constant rate released by 1 ms ticks, %d s after %d s
                            warm-up; latency = delivery time - intended send time (coordinated omission corrected)
                 """, mosquittoVersion.isEmpty() ? "" : " (" + mosquittoVersion + ")",
                 Runtime.getRuntime().availableProcessors(), loadAverage(), o.clientThreads(), o.messageBytes(),
-                o.outstanding(), o.throughputTime().toSeconds(), o.warmup().toSeconds(), o.rate(),
+                o.jitWarmup().toSeconds(), o.outstanding(), o.throughputTime().toSeconds(), o.warmup().toSeconds(), o.rate(),
                 o.latencyTime().toSeconds(), o.warmup().toSeconds());
     }
 

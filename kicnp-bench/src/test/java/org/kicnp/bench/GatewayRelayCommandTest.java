@@ -18,7 +18,7 @@ class GatewayRelayCommandTest {
 
     @Test
     void gateway_kicnpAlone_printsTableThenJsonWithPositiveFigures() throws Exception {
-        Output run = run("gateway", "--agents", "10", "--seconds", "1", "--warmup", "1", "--rate", "2000",
+        Output run = run("gateway", "--agents", "10", "--seconds", "1", "--warmup", "1", "--jit-warmup", "0", "--rate", "2000",
                 "--no-mosquitto");
 
         assertThat(run.code()).as(run.err()).isZero();
@@ -39,7 +39,7 @@ class GatewayRelayCommandTest {
         assumeTrue(MosquittoBroker.installed(),
                 "Mosquitto is not installed (apt-get install mosquitto): the side-by-side run is skipped.");
 
-        Output run = run("gateway", "--agents", "10", "--seconds", "1", "--warmup", "1", "--rate", "2000",
+        Output run = run("gateway", "--agents", "10", "--seconds", "1", "--warmup", "1", "--jit-warmup", "0", "--rate", "2000",
                 "--no-install");
 
         assertThat(run.code()).as(run.err()).isZero();

@@ -126,6 +126,10 @@ public final class MessageCodec {
      *     {@link ErrorCode#UNKNOWN_TYPE} or {@link ErrorCode#BAD_MESSAGE}, and a sentence saying what is wrong
      */
     public Message decode(byte[] payload) {
+        Message.Relay relay = plainRelay(payload);
+        if (relay != null) {
+            return relay;
+        }
         JsonNode root = readTree(payload);
         JsonNode v = root.get("v");
         if (v == null || !v.isIntegralNumber() || v.asLong() != VERSION) {
@@ -186,6 +190,70 @@ public final class MessageCodec {
         }
         return m;
     }
+
+    /**
+     * The hub's hot path: a well-formed relay read in one streaming pass, without a tree. Anything else — another
+     * type, a wrong version, a missing member, a member of the wrong JSON type, broken JSON — gives {@code null}
+     * (the one internal use of null), and the general path decodes the payload or says what is wrong with it.
+     */
+    private Message.Relay plainRelay(byte[] payload) {
+        try (com.fasterxml.jackson.core.JsonParser p = mapper.getFactory().createParser(payload)) {
+            if (p.nextToken() != com.fasterxml.jackson.core.JsonToken.START_OBJECT) {
+                return null;
+            }
+            long v = -1;
+            boolean typed = false;
+            String[] m = new String[RELAY_MEMBERS.size()];
+            com.fasterxml.jackson.core.JsonToken t;
+            while ((t = p.nextToken()) == com.fasterxml.jackson.core.JsonToken.FIELD_NAME) {
+                String name = p.currentName();
+                com.fasterxml.jackson.core.JsonToken value = p.nextToken();
+                int member = RELAY_MEMBERS.indexOf(name);
+                if (name.equals("v")) {
+                    if (value != com.fasterxml.jackson.core.JsonToken.VALUE_NUMBER_INT) {
+                        return null;
+                    }
+                    v = p.getLongValue();
+                } else if (name.equals("type")) {
+                    if (value != com.fasterxml.jackson.core.JsonToken.VALUE_STRING || !p.getText().equals("relay")) {
+                        return null;
+                    }
+                    typed = true;
+                } else if (member >= 0) {
+                    if (value == com.fasterxml.jackson.core.JsonToken.VALUE_STRING) {
+                        m[member] = p.getText();
+                    } else if (value == com.fasterxml.jackson.core.JsonToken.VALUE_NULL) {
+                        m[member] = null;
+                    } else {
+                        return null;
+                    }
+                } else {
+                    p.skipChildren(); // an unknown member: ignored, as the general path does
+                }
+            }
+            if (t != com.fasterxml.jackson.core.JsonToken.END_OBJECT || p.nextToken() != null || v != VERSION || !typed
+                    || m[0] == null || m[1] == null || m[4] == null || m[5] == null) {
+                return null;
+            }
+            Optional<AgentKind> kind = Optional.empty();
+            if (m[3] != null) {
+                kind = java.util.Arrays.stream(AgentKind.values()).filter(k -> k.name().equalsIgnoreCase(m[3])).findFirst();
+                if (kind.isEmpty()) {
+                    return null;
+                }
+            }
+            if (Optional.ofNullable(m[2]).isPresent() == kind.isPresent()) {
+                return null;
+            }
+            return new Message.Relay(m[0], m[1], Optional.ofNullable(m[2]), kind, m[4], m[5]);
+        } catch (IOException | RuntimeException e) {
+            return null;
+        }
+    }
+
+    /** The members of a relay, in the order {@link #plainRelay} keeps them. */
+    private static final java.util.List<String> RELAY_MEMBERS =
+            java.util.List.of("id", "from", "toAgent", "toKind", "subject", "body");
 
     /** A {@code relay} read member by member, with the same checks data binding makes. */
     private static Message.Relay relay(ObjectNode b) {
