@@ -50,7 +50,7 @@ final class GatewayRelayBench {
             if (!o.jitWarmup().isZero()) {
                 // Untimed: the JIT compiles the gateway's and both clients' hot paths before anything is measured
                 // (Mosquitto is native and needs no such start).
-                int n = Math.min(100, o.agentCounts().get(0));
+                int n = o.agentCounts().get(0);
                 progress.accept("Warming up the JIT for " + o.jitWarmup().toSeconds() + " s per hub (not measured) ...");
                 warm(new KicnpRelayClient(o.messageBytes()), gateway.address(), n, o);
                 if (broker != null) {

@@ -43,9 +43,10 @@ final class GatewayRelayCommand implements Callable<Integer> {
     @Option(names = "--warmup", defaultValue = "2", description = "Warm-up seconds before each measurement (default: ${DEFAULT-VALUE}).")
     int warmupSeconds;
 
-    @Option(names = "--jit-warmup", defaultValue = "10",
-            description = "Seconds of an untimed run on each hub before the first measurement, so the JIT has compiled "
-                    + "the gateway and the clients (default: ${DEFAULT-VALUE}; 0: none).")
+    @Option(names = "--jit-warmup", defaultValue = "20",
+            description = "Seconds of an untimed run on each hub (with the first agent count) before the first "
+                    + "measurement, so the JIT has compiled the gateway and the clients; on a loaded machine the "
+                    + "compiler gets little CPU (default: ${DEFAULT-VALUE}; 0: none).")
     int jitWarmupSeconds;
 
     @Option(names = "--seconds", defaultValue = "5",
