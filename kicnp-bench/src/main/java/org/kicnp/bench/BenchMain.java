@@ -13,6 +13,7 @@ import picocli.CommandLine.Command;
         subcommands = {
             CommandLine.HelpCommand.class,
             CoreBench.class,
+            GatewayRelayCommand.class,
             GatewayBenchCommand.class,
         })
 public final class BenchMain implements Runnable {

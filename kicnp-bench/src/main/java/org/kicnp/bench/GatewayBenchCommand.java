@@ -11,10 +11,10 @@ import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code ./kicnp bench gateway}: the command around {@link GatewayBench}, printing its table and, as the last line,
+ * {@code ./kicnp bench gateway-pingpong}: the command around {@link GatewayBench}, printing its table and, as the last line,
  * one JSON object per the bench convention (a peer that could not be measured has {@code null} figures).
  */
-@Command(name = "gateway",
+@Command(name = "gateway-pingpong",
         mixinStandardHelpOptions = true,
         description = {
             "Gateway: round-trip latency and rate, beside Mosquitto (MQTT QoS 1).",
