@@ -14,6 +14,7 @@ import picocli.CommandLine.Command;
             CommandLine.HelpCommand.class,
             CoreBench.class,
             GatewayBenchCommand.class,
+            InferenceBenchCommand.class,
         })
 public final class BenchMain implements Runnable {
     @CommandLine.Spec

@@ -1,0 +1,120 @@
+package org.kicnp.bench;
+
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import org.HdrHistogram.Histogram;
+import org.HdrHistogram.SynchronizedHistogram;
+import org.kicnp.core.Change;
+import org.kicnp.core.ConditionParser;
+import org.kicnp.core.DataType;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Provenance;
+import org.kicnp.core.Slot;
+import org.kicnp.core.Value;
+import org.kicnp.inference.Action;
+import org.kicnp.inference.GraalScriptHost;
+import org.kicnp.inference.InferenceEngine;
+import org.kicnp.inference.ScriptHost;
+import org.kicnp.script.ScriptConfig;
+import org.kicnp.script.ScriptRuntime;
+
+/**
+ * The two per-stimulus figures of {@code ./kicnp bench inference}, taken on the platform's real path: an engine that
+ * runs by itself on its own thread ({@code runOn}) with the sandboxed GraalJS runtime, and a behavior frame
+ * {@code Respond(mS: StimA, mR: Responder)} whose {@code onInstantiate} reads two slots of {@code s} and calls
+ * {@code sendmsg}. Each sample asserts one stimulus with {@code kb.add} on the caller's thread; the recording action
+ * sink stamps the moment the engine hands it the action ({@code stimulus → action}), and a timing wrapper around the
+ * script host measures the {@code onInstantiate} call itself. Warm-up samples are discarded.
+ */
+final class ActionLatencyProbe {
+    static final String SCRIPT = "sendmsg(s.mR, 'stimulus ' + s.mS.key + ' for ' + s.mR.name);";
+
+    /** Medians and tails, in microseconds, and whether scripts ran compiled. */
+    record Figures(int samples, double scriptMedianMicros, double scriptP99Micros, double latencyMedianMicros,
+            double latencyP99Micros, double latencyMaxMicros, boolean compilerOn, String scriptEngine) { }
+
+    private ActionLatencyProbe() {
+    }
+
+    static Figures measure(int warmUp, int samples) throws InterruptedException {
+        Histogram scriptNanos = new SynchronizedHistogram(3_600_000_000_000L, 3);
+        Histogram latencyNanos = new Histogram(3_600_000_000_000L, 3);
+        LinkedBlockingQueue<Long> issued = new LinkedBlockingQueue<>();
+        KnowledgeBase kb = KnowledgeBase.create();
+        kb.apply(classes());
+        ExecutorService engineThread = Executors.newSingleThreadExecutor(r -> {
+            Thread t = new Thread(r, "bench-engine");
+            t.setDaemon(true);
+            return t;
+        });
+        try (ScriptRuntime runtime = ScriptRuntime.create(ScriptConfig.defaults());
+                InferenceEngine engine = InferenceEngine.builder(kb)
+                        .scripts(new TimedScripts(new GraalScriptHost(runtime), scriptNanos))
+                        .actionSink((Action a) -> issued.add(System.nanoTime()))
+                        .runOn(engineThread).build()) {
+            for (int i = 0; i < warmUp + samples; i++) {
+                if (i == warmUp) {
+                    scriptNanos.reset();
+                }
+                Frame stimulus = InferenceWorkload.stimulus("x" + i, "StimA", i);
+                long start = System.nanoTime();
+                kb.add(stimulus);
+                Long at = issued.poll(10, TimeUnit.SECONDS);
+                if (at == null) {
+                    throw new IllegalStateException("The engine issued no action within 10 s of stimulus 'x" + i
+                            + "'; the script engine is " + runtime.engineName() + ".");
+                }
+                if (i >= warmUp) {
+                    latencyNanos.recordValue(Math.max(0, at - start));
+                }
+            }
+            return new Figures(samples, micros(scriptNanos, 50), micros(scriptNanos, 99), micros(latencyNanos, 50),
+                    micros(latencyNanos, 99), latencyNanos.getMaxValue() / 1e3, runtime.compilerEnabled(),
+                    runtime.engineName());
+        } finally {
+            engineThread.shutdownNow();
+        }
+    }
+
+    private static double micros(Histogram h, double percentile) {
+        return h.getValueAtPercentile(percentile) / 1e3;
+    }
+
+    private static List<Change> classes() {
+        return List.of(
+                new Change.Add(Frame.classFrame("Stimulus").slot(Slot.builder("key", DataType.INTEGER).build()).build()),
+                new Change.Add(Frame.classFrame("StimA").parent("Stimulus").build()),
+                new Change.Add(Frame.classFrame("Responder").slot(Slot.builder("name", DataType.STRING).build()).build()),
+                new Change.Add(Frame.instance("robot1", "Responder").provenance(Provenance.RUNTIME)
+                        .slot(Slot.ofValue("name", DataType.STRING, Value.of("Robovie"))).build()),
+                new Change.Add(Frame.classFrame("Respond")
+                        .slot(Slot.builder("mS", DataType.INSTANCE).argument("StimA").required(true).build())
+                        .slot(Slot.builder("mR", DataType.INSTANCE).argument("Responder").required(true)
+                                .condition(ConditionParser.parse("COND_ANY")).build())
+                        .slot(Slot.ofValue("onInstantiate", DataType.STRING, Value.of(SCRIPT))).build()));
+    }
+
+    /** Times each {@code onInstantiate} call of the real script host; other scripts pass through untimed. */
+    private record TimedScripts(ScriptHost delegate, Histogram nanos) implements ScriptHost {
+        @Override public Object run(String frame, String slot, String source, Map<String, Object> globals) {
+            if (!"onInstantiate".equals(slot)) {
+                return delegate.run(frame, slot, source, globals);
+            }
+            long start = System.nanoTime();
+            try {
+                return delegate.run(frame, slot, source, globals);
+            } finally {
+                nanos.recordValue(System.nanoTime() - start);
+            }
+        }
+
+        @Override public boolean test(String frame, String slot, String source, Map<String, Object> globals) {
+            return delegate.test(frame, slot, source, globals);
+        }
+    }
+}
