@@ -150,7 +150,7 @@ final class InferenceBenchCommand implements Callable<Integer> {
         for (int i = 0; i < results.size(); i++) {
             InferenceRun r = results.get(i);
             sb.append(i == 0 ? "" : ", ").append(String.format(Locale.ROOT,
-                    "{\"n\": %d, \"firings\": %d, \"kicnp_s\": %.4f, \"drools_s\": %.4f, \"ratio\": %.3f}",
+                    "{\"n\": %d, \"firings\": %d, \"kicnp_s\": %.6f, \"drools_s\": %.6f, \"ratio\": %.4f}",
                     r.n(), r.firings(), r.kicnpSeconds(), r.droolsSeconds(), r.ratio()));
         }
         return sb.append(String.format(Locale.ROOT, "], \"script_us_median\": %.2f, \"stimulus_to_action_us_p99\": %.2f}",
