@@ -7,6 +7,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicReference;
 import org.HdrHistogram.Histogram;
 import org.HdrHistogram.SynchronizedHistogram;
 import org.kicnp.core.Change;
@@ -30,7 +31,8 @@ import org.kicnp.script.ScriptRuntime;
  * {@code Respond(mS: StimA, mR: Responder)} whose {@code onInstantiate} reads two slots of {@code s} and calls
  * {@code sendmsg}. Each sample asserts one stimulus with {@code kb.add} on the caller's thread; the recording action
  * sink stamps the moment the engine hands it the action ({@code stimulus → action}), and a timing wrapper around the
- * script host measures the {@code onInstantiate} call itself. Warm-up samples are discarded. The same is measured
+ * script host measures the {@code onInstantiate} call itself; the sink then reports the action ended, as a robot
+ * would, so actions do not pile up unfinished. Warm-up samples are discarded. The same is measured
  * first with the engine run by the asserting thread ({@code kb.add} then {@code runToQuiescence()}): the engine's
  * own path without the hand-over between threads, which on a busy machine is mostly the scheduler's.
  */
@@ -78,10 +80,14 @@ final class ActionLatencyProbe {
         KnowledgeBase kb = KnowledgeBase.create();
         kb.apply(classes());
         TimedScripts timed = new TimedScripts(new GraalScriptHost(runtime), scriptNanos);
-        InferenceEngine.Builder builder = InferenceEngine.builder(kb).scripts(timed)
-                .actionSink((Action a) -> issued.add(System.nanoTime()));
+        AtomicReference<InferenceEngine> self = new AtomicReference<>();
+        InferenceEngine.Builder builder = InferenceEngine.builder(kb).scripts(timed).actionSink((Action a) -> {
+            issued.add(System.nanoTime());
+            self.get().actionEnded(a.id(), "done"); // as the robot would report it; queued, handled after this firing
+        });
         runner.ifPresent(builder::runOn);
         try (InferenceEngine engine = builder.build()) {
+            self.set(engine);
             for (int i = 0; i < warmUp + samples; i++) {
                 timed.recording = i >= warmUp;
                 Frame stimulus = InferenceWorkload.stimulus("x" + i, "StimA", i);
