@@ -15,6 +15,7 @@ import picocli.CommandLine.Command;
             CoreBench.class,
             GatewayRelayCommand.class,
             GatewayBenchCommand.class,
+            InferenceBenchCommand.class,
         })
 public final class BenchMain implements Runnable {
     @CommandLine.Spec

@@ -35,6 +35,25 @@ final class Inheritance {
         return merge(chain(lookup, frame), slotName);
     }
 
+    /**
+     * The slot's effective value, as {@code slot(...).effectiveValue()} gives it, without merging facets when the
+     * lowest declaration holds a value or default itself (the common case: an instance's own slot value, a behavior
+     * frame's script): walking up stops there. Otherwise the full merge decides, since an ancestor's value may not
+     * fit the lower declaration.
+     */
+    static Optional<Value> value(Function<String, Frame> lookup, Frame frame, String slotName) {
+        Frame f = frame;
+        for (int depth = 0; f != null && depth < MAX_DEPTH; depth++) {
+            Optional<Slot> own = f.ownSlot(slotName);
+            if (own.isPresent()) {
+                Optional<Value> v = own.get().effectiveValue();
+                return v.isPresent() ? v : slot(lookup, frame, slotName).flatMap(e -> e.slot().effectiveValue());
+            }
+            f = f.parent().map(lookup).orElse(null);
+        }
+        return Optional.empty();
+    }
+
     static List<EffectiveSlot> slots(Function<String, Frame> lookup, Frame frame) {
         List<Frame> chain = chain(lookup, frame);
         Set<String> names = new LinkedHashSet<>();

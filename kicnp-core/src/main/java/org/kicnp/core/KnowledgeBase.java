@@ -161,7 +161,7 @@ public final class KnowledgeBase {
 
     /** The slot's value after inheritance: the nearest value or default. */
     public Optional<Value> value(String frame, String slotName) {
-        return slot(frame, slotName).flatMap(e -> e.slot().effectiveValue());
+        return read(() -> Inheritance.value(this::frameOrNull, node(frame).frame, slotName));
     }
 
     /** Semantic links into the frame: those it declares "from" and those other frames declare "to" it. */

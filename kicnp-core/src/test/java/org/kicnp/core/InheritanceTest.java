@@ -36,6 +36,21 @@ class InheritanceTest {
     }
 
     @Test
+    void value_isTheMergedSlotsEffectiveValue_forEveryFrameAndSlot() {
+        KnowledgeBase kb = robots();
+        for (String frame : List.of("Robot", "HumanoidRobot", "PINO", "Robovie")) {
+            for (String slot : List.of("speed", "name", "owner", "missing")) {
+                assertThat(kb.value(frame, slot)).as("%s.%s", frame, slot)
+                        .isEqualTo(kb.slot(frame, slot).flatMap(e -> e.slot().effectiveValue()));
+            }
+        }
+        assertThat(kb.value("Robovie", "speed")).contains(Value.of(0.25));
+        assertThat(kb.value("PINO", "name")).contains(Value.of("PINO"));
+        assertThat(kb.value("Robovie", "name")).contains(Value.of("robot"));
+        assertThat(kb.value("Robovie", "owner")).isEmpty();
+    }
+
+    @Test
     void lowerFrameOverrides_andItsDefaultHidesAnAncestorsValue() {
         KnowledgeBase kb = robots();
         assertThat(kb.value("Robot", "speed")).contains(Value.of(0.5));

@@ -2,8 +2,10 @@ package org.kicnp.inference;
 
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -28,6 +30,10 @@ final class ActionCoordinator {
     private final Consumer<TraceEvent> trace;
     private final Consumer<Tracked> finished;
     private final Map<String, Tracked> actions = new LinkedHashMap<>();
+    /** Actions not finished yet, and those of them sent or started: the only ones time and coordination concern. */
+    private final Set<Tracked> open = new LinkedHashSet<>();
+    private final Set<Tracked> running = new LinkedHashSet<>();
+    private long issued;
     private final List<Tracked> held = new ArrayList<>();
     private final List<Tracked> syncBuffer = new ArrayList<>();
 
@@ -38,9 +44,11 @@ final class ActionCoordinator {
         long deadline;
         String detail = "";
         final Set<String> waitsOn = new HashSet<>();
+        final long seq;
 
-        Tracked(Action a) {
+        Tracked(Action a, long seq) {
             this.action = a;
+            this.seq = seq;
         }
     }
 
@@ -63,15 +71,18 @@ final class ActionCoordinator {
     }
 
     void issue(Action a) {
-        Tracked t = new Tracked(a);
+        Tracked t = new Tracked(a, issued++);
         actions.put(a.id(), t);
         trace.accept(new TraceEvent.ActionIssued(a));
         Set<String> preds = related(a.frame(), Relation.Coordination.SUCCESSION, Direction.INTO);
-        for (Tracked o : actions.values()) {
-            if (o != t && !o.status.finished() && preds.contains(o.action.frame())) {
-                t.waitsOn.add(o.action.id());
+        if (!preds.isEmpty()) {
+            for (Tracked o : open) {
+                if (preds.contains(o.action.frame())) {
+                    t.waitsOn.add(o.action.id());
+                }
             }
         }
+        open.add(t);
         if (!related(a.frame(), Relation.Coordination.SYNCHRONIZATION, Direction.BOTH).isEmpty()) {
             syncBuffer.add(t);
             changed(t, Action.Status.HELD, "waiting for its synchronization group");
@@ -134,8 +145,15 @@ final class ActionCoordinator {
     /** Times out every running action whose deadline has passed. */
     void checkTimeouts() {
         long now = clock.millis();
-        for (Tracked t : List.copyOf(actions.values())) {
-            if ((t.status == Action.Status.SENT || t.status == Action.Status.STARTED) && now > t.deadline) {
+        List<Tracked> overdue = new ArrayList<>();
+        for (Tracked t : running) {
+            if (now > t.deadline) {
+                overdue.add(t);
+            }
+        }
+        overdue.sort(Comparator.comparingLong(t -> t.seq));
+        for (Tracked t : overdue) {
+            if (t.status == Action.Status.SENT || t.status == Action.Status.STARTED) {
                 finish(t, Action.Status.TIMED_OUT, "no end reported within " + limit(t) + " ms");
             }
         }
@@ -185,9 +203,8 @@ final class ActionCoordinator {
     }
 
     private boolean restrictedByOther(Tracked t) {
-        for (Tracked o : actions.values()) {
-            if (o != t && (o.status == Action.Status.SENT || o.status == Action.Status.STARTED)
-                    && !o.action.robot().equals(t.action.robot())
+        for (Tracked o : running) {
+            if (o != t && !o.action.robot().equals(t.action.robot())
                     && !related(o.action.frame(), Relation.Coordination.RESTRICTION, Direction.OUT_OF).isEmpty()) {
                 return true;
             }
@@ -222,6 +239,14 @@ final class ActionCoordinator {
 
     private void changed(Tracked t, Action.Status s, String detail) {
         t.status = s;
+        if (s == Action.Status.SENT || s == Action.Status.STARTED) {
+            running.add(t);
+        } else {
+            running.remove(t);
+        }
+        if (s.finished()) {
+            open.remove(t);
+        }
         t.detail = detail == null ? "" : detail;
         trace.accept(new TraceEvent.ActionChanged(t.action.id(), s, t.detail));
     }

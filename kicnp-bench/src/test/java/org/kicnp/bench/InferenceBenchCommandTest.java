@@ -1,0 +1,71 @@
+package org.kicnp.bench;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import picocli.CommandLine;
+
+class InferenceBenchCommandTest {
+
+    @Test
+    void expectedFirings_countsEveryLevelPerKeyGroup_includingAPartialLastGroup() {
+        assertThat(new InferenceWorkload(4).expectedFirings()).isEqualTo(2 + 2 + 4);
+        assertThat(new InferenceWorkload(8).expectedFirings()).isEqualTo(16);
+        // s0, s1 = StimA, s2 = StimB of key 0: two Pairs and nothing deeper without a StimC
+        assertThat(new InferenceWorkload(3).expectedFirings()).isEqualTo(2);
+        assertThat(new InferenceWorkload(2).expectedFirings()).isZero();
+    }
+
+    @Test
+    void bothEngines_onTheSameWorkload_fireExactlyTheExpectedNumberOfTimes() {
+        InferenceWorkload w = new InferenceWorkload(203);
+        EngineResult kicnp = KicnpInferenceRun.run(w);
+        EngineResult drools = DroolsInferenceRun.compile().run(w);
+
+        assertThat(kicnp.firings()).isEqualTo(w.expectedFirings()).isEqualTo(drools.firings()).isEqualTo(50 * 8 + 2);
+        assertThat(InferenceBenchCommand.check(w, kicnp, drools)).isEqualTo(402);
+    }
+
+    @Test
+    void check_whenTheEnginesFireDifferently_failsNamingBothCounts() {
+        InferenceWorkload w = new InferenceWorkload(8);
+
+        assertThatThrownBy(() -> InferenceBenchCommand.check(w, new EngineResult(16, 1, 1), new EngineResult(15, 1, 1)))
+                .isInstanceOf(InferenceBenchCommand.FiringsDifferException.class)
+                .hasMessageContaining("K-ICNP fired 16 times, Drools 15 times, the workload expects 16");
+    }
+
+    @Test
+    void inference_tinyConfiguration_printsTheTableThenOneJsonObjectWithEveryFigure() throws Exception {
+        StringWriter out = new StringWriter();
+        CommandLine cli = new CommandLine(new BenchMain());
+        cli.setOut(new PrintWriter(out));
+
+        int exit = cli.execute("inference", "--n", "200", "--runs", "1", "--warmup-n", "100", "--warmup-runs", "1",
+                "--latency-samples", "200", "--latency-warmup", "200");
+
+        assertThat(exit).isZero();
+        List<String> lines = out.toString().lines().toList();
+        assertThat(out.toString()).contains("same explicit priorities").contains("firings")
+                .contains("Graal compiler");
+        JsonNode json = new ObjectMapper().readTree(lines.get(lines.size() - 1));
+        assertThat(json.fieldNames()).toIterable()
+                .containsExactly("runs", "script_us_median", "stimulus_to_action_us_p99");
+        JsonNode run = json.get("runs").get(0);
+        assertThat(run.fieldNames()).toIterable().containsExactly("n", "firings", "kicnp_s", "drools_s", "ratio");
+        assertThat(run.get("n").asInt()).isEqualTo(200);
+        assertThat(run.get("firings").asLong()).isEqualTo(new InferenceWorkload(200).expectedFirings()).isEqualTo(400);
+        assertThat(run.get("kicnp_s").asDouble()).isPositive();
+        assertThat(run.get("drools_s").asDouble()).isPositive();
+        assertThat(run.get("ratio").asDouble())
+                .isCloseTo(run.get("kicnp_s").asDouble() / run.get("drools_s").asDouble(), org.assertj.core.data.Percentage.withPercentage(1));
+        assertThat(json.get("script_us_median").asDouble()).isPositive();
+        assertThat(json.get("stimulus_to_action_us_p99").asDouble()).isPositive();
+    }
+}
