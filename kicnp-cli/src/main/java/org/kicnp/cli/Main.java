@@ -13,7 +13,10 @@ import picocli.CommandLine.Command;
         description = "K-ICNP: a multi-robot management platform on a frame knowledge base.",
         subcommands = {
             CommandLine.HelpCommand.class,
+            ValidateCommand.class,
             RobotsCommand.class,
+            BenchCommand.class,
+            TestCommand.class,
         })
 public final class Main implements Runnable {
     @CommandLine.Spec
