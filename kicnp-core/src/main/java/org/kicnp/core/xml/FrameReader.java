@@ -268,6 +268,10 @@ final class FrameReader {
                     return false;
                 }
                 case XMLStreamConstants.CHARACTERS, XMLStreamConstants.CDATA -> {
+                    if (r.isWhiteSpace()) {
+                        // Indentation: Woodstox knows it is blank without building a String for it.
+                        continue;
+                    }
                     String t = r.getText().strip();
                     if (!t.isEmpty() && !Located.isNull(t)) {
                         error(r.getLocation(), "Text '" + abbreviate(t) + "' is not allowed directly inside "
