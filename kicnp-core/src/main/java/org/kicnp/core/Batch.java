@@ -11,18 +11,21 @@ import java.util.Map;
  * null where the batch removes it, in the order names were first touched.
  */
 final class Batch {
-    private final Map<String, Frame> staged = new LinkedHashMap<>();
+    private final Map<String, Frame> staged;
     private final Map<String, List<String>> stagedChildren = new HashMap<>();
 
-    private Batch() {
+    private Batch(int size) {
+        staged = LinkedHashMap.newLinkedHashMap(size);
     }
 
     static Batch stage(List<? extends Change> changes, Map<String, Node> nodes) {
-        Batch b = new Batch();
+        Batch b = new Batch(changes.size());
         List<Problem> problems = new ArrayList<>();
         for (Change c : changes) {
             String name = c.name();
-            boolean exists = b.staged.containsKey(name) ? b.staged.get(name) != null : nodes.containsKey(name);
+            Frame already = b.staged.get(name);
+            // Staged as null means removed earlier in the batch; otherwise the knowledge base decides.
+            boolean exists = already != null || nodes.containsKey(name) && !b.staged.containsKey(name);
             switch (c) {
                 case Change.Add a -> {
                     if (exists) {

@@ -12,8 +12,8 @@ final class Indexer {
     }
 
     static void apply(Map<String, Node> nodes, List<FrameEvent> events, long version) {
-        List<Node> attach = new ArrayList<>();
-        List<Node> touched = new ArrayList<>();
+        List<Node> attach = new ArrayList<>(events.size());
+        List<Node> touched = new ArrayList<>(events.size());
         for (FrameEvent e : events) {
             switch (e) {
                 case FrameEvent.Removed r -> {
@@ -49,10 +49,13 @@ final class Indexer {
             }
         }
         for (Node n : attach) {
-            Set<Node> below = n.frame.isInstance() ? Set.of(n) : n.instances;
-            if (below != null && !below.isEmpty()) {
+            if (n.frame.isInstance()) {
                 for (Node a = n.parent; a != null; a = a.parent) {
-                    a.instances().addAll(below);
+                    a.instances().add(n);
+                }
+            } else if (n.instances != null && !n.instances.isEmpty()) {
+                for (Node a = n.parent; a != null; a = a.parent) {
+                    a.instances().addAll(n.instances);
                 }
             }
         }

@@ -9,6 +9,9 @@ final class References {
     }
 
     static Set<String> of(Frame f) {
+        if (!mentionsAny(f)) {
+            return Set.of();
+        }
         Set<String> out = new LinkedHashSet<>();
         for (Slot s : f.slots()) {
             if (s.type() == DataType.INSTANCE || s.type() == DataType.FRAME
@@ -25,6 +28,25 @@ final class References {
         f.linksFrom().forEach(l -> out.add(l.frame()));
         out.remove(f.name());
         return out;
+    }
+
+    /** Whether the frame may mention another frame at all; most frames of a large knowledge base do not. */
+    private static boolean mentionsAny(Frame f) {
+        if (!f.parts().isEmpty() || !f.linksTo().isEmpty() || !f.linksFrom().isEmpty()) {
+            return true;
+        }
+        for (Slot s : f.slots()) {
+            if (s.argument().isPresent() || s.frameRelated().isPresent() || !s.frameListRelated().isEmpty()
+                    || s.value().filter(References::mayRefer).isPresent()
+                    || s.defaultValue().filter(References::mayRefer).isPresent()) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private static boolean mayRefer(Value v) {
+        return v instanceof Value.Ref || v instanceof Value.Lst;
     }
 
     /** A list's argument names a class unless it names a scalar data type. */

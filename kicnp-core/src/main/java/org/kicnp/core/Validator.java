@@ -1,6 +1,7 @@
 package org.kicnp.core;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
@@ -17,6 +18,10 @@ final class Validator {
     private final Map<String, Frame> staged;
     private final Map<String, Node> base;
     private final List<Problem> problems = new ArrayList<>();
+    /** Per class name: the slot declarations it inherits and makes (see {@link #declarations}). */
+    private final Map<String, Map<String, Declaration>> declared = new HashMap<>();
+    /** Frames whose IS-A chain has been walked to its root without a cycle. */
+    private final Set<String> acyclic = new HashSet<>();
 
     /**
      * @param staged touched names to their frame after the batch, or null where the batch removes the frame
@@ -26,8 +31,9 @@ final class Validator {
         this.staged = staged;
         this.base = base;
         this.view = name -> {
-            if (staged.containsKey(name)) {
-                return staged.get(name);
+            Frame f = staged.get(name);
+            if (f != null || staged.containsKey(name)) {
+                return f;
             }
             Node n = base.get(name);
             return n == null ? null : n.frame;
@@ -103,8 +109,10 @@ final class Validator {
         for (SemanticLink l : f.linksFrom()) {
             requireFrame(name, l.frame(), "has a " + l.relation().name().toLowerCase() + " link from");
         }
+        Map<String, Declaration> inheritedSlots = f.parent().isPresent() && !f.slots().isEmpty()
+                ? declarations(f.parent().get()) : Map.of();
         for (Slot s : f.slots()) {
-            checkSlot(f, s);
+            checkSlot(f, s, inheritedSlots);
         }
         if (f.provenance().durable()) {
             checkNoRuntimeReferences(f);
@@ -125,26 +133,13 @@ final class Validator {
         }
     }
 
-    private void checkSlot(Frame f, Slot own) {
+    private void checkSlot(Frame f, Slot own, Map<String, Declaration> inheritedSlots) {
         String name = f.name();
-        String where = "Slot '" + own.name() + "' of frame '" + name + "'";
-        Frame declaring = null;
-        Slot above = null;
-        String inheritedArgument = null;
-        for (Frame x = parentOf(f); x != null; x = parentOf(x)) {
-            Slot s = ownSlotOrNull(x, own.name());
-            if (s == null) {
-                continue;
-            }
-            if (above == null) {
-                above = s;
-                declaring = x;
-            }
-            if (s.argument().isPresent()) {
-                inheritedArgument = s.argument().get();
-                break;
-            }
-        }
+        SlotRef where = new SlotRef(own.name(), name);
+        Declaration inherited = inheritedSlots.get(own.name());
+        Frame declaring = inherited == null ? null : inherited.declaredBy();
+        Slot above = inherited == null ? null : inherited.slot();
+        String inheritedArgument = inherited == null ? null : inherited.argument();
         if (above != null && above.type() != own.type()) {
             problems.add(Problem.of(name, own.name(), where + " is " + own.type().xmlName() + " but '"
                     + declaring.name() + "' declares it " + above.type().xmlName() + "."));
@@ -175,7 +170,7 @@ final class Validator {
         checkPaths(f, own, where);
     }
 
-    private void checkPaths(Frame f, Slot own, String where) {
+    private void checkPaths(Frame f, Slot own, SlotRef where) {
         List<Operand> operands = switch (own.condition()) {
             case Condition.Compare c -> List.of(c.right());
             case Condition.Between b -> List.of(b.low(), b.high());
@@ -190,7 +185,7 @@ final class Validator {
         }
     }
 
-    private void checkRefs(String frame, String slot, String where, Value v, Optional<String> instanceOf) {
+    private void checkRefs(String frame, String slot, SlotRef where, Value v, Optional<String> instanceOf) {
         switch (v) {
             case Value.Ref r -> {
                 Frame target = view.apply(r.frame());
@@ -217,7 +212,7 @@ final class Validator {
         return false;
     }
 
-    private void requireClass(String frame, String slot, String where, String cls) {
+    private void requireClass(String frame, String slot, SlotRef where, String cls) {
         Frame c = view.apply(cls);
         if (c == null) {
             problems.add(Problem.of(frame, slot, where + " names class '" + cls + "' as its ARGUMENT, which is not defined."));
@@ -235,8 +230,12 @@ final class Validator {
 
     private boolean hasCycle(Frame f) {
         // Real hierarchies are shallow: walk without allocating, and only track names on a suspiciously long chain.
+        // A chain that reaches a frame already walked without a cycle has none either.
         int steps = 0;
         for (Frame x = f; x != null; x = parentOf(x)) {
+            if (acyclic.contains(x.name())) {
+                break;
+            }
             if (++steps > 10_000) {
                 Set<String> seen = new HashSet<>();
                 for (Frame y = f; y != null; y = parentOf(y)) {
@@ -247,6 +246,7 @@ final class Validator {
                 return false;
             }
         }
+        acyclic.add(f.name());
         return false;
     }
 
@@ -254,13 +254,57 @@ final class Validator {
         return f.parent().isPresent() ? view.apply(f.parent().get()) : null;
     }
 
-    private static Slot ownSlotOrNull(Frame f, String slotName) {
-        for (Slot s : f.slots()) {
-            if (s.name().equals(slotName)) {
-                return s;
-            }
+    /**
+     * The slots declared on class {@code name} or above it, each with the nearest frame declaring it and the nearest
+     * ARGUMENT given for it on the way up. Computed once per class and batch: the frames of a large load share few
+     * parents, so this replaces a walk up the IS-A chain per slot with one lookup. The chain is known to be acyclic,
+     * because a frame with a cycle above it is reported before its slots are checked.
+     */
+    private Map<String, Declaration> declarations(String name) {
+        Map<String, Declaration> known = declared.get(name);
+        if (known != null) {
+            return known;
         }
-        return null;
+        List<Frame> chain = new ArrayList<>();
+        Map<String, Declaration> above = Map.of();
+        for (Frame x = view.apply(name); x != null; x = parentOf(x)) {
+            Map<String, Declaration> memo = declared.get(x.name());
+            if (memo != null) {
+                above = memo;
+                break;
+            }
+            chain.add(x);
+        }
+        for (int i = chain.size() - 1; i >= 0; i--) {
+            Frame x = chain.get(i);
+            Map<String, Declaration> here;
+            if (x.slots().isEmpty()) {
+                here = above;
+            } else {
+                here = new HashMap<>(Math.max(16, (above.size() + x.slots().size()) * 2));
+                here.putAll(above);
+                for (Slot s : x.slots()) {
+                    Declaration up = above.get(s.name());
+                    String argument = s.argument().isPresent() ? s.argument().get()
+                            : up == null ? null : up.argument();
+                    here.put(s.name(), new Declaration(s, x, argument));
+                }
+            }
+            declared.put(x.name(), here);
+            above = here;
+        }
+        return above;
+    }
+
+    /** Names a slot in problem messages; the text is only built when a problem is reported. */
+    private record SlotRef(String slot, String frame) {
+        @Override public String toString() {
+            return "Slot '" + slot + "' of frame '" + frame + "'";
+        }
+    }
+
+    /** A slot as declared up the IS-A chain: the nearest declaration, and the nearest ARGUMENT at or above it. */
+    private record Declaration(Slot slot, Frame declaredBy, String argument) {
     }
 
     private String cycleText(Frame f) {

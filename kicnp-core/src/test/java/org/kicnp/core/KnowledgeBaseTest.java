@@ -109,6 +109,27 @@ class KnowledgeBaseTest {
     }
 
     @Test
+    void apply_whenArgumentIsDeclaredTwoClassesUp_checksValuesAgainstItAndTypesAgainstTheNearest() {
+        KnowledgeBase kb = figure1();
+        kb.add(Frame.instance("bob", "NewUser").build());
+        List<Change> batch = List.of(
+                new Change.Add(Frame.classFrame("Talk").parent("Speech").slot(instanceSlot("mUser", "KnownUser"))
+                        .build()),
+                new Change.Add(Frame.classFrame("Chat").parent("Talk")
+                        .slot(Slot.builder("mUser", DataType.INSTANCE).required(true).build()).build()),
+                new Change.Add(Frame.classFrame("Banter").parent("Chat").build()),
+                new Change.Add(Frame.instance("c1", "Banter")
+                        .slot(Slot.ofValue("mUser", DataType.INSTANCE, Value.ref("bob"))).build()),
+                new Change.Add(Frame.instance("c2", "Chat")
+                        .slot(Slot.ofValue("mUser", DataType.STRING, Value.of("bob"))).build()));
+
+        assertThatThrownBy(() -> kb.apply(batch)).isInstanceOfSatisfying(BatchRejectedException.class, e ->
+                assertThat(e.problems()).extracting(Problem::message).containsExactlyInAnyOrder(
+                        "Slot 'mUser' of frame 'c1' must hold an instance of 'KnownUser', but 'bob' is not one.",
+                        "Slot 'mUser' of frame 'c2' is TYPE_STR but 'Chat' declares it TYPE_INSTANCE."));
+    }
+
+    @Test
     void add_whenSlotTypeDiffersFromInheritedDeclaration_rejects() {
         KnowledgeBase kb = figure1();
         assertThatThrownBy(() -> kb.add(Frame.instance("ken", "KnownUser")

@@ -129,30 +129,61 @@ final class FrameMapper {
         if (type == null) {
             return Optional.empty();
         }
+        // Plain null checks rather than Optional chains: this runs for every slot of a load, and each capturing
+        // lambda is an allocation.
         Slot.Builder b = Slot.builder(name, type);
-        Optional<String> argument = s.present(SlotTag.ARGUMENT).map(a -> interner.intern(a.stripped()));
-        argument.ifPresent(b::argument);
-        s.present(SlotTag.CONDITION).ifPresent(c -> condition(c, where).ifPresent(b::condition));
-        Optional<Located> value = present(s, SlotTag.VALUE, type);
-        Optional<Located> dflt = present(s, SlotTag.DEFAULT, type);
-        if (value.isPresent() && dflt.isPresent()) {
-            error(dflt.get().at(source), where + " has both a VALUE and a DEFAULT; the paper allows one or the other "
+        Located argumentItem = given(s, SlotTag.ARGUMENT);
+        Optional<String> argument = argumentItem == null ? Optional.empty()
+                : Optional.of(interner.intern(argumentItem.stripped()));
+        if (argumentItem != null) {
+            b.argument(argument.get());
+        }
+        Located conditionItem = given(s, SlotTag.CONDITION);
+        if (conditionItem != null) {
+            condition(conditionItem, where).ifPresent(b::condition);
+        }
+        Located value = present(s, SlotTag.VALUE, type);
+        Located dflt = present(s, SlotTag.DEFAULT, type);
+        if (value != null && dflt != null) {
+            error(dflt.at(source), where + " has both a VALUE and a DEFAULT; the paper allows one or the other "
                     + "(Table 2).");
-        } else {
-            value.ifPresent(v -> value(v, type, argument, where, "VALUE").ifPresent(b::value));
-            dflt.ifPresent(v -> value(v, type, argument, where, "DEFAULT").ifPresent(b::defaultValue));
+        } else if (value != null) {
+            Value v = value(value, type, argument, where, "VALUE");
+            if (v != null) {
+                b.value(v);
+            }
+        } else if (dflt != null) {
+            Value v = value(dflt, type, argument, where, "DEFAULT");
+            if (v != null) {
+                b.defaultValue(v);
+            }
         }
         b.required(flag(s.facets().get(SlotTag.REQUIRED), where, "REQUIRED", false));
         b.shared(flag(s.facets().get(SlotTag.SHARED), where, "SHARED", true));
         b.unique(flag(s.facets().get(SlotTag.UNIQUE), where, "UNIQUE", false));
         b.reactive(flag(s.facets().get(SlotTag.REACTIVE), where, "REACTIVE", true));
-        s.present(SlotTag.ROLE).ifPresent(r -> b.role(interner.intern(r.stripped())));
-        s.present(SlotTag.FROM).ifPresent(r -> b.from(interner.intern(r.stripped())));
-        s.present(SlotTag.FRAMERELATED).ifPresent(r -> b.frameRelated(interner.intern(r.stripped())));
-        s.present(SlotTag.FRAMELISTRELATED).ifPresent(r -> b.frameListRelated(names(r, "FRAMELISTRELATED", "ITEM")));
-        s.present(SlotTag.ONNEEDED).ifPresent(d -> b.onNeeded(d.text()));
-        s.present(SlotTag.ONADDED).ifPresent(d -> b.onAdded(d.text()));
-        s.present(SlotTag.ONREMOVED).ifPresent(d -> b.onRemoved(d.text()));
+        Located l;
+        if ((l = given(s, SlotTag.ROLE)) != null) {
+            b.role(interner.intern(l.stripped()));
+        }
+        if ((l = given(s, SlotTag.FROM)) != null) {
+            b.from(interner.intern(l.stripped()));
+        }
+        if ((l = given(s, SlotTag.FRAMERELATED)) != null) {
+            b.frameRelated(interner.intern(l.stripped()));
+        }
+        if ((l = given(s, SlotTag.FRAMELISTRELATED)) != null) {
+            b.frameListRelated(names(l, "FRAMELISTRELATED", "ITEM"));
+        }
+        if ((l = given(s, SlotTag.ONNEEDED)) != null) {
+            b.onNeeded(l.text());
+        }
+        if ((l = given(s, SlotTag.ONADDED)) != null) {
+            b.onAdded(l.text());
+        }
+        if ((l = given(s, SlotTag.ONREMOVED)) != null) {
+            b.onRemoved(l.text());
+        }
         if (errors.size() > before) {
             return Optional.empty();
         }
@@ -164,16 +195,22 @@ final class FrameMapper {
         }
     }
 
-    /** A VALUE or DEFAULT that says something; for a list, {@code []} says "the empty list". */
-    private static Optional<Located> present(SlotElement s, SlotTag tag, DataType type) {
+    /** A VALUE or DEFAULT that says something, or null; for a list, {@code []} says "the empty list". */
+    private static Located present(SlotElement s, SlotTag tag, DataType type) {
         Located l = s.facets().get(tag);
         if (l == null) {
-            return Optional.empty();
+            return null;
         }
         if (type == DataType.LIST && l.items().isEmpty() && l.stripped().equals("[]")) {
-            return Optional.of(l);
+            return l;
         }
-        return l.absent() ? Optional.empty() : Optional.of(l);
+        return l.absent() ? null : l;
+    }
+
+    /** The facet if it is given and not empty or NULL, else null. */
+    private static Located given(SlotElement s, SlotTag tag) {
+        Located l = s.facets().get(tag);
+        return l == null || l.absent() ? null : l;
     }
 
     private DataType type(FrameElement fe, SlotElement s, String name, Owner where) {
@@ -239,7 +276,8 @@ final class FrameMapper {
         return new SourceLocation(source, line, col);
     }
 
-    private Optional<Value> value(Located v, DataType type, Optional<String> argument, Owner where, String what) {
+    /** The value, or null after reporting why it does not fit. */
+    private Value value(Located v, DataType type, Optional<String> argument, Owner where, String what) {
         try {
             if (type == DataType.LIST) {
                 if (v.items().isEmpty() && !v.stripped().equals("[]")) {
@@ -251,16 +289,16 @@ final class FrameMapper {
                 for (Located item : v.items()) {
                     items.add(scalar(itemType, item));
                 }
-                return Optional.of(new Value.Lst(items));
+                return new Value.Lst(items);
             }
             if (!v.items().isEmpty()) {
                 throw new IllegalArgumentException("ITEM elements are only for TYPE_LIST slots.");
             }
-            return Optional.of(scalar(type, v));
+            return scalar(type, v);
         } catch (IllegalArgumentException x) {
             error(v.at(source), where + " has a " + what + " that does not fit its type " + type.xmlName() + ": "
                     + x.getMessage());
-            return Optional.empty();
+            return null;
         }
     }
 

@@ -19,6 +19,7 @@ final class FrameReader {
     private final String source;
     private final List<LoadError> errors;
     private final Consumer<FrameElement> sink;
+    private final TextCache texts = new TextCache();
 
     private FrameReader(XMLStreamReader r, String source, List<LoadError> errors, Consumer<FrameElement> sink) {
         this.r = r;
@@ -219,7 +220,8 @@ final class FrameReader {
                         } else {
                             textLine = 0;
                         }
-                        text = r.getText();
+                        text = event == XMLStreamConstants.CHARACTERS
+                                ? texts.text(r.getTextCharacters(), r.getTextStart(), r.getTextLength()) : r.getText();
                     } else if (!(r.isWhiteSpace() && text.isBlank())) {
                         // White space around ITEM children is dropped; text beside items is reported below.
                         if (more == null) {
@@ -268,6 +270,10 @@ final class FrameReader {
                     return false;
                 }
                 case XMLStreamConstants.CHARACTERS, XMLStreamConstants.CDATA -> {
+                    if (r.isWhiteSpace()) {
+                        // Indentation: Woodstox knows it is blank without building a String for it.
+                        continue;
+                    }
                     String t = r.getText().strip();
                     if (!t.isEmpty() && !Located.isNull(t)) {
                         error(r.getLocation(), "Text '" + abbreviate(t) + "' is not allowed directly inside "

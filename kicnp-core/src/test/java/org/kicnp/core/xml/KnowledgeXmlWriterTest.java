@@ -155,6 +155,32 @@ class KnowledgeXmlWriterTest {
     }
 
     @Test
+    void write_instanceSlots_writeFlagsOnlyWhenNotDefaultAndReadBackEqual() {
+        Frame f = Frame.instance("user1", "NewUser")
+                .slot(Slot.ofValue("name", DataType.STRING, Value.of("Kim")))
+                .slot(Slot.builder("age", DataType.INTEGER).value(Value.of(7L)).required(true).shared(false)
+                        .unique(true).build())
+                .build();
+
+        String xml = KnowledgeXmlWriter.toXml(f);
+
+        assertThat(xml).contains("""
+                    <SLOT>
+                      <NAME>name</NAME>
+                      <TYPE>TYPE_STR</TYPE>
+                      <VALUE>Kim</VALUE>
+                    </SLOT>
+                """).contains("""
+                      <VALUE>7</VALUE>
+                      <REQUIRED>TRUE</REQUIRED>
+                      <SHARED>FALSE</SHARED>
+                      <UNIQUE>TRUE</UNIQUE>
+                """);
+        assertThat(KnowledgeLoader.parseText(xml, "test", KnowledgeBase.create()))
+                .extracting(SourcedFrame::frame).containsExactly(f);
+    }
+
+    @Test
     void write_scriptWithMarkup_usesCdataAndSplitsItsEnd() {
         Frame f = Frame.classFrame("B").slot(Slot.builder("s", DataType.STRING).onAdded("if (a < b) x(\"]]>\");\n")
                 .build()).build();
