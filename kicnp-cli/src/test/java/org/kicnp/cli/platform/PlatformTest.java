@@ -82,7 +82,10 @@ class PlatformTest {
                 user.assertFrame(Frame.instance("userA", "NewUser")
                         .slot(Slot.ofValue("faceText", DataType.STRING, Value.of("0.1,0.2"))).build());
 
-                Command c = robovie.commands.poll(20, TimeUnit.SECONDS);
+                Command look = robovie.commands.poll(20, TimeUnit.SECONDS);
+                assertThat(look).isNotNull();
+                assertThat(look.action()).isEqualTo("head"); // FirstMeet: Robovie looks at the face
+                Command c = robovie.commands.poll(20, TimeUnit.SECONDS); // AskUserName, after it (succession)
                 assertThat(c).isNotNull();
                 assertThat(c.robot()).isEqualTo("robovie");
                 assertThat(c.action()).isEqualTo("say");
