@@ -36,6 +36,8 @@ final class TraceLog implements TraceListener, KnowledgeListener {
             case TraceEvent.ScriptFailed s -> log.record("script_failed", Map.of("frame", s.frame(), "slot", s.slot(),
                     "instance", s.instance(), "message", s.message()));
             case TraceEvent.Retracted r -> log.record("retracted", Map.of("instance", r.instance(), "reason", r.reason()));
+            case TraceEvent.Blocked b -> log.record("blocked", Map.of("frame", b.frame(), "binding", b.binding(),
+                    "reason", b.reason()));
             case TraceEvent.LimitReached l -> log.record("limit", Map.of("limit", l.limit(), "frames", l.topFrames()));
             default -> { }
         }

@@ -2,15 +2,12 @@ package org.kicnp.cli.platform;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
-import java.util.Optional;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
-import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -18,6 +15,7 @@ import org.kicnp.agent.ActionHandle;
 import org.kicnp.agent.AgentBase;
 import org.kicnp.agent.AgentOptions;
 import org.kicnp.agent.UserAgent;
+import org.kicnp.cli.scenario.ScenarioFiles;
 import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
 import org.kicnp.core.Slot;
@@ -33,24 +31,6 @@ import org.kicnp.protocol.Message.Command;
 class PlatformTest {
     @TempDir
     Path tmp;
-
-    static Path copyScenario(Path to) throws IOException {
-        Path from = repoRoot().resolve("scenarios/table5");
-        try (Stream<Path> files = Files.list(from)) {
-            for (Path f : files.filter(p -> p.toString().endsWith(".xml")).toList()) {
-                Files.copy(f, to.resolve(f.getFileName()));
-            }
-        }
-        return to;
-    }
-
-    static Path repoRoot() {
-        Path p = Path.of("").toAbsolutePath();
-        while (p != null && !Files.isDirectory(p.resolve("scenarios/table5"))) {
-            p = p.getParent();
-        }
-        return Optional.ofNullable(p).orElseThrow();
-    }
 
     /** A stand-in Robovie that records its commands and ends each one. */
     static final class RecordingRobot extends AgentBase {
@@ -69,7 +49,7 @@ class PlatformTest {
 
     @Test
     void serve_whenAStimulusIsAsserted_theRobotReceivesTheCommandAndItsFeedbackEndsTheAction() throws Exception {
-        Path kb = copyScenario(Files.createDirectories(tmp.resolve("kb")));
+        Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
         try (Platform platform = Platform.start(PlatformConfig.of(kb).withEphemeralPorts())) {
             assertThat(Platform.defaultAgentsFile(kb)).exists();
             assertThat(platform.editorPasswordFile()).hasValueSatisfying(p -> assertThat(p).exists());
