@@ -35,6 +35,12 @@ public final class Platform implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(Platform.class);
     private static final DateTimeFormatter STAMP = DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss-SSS").withZone(ZoneOffset.UTC);
 
+    /**
+     * Time a behavior frame's script may run. Longer than the script runtime's default: the first runs of a script
+     * are interpreted (and slow on a loaded machine) until the JIT has compiled it.
+     */
+    static final java.time.Duration SCRIPT_TIME_LIMIT = java.time.Duration.ofSeconds(5);
+
     private final KnowledgeStore store;
     private final ScriptRuntime scripts;
     private final EventLog log;
@@ -97,7 +103,7 @@ public final class Platform implements AutoCloseable {
         try {
             KnowledgeBase kb = store.kb();
             log = EventLog.open(logFile);
-            scripts = ScriptRuntime.create(ScriptConfig.defaults());
+            scripts = ScriptRuntime.create(ScriptConfig.defaults().withTimeLimit(SCRIPT_TIME_LIMIT));
             engineThread = Executors.newSingleThreadExecutor(r -> daemon(r, "kicnp-engine"));
             CommandBridge bridge = new CommandBridge(kb, log);
             TraceLog traceLog = new TraceLog(log);

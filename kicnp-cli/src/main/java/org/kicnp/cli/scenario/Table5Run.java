@@ -81,11 +81,16 @@ public final class Table5Run implements AutoCloseable {
      * Returns once Robovie has asked for the drink and it was answered.
      */
     public void playFirstVisit(String name, String drink) throws TimeoutException, InterruptedException {
+        playUntilAskedForADrink(name);
+        user.say(drink);
+    }
+
+    /** User A's part of Table 5 up to Robovie's "What do you want to drink?". */
+    public void playUntilAskedForADrink(String name) throws TimeoutException, InterruptedException {
         user.appear();
         record.awaitLine("What is your name?", STEP);
         user.say("My name is " + name + ".");
         record.awaitLine("What do you want to drink?", STEP.multipliedBy(2));
-        user.say(drink);
     }
 
     /** Waits until AIBO has lain down, or Robovie has said AIBO cannot come. */
@@ -99,7 +104,13 @@ public final class Table5Run implements AutoCloseable {
     /** Leaves, and comes back: Robovie should greet by name. */
     public void playSecondVisit(String name) throws TimeoutException, InterruptedException {
         user.leave();
-        record.await(e -> e.kind().equals("signal") && e.text("sensor").equals("face_lost"), STEP, "the face lost");
+        record.await(e -> e.kind().equals("retracted") && e.text("instance").equals("signal_robovie_face_seen"), STEP,
+                "the end of the visit (FaceLost)");
+        playReturn(name);
+    }
+
+    /** User A, already known, comes in: Robovie should greet them by name. */
+    public void playReturn(String name) throws TimeoutException, InterruptedException {
         user.appear();
         record.awaitLine("Hi, " + name + ". Good to see you again.", STEP);
     }
