@@ -16,6 +16,8 @@ import picocli.CommandLine.Command;
             RobotsCommand.class,
             InferCommand.class,
             ServeCommand.class,
+            ReplayCommand.class,
+            DemoCommand.class,
         })
 public final class Main implements Runnable {
     @CommandLine.Spec

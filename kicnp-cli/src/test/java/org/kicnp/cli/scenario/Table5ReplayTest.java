@@ -46,6 +46,7 @@ class Table5ReplayTest {
             run.awaitEnd();
             RunRecord r = run.record();
             System.out.println(r.latencySummary());
+            assertThat(Table5Checks.problems(r, "Taro")).isEmpty();
 
             assertThat(r.lines()).containsSubsequence(
                     "How are you! I have never seen you before. What is your name?",
