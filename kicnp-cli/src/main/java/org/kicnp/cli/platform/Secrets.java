@@ -18,9 +18,9 @@ import java.util.Properties;
  * Files are created owner-read/write only where the file system allows it.
  */
 final class Secrets {
-    /** The agents a default agent file lets in: the four robots, the sentence parser and two user agents. */
+    /** The agents a default agent file lets in: the four robots, the sentence parser (a service) and user agents (User A's microphone, a user, a director). */
     static final List<String> ROBOTS = List.of("robovie", "pino", "scout", "aibo");
-    static final List<String> USERS = List.of("parser", "user", "director");
+    static final List<String> USERS = List.of("userA", "user", "director");
 
     private static final SecureRandom RANDOM = new SecureRandom();
 
@@ -43,6 +43,8 @@ final class Secrets {
             p.setProperty(robot + ".token", token());
             p.setProperty(robot + ".kinds", "robot");
         }
+        p.setProperty("parser.token", token());
+        p.setProperty("parser.kinds", "service");
         for (String user : USERS) {
             p.setProperty(user + ".token", token());
             p.setProperty(user + ".kinds", "user");

@@ -7,6 +7,8 @@ import java.util.Optional;
 import org.kicnp.agent.AgentBase;
 import org.kicnp.agent.AgentOptions;
 import org.kicnp.cli.platform.Platform;
+import org.kicnp.language.ParserAgent;
+import org.kicnp.language.SentenceParser;
 import org.kicnp.protocol.AgentKind;
 import org.kicnp.robots.AiboAgent;
 import org.kicnp.robots.FaceRecognizer;
@@ -17,7 +19,8 @@ import org.kicnp.robots.SimOptions;
 import org.kicnp.robots.SimWorld;
 
 /**
- * The simulated room (the pymunk simulator as a subprocess) and the four robot agents, connected to a platform's
+ * The simulated room (the pymunk simulator as a subprocess), the four robot agents and the sentence parser's
+ * agent, connected to a platform's
  * gateway with the tokens of its agent file. Robovie's recogniser follows the knowledge base's learned faces
  * ({@link FaceBook}).
  */
@@ -42,6 +45,8 @@ public final class RobotWorld implements AutoCloseable {
             w.connect(new PinoAgent(options(platform, "pino"), sim));
             w.connect(new ScoutAgent(options(platform, "scout"), sim));
             w.connect(new AiboAgent(options(platform, "aibo"), sim));
+            w.connect(new ParserAgent(AgentOptions.of("127.0.0.1", platform.gatewayPort(), "parser", AgentKind.SERVICE,
+                    platform.token("parser")), SentenceParser.standard()));
             return w;
         } catch (RuntimeException e) {
             w.close();

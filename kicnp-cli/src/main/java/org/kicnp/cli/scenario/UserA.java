@@ -3,26 +3,20 @@ package org.kicnp.cli.scenario;
 import java.time.Duration;
 import java.util.Map;
 import java.util.Optional;
-import java.util.concurrent.atomic.AtomicInteger;
 import org.kicnp.agent.AgentOptions;
 import org.kicnp.agent.UserAgent;
 import org.kicnp.cli.platform.Platform;
-import org.kicnp.core.DataType;
-import org.kicnp.core.Frame;
-import org.kicnp.core.Slot;
-import org.kicnp.core.Value;
+import org.kicnp.language.ParserAgent;
 import org.kicnp.protocol.AgentKind;
 import org.kicnp.robots.SimRequest;
 import org.kicnp.robots.SimWorld;
 
 /**
  * User A: a person in the simulated room (who appears before Robovie's eye cameras and leaves again) and a
- * wireless microphone, a user agent that asserts what they say as a {@code UserSaid} instance with the speaker's
- * id. A script or a person at the terminal drives it.
+ * wireless microphone: a user agent, named like the person in the room, that relays what they say to the
+ * sentence parser. A script or a person at the terminal drives it.
  */
 public final class UserA implements AutoCloseable {
-    private static final AtomicInteger SAID = new AtomicInteger();
-
     private final Platform platform;
     private final SimWorld sim;
     private final String simName;
@@ -36,8 +30,8 @@ public final class UserA implements AutoCloseable {
     }
 
     public static UserA connect(Platform platform, SimWorld sim, String simName) {
-        UserAgent mic = new UserAgent(AgentOptions.of("127.0.0.1", platform.gatewayPort(), "user", AgentKind.USER,
-                platform.token("user")));
+        UserAgent mic = new UserAgent(AgentOptions.of("127.0.0.1", platform.gatewayPort(), simName, AgentKind.USER,
+                platform.token(simName)));
         mic.startAndAwait(Duration.ofSeconds(30));
         return new UserA(platform, sim, simName, mic);
     }
@@ -55,13 +49,13 @@ public final class UserA implements AutoCloseable {
         platform.events().record("user_moved", Map.of("user", simName, "what", "leaves the room"));
     }
 
-    /** Says something into the microphone. */
+    /**
+     * Says something into the microphone: the sentence goes to the parser agent, which asserts its case frame
+     * ({@code SaidName}, {@code SaidDrinkRequest}, …) with this user as the speaker.
+     */
     public void say(String text) {
         platform.events().record("user_said", Map.of("user", simName, "text", text));
-        mic.assertFrame(Frame.instance("said-" + SAID.incrementAndGet() + "-" + System.nanoTime(), "UserSaid")
-                .slot(Slot.ofValue("text", DataType.STRING, Value.of(text)))
-                .slot(Slot.ofValue("speaker", DataType.STRING, Value.of(simName)))
-                .build());
+        mic.relayTo("parser", ParserAgent.SUBJECT, text);
     }
 
     @Override public void close() {
