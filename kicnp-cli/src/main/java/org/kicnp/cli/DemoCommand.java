@@ -76,7 +76,13 @@ public final class DemoCommand implements Callable<Integer> {
                 case "/quit" -> {
                     return 0;
                 }
-                default -> run.user().say(text);
+                default -> {
+                    int before = run.user().sayAgainReplies().size();
+                    run.user().say(text);
+                    Thread.sleep(400);
+                    List<String> replies = run.user().sayAgainReplies();
+                    replies.subList(before, replies.size()).forEach(r -> System.out.println("(parser) " + r));
+                }
             }
         }
         return 0;

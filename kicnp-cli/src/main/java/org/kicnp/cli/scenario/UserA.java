@@ -58,6 +58,12 @@ public final class UserA implements AutoCloseable {
         mic.relayTo("parser", ParserAgent.SUBJECT, text);
     }
 
+    /** What the parser answered when it did not understand (its "say again" replies), oldest first. */
+    public java.util.List<String> sayAgainReplies() {
+        return mic.relays().stream().filter(r -> r.subject().equals(ParserAgent.SAY_AGAIN))
+                .map(r -> r.body()).toList();
+    }
+
     @Override public void close() {
         mic.close();
     }
