@@ -199,6 +199,65 @@ try {
   await page.locator('#trace-log li.Fired').first().waitFor();
   await page.screenshot({ path: join(artifacts, '04-inference.png') });
 
+  step = 'world panel: the room is drawn and the robots listed';
+  await page.click('#world-button');
+  await page.locator('#world-panel').waitFor({ state: 'visible' });
+  for (const name of ['robovie', 'scout', 'aibo']) await page.locator('#robot-rows tr[data-robot="' + name + '"]').waitFor();
+  check((await page.textContent('#robot-rows tr[data-robot="scout"]')).includes('go_to'), 'scout\'s current action is not shown');
+  await page.locator('#world-time', { hasText: 't = ' }).waitFor();
+  const paint = await page.evaluate(() => {
+    const c = document.getElementById('world-canvas');
+    const data = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    const colours = new Set();
+    let painted = 0;
+    for (let i = 0; i < data.length; i += 16) {
+      if (data[i + 3] > 0) painted++;
+      colours.add((data[i] >> 4) + ',' + (data[i + 1] >> 4) + ',' + (data[i + 2] >> 4));
+    }
+    return { painted, colours: colours.size, width: c.width };
+  });
+  check(paint.width > 300 && paint.painted > 1000 && paint.colours > 8, 'the room canvas looks blank: ' + JSON.stringify(paint));
+  const firstTime = await page.textContent('#world-time');
+  await page.waitForFunction((t) => document.getElementById('world-time').textContent !== t, firstTime);
+
+  step = 'world panel: speak as User A and read the verdict and the reply';
+  await page.fill('#chat-text', 'Bring me a cup of tea');
+  await page.press('#chat-text', 'Enter');
+  await page.locator('#chat-log li.chat-user', { hasText: 'Bring me a cup of tea' }).waitFor();
+  await page.locator('#chat-log li.chat-understood', { hasText: 'bring tea' }).waitFor();
+  await page.locator('#chat-log li.chat-robot', { hasText: 'Scout will bring you tea.' }).waitFor();
+  check(await page.inputValue('#chat-text') === '', 'the chat box was not cleared after speaking');
+
+  step = 'world panel: tele-operate scout and see the feedback';
+  await page.selectOption('#teleop-robot', 'scout');
+  await page.selectOption('#teleop-action', 'go_to');
+  await page.fill('#arg-x', '7.0');
+  await page.fill('#arg-y', '3.5');
+  await page.click('#teleop-send');
+  const command = page.locator('#command-rows tr', { hasText: 'go_to' });
+  await command.locator('.status-ended').waitFor();
+  check((await command.textContent()).includes('done'), 'the command\'s result is not shown');
+
+  step = 'world panel: mark the command wrong';
+  await command.locator('button', { hasText: 'Wrong' }).click();
+  await page.locator('#wrong-form').waitFor({ state: 'visible' });
+  await page.fill('#wrong-reason', 'went to the wrong place');
+  await page.press('#wrong-reason', 'Enter');
+  await command.locator('.wrong-note', { hasText: 'went to the wrong place' }).waitFor();
+  await page.locator('#wrong-form').waitFor({ state: 'hidden' });
+
+  step = 'world panel: the robot list keeps keyboard focus while the robots move';
+  const rowWrong = page.locator('#robot-rows tr[data-robot="scout"] button', { hasText: 'Wrong' });
+  await rowWrong.focus();
+  await page.waitForTimeout(400);
+  check(await rowWrong.evaluate((b) => document.activeElement === b), 'the robot list lost keyboard focus while the robots moved');
+  await page.keyboard.press('Enter');
+  await page.locator('#wrong-form').waitFor({ state: 'visible' });
+  check((await page.textContent('#wrong-question')).includes('c9'), 'the wrong form does not name the running action c9');
+  await page.click('#wrong-cancel');
+  await page.locator('#chat-text').focus();
+  await page.screenshot({ path: join(artifacts, '05-world.png') });
+
   step = 'no console errors';
   check(problems.length === 0, problems.join('\n'));
   console.log('editor e2e: all steps passed');

@@ -4,7 +4,7 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * {@code ./kicnp bench gateway}: round-trip latency and rate of K-ICNP's gateway and agent SDK, side by side with
+ * {@code ./kicnp bench gateway-pingpong}: round-trip latency and rate of K-ICNP's gateway and agent SDK, side by side with
  * Mosquitto, the common MQTT broker, on the same machine over loopback. Both run the same ping-pong: two clients,
  * each hop an acknowledged send through the hub (K-ICNP relay with its ack; MQTT QoS 1 publish with its PUBACK).
  */

@@ -13,8 +13,11 @@ import picocli.CommandLine.Command;
         description = "K-ICNP: a multi-robot management platform on a frame knowledge base.",
         subcommands = {
             CommandLine.HelpCommand.class,
+            ValidateCommand.class,
             RobotsCommand.class,
             InferCommand.class,
+            BenchCommand.class,
+            TestCommand.class,
             ServeCommand.class,
             ReplayCommand.class,
             DemoCommand.class,

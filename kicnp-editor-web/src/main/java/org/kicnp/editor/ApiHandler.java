@@ -29,7 +29,7 @@ import org.slf4j.LoggerFactory;
  * rules (JSON content type, same origin, logged in) and maps every failure to an HTTP status and a JSON body
  * {@code {"error": sentence, "problems": [...]}}: 400 bad request, 401 not logged in, 403 foreign origin,
  * 404 unknown frame, 409 stale revision, 422 validation problems, 429 too many wrong passwords, 501 feature not in
- * this build.
+ * this build, 503 no platform connected (the World panel's resources).
  */
 final class ApiHandler extends Handler.Abstract {
     private static final Logger LOG = LoggerFactory.getLogger(ApiHandler.class);
@@ -39,8 +39,10 @@ final class ApiHandler extends Handler.Abstract {
     private final FrameResource frames;
     private final LoginResource login;
     private final Features features;
+    private final PlatformResource platform;
 
-    ApiHandler(KnowledgeBase kb, ObjectMapper json, Sessions sessions, Features features) {
+    ApiHandler(KnowledgeBase kb, ObjectMapper json, Sessions sessions, Features features, PlatformResource platform) {
+        this.platform = platform;
         this.kb = kb;
         this.json = json;
         this.frames = new FrameResource(kb);
@@ -93,7 +95,11 @@ final class ApiHandler extends Handler.Abstract {
         String m = r.method();
         String first = s.length == 0 ? "" : s[0];
         return switch (first) {
-            case "session" -> only(m, "GET", () -> ok(login.status(r, features)));
+            case "session" -> only(m, "GET", () -> {
+                Map<String, Object> session = login.status(r, features);
+                session.putAll(platform.status());
+                return ok(session);
+            });
             case "login" -> only(m, "POST", () -> login.login(r));
             case "logout" -> only(m, "POST", () -> login.logout(r));
             case "status" -> only(m, "GET", () -> ok(status()));
@@ -105,6 +111,17 @@ final class ApiHandler extends Handler.Abstract {
             });
             case "import" -> only(m, "POST", () -> ok(features.xml().importXml(kb, r.body())));
             case "inference" -> inference(r, s, m);
+            case "world" -> s.length == 1 ? only(m, "GET", () -> platform.world().map(this::ok)
+                    .orElseGet(() -> Reply.json(204, ""))) : notFound(r);
+            case "chat" -> s.length != 1 ? notFound(r) : switch (m) {
+                case "GET" -> ok(Map.of("lines", platform.chatLines()));
+                case "POST" -> withStatus(202, platform.say(r.body()));
+                default -> notAllowed(m);
+            };
+            case "robots" -> robots(r, s, m);
+            case "commands" -> s.length == 1 ? only(m, "GET", () -> ok(platform.commands())) : notFound(r);
+            case "actions" -> s.length == 3 && s[2].equals("wrong")
+                    ? only(m, "POST", () -> ok(platform.wrong(s[1], r.body()))) : notFound(r);
             case "scripts" -> s.length == 2 && s[1].equals("check")
                     ? only(m, "POST", () -> ok(features.scripts().check(r.body())))
                     : notFound(r);
@@ -131,6 +148,16 @@ final class ApiHandler extends Handler.Abstract {
         }
         if (s.length == 3 && s[2].equals("rename")) {
             return only(m, "POST", () -> ok(frames.rename(name, r.body())));
+        }
+        return notFound(r);
+    }
+
+    private Reply robots(ApiRequest r, String[] s, String m) {
+        if (s.length == 1) {
+            return only(m, "GET", () -> ok(platform.robots()));
+        }
+        if (s.length == 3 && s[2].equals("commands")) {
+            return only(m, "POST", () -> withStatus(202, platform.send(s[1], r.body())));
         }
         return notFound(r);
     }

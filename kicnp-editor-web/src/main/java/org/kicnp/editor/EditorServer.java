@@ -19,7 +19,8 @@ import org.slf4j.LoggerFactory;
 
 /**
  * The running editor: a Jetty 12 server bound to {@link EditorConfig#host()} that serves the page, the JSON API
- * under {@code /api/} and the {@code /api/events} WebSocket. Start it with {@link #start(EditorConfig,
+ * under {@code /api/} and the {@code /api/events} WebSocket; optionally connected to a live platform through
+ * {@link PlatformPorts} (the World panel). Start it with {@link #start(EditorConfig,
  * KnowledgeBase)}, ask {@link #port()} for the port it got, and {@link #close()} it when done.
  */
 public final class EditorServer implements AutoCloseable {
@@ -30,9 +31,11 @@ public final class EditorServer implements AutoCloseable {
     private final KnowledgeBase kb;
     private final EventHub events;
     private final Features features;
+    private final PlatformResource platform;
 
     private EditorServer(Server server, ServerConnector connector, KnowledgeBase kb, EventHub events,
-            Features features) {
+            Features features, PlatformResource platform) {
+        this.platform = platform;
         this.server = server;
         this.connector = connector;
         this.kb = kb;
@@ -46,7 +49,28 @@ public final class EditorServer implements AutoCloseable {
      * @throws EditorException when the port cannot be bound
      */
     public static EditorServer start(EditorConfig config, KnowledgeBase kb) {
-        return start(config, kb, EditorFeatures.available());
+        return start(config, kb, EditorFeatures.available(), PlatformPorts.none());
+    }
+
+    /**
+     * Starts the editor with the World panel connected to a live platform through {@code ports}: the room drawn
+     * live, the chat with the robots and tele-operation. Ports left out answer 503 and their panel says so.
+     *
+     * @throws EditorException when the port cannot be bound
+     */
+    public static EditorServer start(EditorConfig config, KnowledgeBase kb, PlatformPorts ports) {
+        return start(config, kb, EditorFeatures.available(), ports);
+    }
+
+    /**
+     * Starts the editor with the inference view and the World panel: what {@code ./kicnp serve} runs.
+     *
+     * @throws EditorException when the port cannot be bound
+     */
+    public static EditorServer start(EditorConfig config, KnowledgeBase kb, InferenceEngine engine,
+            PlatformPorts ports) {
+        requireNonNull(engine, "engine");
+        return start(config, kb, EditorFeatures.available().withInference(new InferenceResource(engine, kb)), ports);
     }
 
     /**
@@ -57,12 +81,14 @@ public final class EditorServer implements AutoCloseable {
      */
     public static EditorServer start(EditorConfig config, KnowledgeBase kb, InferenceEngine engine) {
         requireNonNull(engine, "engine");
-        return start(config, kb, EditorFeatures.available().withInference(new InferenceResource(engine, kb)));
+        return start(config, kb, engine, PlatformPorts.none());
     }
 
-    static EditorServer start(EditorConfig config, KnowledgeBase kb, Features features) {
+    static EditorServer start(EditorConfig config, KnowledgeBase kb, Features features, PlatformPorts ports) {
         requireNonNull(config, "config");
         requireNonNull(kb, "kb");
+        requireNonNull(ports, "ports");
+        PlatformResource platform = new PlatformResource(ports);
         ObjectMapper json = new ObjectMapper();
         Sessions sessions = new Sessions(config.password(), config.sessionLifetime(), Clock.systemUTC());
         EventHub events = new EventHub(kb, json);
@@ -87,21 +113,23 @@ public final class EditorServer implements AutoCloseable {
                 return new EventClient(events);
             });
         });
-        ws.setHandler(new Handler.Sequence(new ApiHandler(kb, json, sessions, features), new StaticResources()));
+        ws.setHandler(new Handler.Sequence(new ApiHandler(kb, json, sessions, features, platform), new StaticResources()));
         context.setHandler(ws);
         server.setHandler(new HostGuard(config.host(), context));
         kb.addListener(events);
         features.inference().attach(events);
+        platform.attach(events);
         try {
             server.start();
         } catch (Exception e) {
             kb.removeListener(events);
             features.inference().close();
+            platform.close();
             stopQuietly(server);
             throw new EditorException("The editor could not start on " + config.host() + ":" + config.port() + ": "
                     + e.getMessage(), e);
         }
-        EditorServer editor = new EditorServer(server, connector, kb, events, features);
+        EditorServer editor = new EditorServer(server, connector, kb, events, features, platform);
         LOG.info("Knowledge editor at http://{}:{}/ ({})", config.host(), editor.port(),
                 sessions.editingPossible() ? "editing after login" : "read-only: no editor.password set");
         return editor;
@@ -116,6 +144,7 @@ public final class EditorServer implements AutoCloseable {
     @Override public void close() {
         kb.removeListener(events);
         features.inference().close();
+        platform.close();
         stopQuietly(server);
         if (features.scripts() instanceof AutoCloseable c) {
             try {

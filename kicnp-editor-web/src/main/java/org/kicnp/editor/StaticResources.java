@@ -32,6 +32,8 @@ final class StaticResources extends Handler.Abstract {
             Map.entry("/frame.js", "frame.js"),
             Map.entry("/slots.js", "slots.js"),
             Map.entry("/inference.js", "inference.js"),
+            Map.entry("/world.js", "world.js"),
+            Map.entry("/operate.js", "operate.js"),
             Map.entry("/highlight.js", "highlight.js"));
     private static final Map<String, String> TYPES = Map.of(
             "html", "text/html; charset=utf-8",

@@ -47,15 +47,16 @@ class OpenApiDocumentTest {
 
     @Test void everyDocumentedOperation_isServed() throws IOException {
         List<Operation> operations = documented();
-        assertThat(operations).hasSizeGreaterThan(15);
+        assertThat(operations).hasSizeGreaterThan(22);
         KnowledgeBase kb = SampleKnowledge.create();
         try (InferenceEngine engine = InferenceEngine.builder(kb).build();
                 EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword("pw"), kb,
-                        engine)) {
+                        engine, new TestPlatform().ports())) {
             Http http = new Http(server.port());
             http.login("pw");
             for (Operation op : operations) {
                 String path = op.path().replace("{name}", "Robot").replace("{instance}", "Robot")
+                        .replace("{robot}", "scout").replace("{id}", "c9")
                         + (op.path().equals("/api/inference/ask") ? "?class=Robot" : "");
                 HttpRequest.Builder b = http.jsonRequest(path);
                 HttpRequest.BodyPublisher body = HttpRequest.BodyPublishers.ofString("{}");

@@ -1,7 +1,6 @@
 package org.kicnp.gateway;
 
 import io.netty.channel.Channel;
-import io.netty.channel.ChannelFutureListener;
 import java.util.concurrent.TimeUnit;
 import org.kicnp.protocol.ErrorCode;
 import org.kicnp.protocol.Message;
@@ -12,7 +11,8 @@ import org.slf4j.LoggerFactory;
 /**
  * Sends to agents without ever queueing without bound. A connection above its write-buffer high mark (it is not
  * reading) gets nothing more: messages are shed and counted, and after {@code maxShedBeforeDrop} in a row the
- * connection is told {@code overloaded} and closed. Safe from any thread.
+ * connection is told {@code overloaded} and closed. Safe from any thread. Messages go through the session's outbox,
+ * written and flushed once per batch on the connection's event loop (see {@link Session}).
  */
 final class Outbound {
     private static final Logger LOG = LoggerFactory.getLogger(Outbound.class);
@@ -34,7 +34,7 @@ final class Outbound {
         if (ch.isWritable()) {
             to.shedInARow.set(0);
             metrics.sent.incrementAndGet();
-            ch.writeAndFlush(message, ch.voidPromise());
+            to.enqueue(message);
             return true;
         }
         metrics.shed.incrementAndGet();
@@ -59,7 +59,7 @@ final class Outbound {
             return;
         }
         metrics.sent.incrementAndGet();
-        ch.writeAndFlush(error).addListener(ChannelFutureListener.CLOSE);
+        to.enqueueLast(error); // behind what is already queued, so the order of messages is kept
         ch.eventLoop().schedule(() -> ch.close(), 2, TimeUnit.SECONDS); // in case the peer never reads it
     }
 }

@@ -3,15 +3,24 @@ package org.kicnp.gateway;
 import static java.util.Objects.requireNonNull;
 
 import io.netty.channel.Channel;
+import io.netty.channel.ChannelFutureListener;
+import io.netty.util.internal.PlatformDependent;
 import java.util.List;
+import java.util.Queue;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.Message;
 
 /**
  * One agent connection as the server agent sees it: who it is once authenticated, whether it registered, what it
  * subscribed to, and how many messages to it were shed in a row. State changes happen on the channel's event loop.
+ *
+ * <p>Outgoing messages wait in an outbox that the channel's event loop drains in one task, writing them all and
+ * flushing once: a burst of relays to one agent costs one task, one wake-up and one system call, not one of each
+ * per message, whichever thread the messages come from.
  */
 final class Session {
     enum State { NEW, AUTHENTICATED, REGISTERED, CLOSING }
@@ -25,6 +34,13 @@ final class Session {
     final AtomicInteger shedInARow = new AtomicInteger();
     /** Commands sent to this (robot) connection and not yet ended or failed. */
     final AtomicInteger commandsInFlight = new AtomicInteger();
+
+    private final Queue<Object> outbox = PlatformDependent.newMpscQueue();
+    private final AtomicBoolean drainScheduled = new AtomicBoolean();
+
+    /** A last message, after which the connection closes. */
+    private record Last(Message message) {
+    }
 
     Session(Channel channel) {
         this.channel = requireNonNull(channel, "channel");
@@ -47,6 +63,38 @@ final class Session {
     void registered(List<String> capabilityNames) {
         this.capabilities = List.copyOf(capabilityNames);
         this.state = State.REGISTERED;
+    }
+
+    /** Queues a message for this connection; safe from any thread. */
+    void enqueue(Message m) {
+        outbox.offer(m);
+        scheduleDrain();
+    }
+
+    /** Queues a last message, after which the connection closes; safe from any thread. */
+    void enqueueLast(Message m) {
+        outbox.offer(new Last(m));
+        scheduleDrain();
+    }
+
+    private void scheduleDrain() {
+        if (drainScheduled.compareAndSet(false, true)) {
+            channel.eventLoop().execute(this::drain);
+        }
+    }
+
+    /** Writes everything queued, in order, then flushes once. Runs on the channel's event loop. */
+    private void drain() {
+        drainScheduled.set(false); // before polling: a message queued from now on schedules another drain
+        Object next;
+        while ((next = outbox.poll()) != null) {
+            if (next instanceof Last last) {
+                channel.writeAndFlush(last.message()).addListener(ChannelFutureListener.CLOSE);
+            } else {
+                channel.write(next, channel.voidPromise());
+            }
+        }
+        channel.flush();
     }
 
     void closing() {

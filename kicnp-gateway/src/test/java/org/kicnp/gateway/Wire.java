@@ -52,6 +52,7 @@ final class Wire {
 
     /** Every message the channel wrote so far, decoded. */
     static List<Message> written(EmbeddedChannel ch) {
+        ch.runPendingTasks(); // the gateway writes from its event loop's tasks (a session's outbox is drained there)
         List<Message> out = new ArrayList<>();
         for (ByteBuf b = ch.readOutbound(); b != null; b = ch.readOutbound()) {
             try {

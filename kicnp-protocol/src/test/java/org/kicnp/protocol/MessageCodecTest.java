@@ -89,6 +89,27 @@ class MessageCodecTest {
                 ErrorCode.BAD_MESSAGE, "exactly one of toAgent and toKind");
     }
 
+    @Test
+    void decode_relay_readsEveryFormTheGeneralPathAccepts_andRefusesTheRest() {
+        assertThat(decode("{\"type\":\"relay\",\"body\":\"b\",\"v\":1,\"id\":\"1\",\"from\":\"a\",\"toKind\":\"ROBOT\","
+                + "\"toAgent\":null,\"subject\":\"s\",\"extra\":{\"x\":[1,{}]}}"))
+                .isEqualTo(Message.Relay.toKind("1", "a", AgentKind.ROBOT, "s", "b"));
+        assertCode("{\"v\":1,\"id\":\"1\",\"from\":\"a\",\"toAgent\":\"b\",\"subject\":\"s\",\"body\":\"b\"}",
+                ErrorCode.UNKNOWN_TYPE, "Unknown message type");
+        assertCode("{\"v\":2,\"type\":\"relay\",\"id\":\"1\",\"from\":\"a\",\"toAgent\":\"b\",\"subject\":\"s\",\"body\":\"b\"}",
+                ErrorCode.UNSUPPORTED_VERSION, "version 2");
+        assertCode("{\"v\":1,\"type\":\"relay\",\"id\":\"1\",\"from\":\"a\",\"toAgent\":\"b\",\"subject\":\"s\",\"body\":7}",
+                ErrorCode.BAD_MESSAGE, "'body' must be a string");
+        assertCode("{\"v\":1,\"type\":\"relay\",\"id\":\"1\",\"from\":\"a\",\"toAgent\":\"b\",\"toKind\":\"user\","
+                + "\"subject\":\"s\",\"body\":\"b\"}", ErrorCode.BAD_MESSAGE, "exactly one of toAgent and toKind");
+        assertCode("{\"v\":1,\"type\":\"relay\",\"id\":\"1\",\"from\":\"a\",\"toKind\":\"toaster\",\"subject\":\"s\","
+                + "\"body\":\"b\"}", ErrorCode.BAD_MESSAGE, "Bad 'relay' message");
+        assertCode("{\"v\":1,\"type\":\"relay\",\"id\":\"1\",\"from\":\"a\",\"toAgent\":\"b\",\"subject\":\"s\"}",
+                ErrorCode.BAD_MESSAGE, "needs the member 'body'");
+        assertCode("{\"v\":1,\"type\":\"relay\",\"id\":\"1\",\"from\":\"a\",\"toAgent\":\"b\",\"subject\":\"s\",\"body\":\"b\"}}",
+                ErrorCode.BAD_JSON, "not valid JSON");
+    }
+
     private Message decode(String json) {
         return codec.decode(json.getBytes(UTF_8));
     }

@@ -26,8 +26,8 @@ public final class ScriptBenchmark {
     }
 
     public static void main(String[] args) {
-        int runs = args.length > 0 ? Integer.parseInt(args[0]) : 20_000;
-        int warmUp = args.length > 1 ? Integer.parseInt(args[1]) : 30_000;
+        int runs = args.length > 0 ? Integer.parseInt(args[0]) : 50_000;
+        int warmUp = args.length > 1 ? Integer.parseInt(args[1]) : 300_000;
         boolean loop = args.length > 2 && args[2].equals("loop");
         AtomicLong sent = new AtomicLong();
         try (ScriptRuntime runtime = ScriptRuntime.create(ScriptConfig.defaults())) {

@@ -2,6 +2,8 @@ package org.kicnp.script;
 
 import java.time.Duration;
 import java.util.OptionalInt;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 import org.graalvm.polyglot.PolyglotException;
 import org.graalvm.polyglot.SourceSection;
@@ -22,7 +24,7 @@ final class ScriptErrors {
             line = lines;
             column = text.lines().reduce((a, b) -> b).map(String::length).orElse(0) + 1;
         }
-        return new ScriptSyntaxException(id, line, column, parserMessage(e));
+        return new ScriptSyntaxException(id, line, column, parserMessage(id, e));
     }
 
     /** The exception for a failed run. {@code stopped} says whether the watchdog stopped it. */
@@ -73,20 +75,14 @@ final class ScriptErrors {
         return OptionalInt.empty();
     }
 
-    /** The parser's message without the {@code name:line:column} prefix and the caret diagram. */
-    private static String parserMessage(PolyglotException e) {
+    /** The parser's message without the {@code SyntaxError: name:line:column} prefix and the caret diagram. */
+    private static String parserMessage(ScriptId id, PolyglotException e) {
         String message = String.valueOf(e.getMessage());
         int newline = message.indexOf('\n');
         String first = newline < 0 ? message : message.substring(0, newline);
-        SourceSection at = e.getSourceLocation();
-        if (at != null) {
-            String prefix = at.getSource().getName() + ":" + at.getStartLine() + ":" + at.getStartColumn();
-            int p = first.indexOf(prefix);
-            if (p >= 0) {
-                first = first.substring(p + prefix.length());
-            }
-        }
-        return first.strip();
+        Matcher prefix = Pattern.compile("^(?:SyntaxError:\\s*)?" + Pattern.quote(id.sourceName()) + ":\\d+:\\d+\\s*")
+                .matcher(first);
+        return prefix.lookingAt() ? first.substring(prefix.end()).strip() : first.strip();
     }
 
     private static String millis(Duration d) {

@@ -141,10 +141,14 @@ public final class ScriptRuntime implements AutoCloseable {
             return result;
         } catch (PolyglotException e) {
             boolean stopped = guard != null && !guard.finish();
+            if (stopped) {
+                clearCancellationInterrupt();
+            }
             reusable = !stopped && !ScriptErrors.poisons(e) && unbind(context, globals);
             throw ScriptErrors.run(script.id(), e, stopped, config);
         } catch (IllegalArgumentException | IllegalStateException e) {
             if (guard != null && !guard.finish()) {
+                clearCancellationInterrupt();
                 throw new ScriptTimeoutException(script.id(), ScriptTimeoutException.Limit.TIME,
                         config.timeLimit().toMillis() + " ms", e);
             }
@@ -248,6 +252,14 @@ public final class ScriptRuntime implements AutoCloseable {
                 pool.discard(context);
             }
         }
+    }
+
+    /**
+     * Cancelling an overrunning context interrupts the thread running it, so that a host function blocked in
+     * {@code sleep} or I/O returns; that interrupt was ours, not the caller's, so it must not outlive the run.
+     */
+    private static void clearCancellationInterrupt() {
+        Thread.interrupted();
     }
 
     private static boolean unbind(Context context, Map<String, ?> globals) {

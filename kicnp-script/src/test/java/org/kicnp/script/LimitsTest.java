@@ -53,6 +53,29 @@ class LimitsTest {
     }
 
     @Test
+    void run_whenHostFunctionBlocksPastTheTimeLimit_interruptsItAndStopsTheScript() {
+        try (ScriptRuntime runtime = ScriptRuntime.create(ScriptConfig.defaults().withTimeLimit(Duration.ofMillis(200)))) {
+            CompiledScript script = runtime.compile(LOOP, "Slow(); 'finished'");
+            long start = System.nanoTime();
+
+            assertThatThrownBy(() -> runtime.run(script, Map.of("Slow", Proxies.procedure(args -> sleep(5_000)))))
+                    .isInstanceOf(ScriptTimeoutException.class);
+
+            assertThat((System.nanoTime() - start) / 1_000_000).isBetween(150L, 2_000L);
+            assertThat(Thread.currentThread().isInterrupted()).as("the cancellation interrupt is cleared").isFalse();
+            assertThat(runtime.run(runtime.compile(LOOP, "'fine'"), Map.of())).isEqualTo("fine");
+        }
+    }
+
+    private static void sleep(long millis) {
+        try {
+            Thread.sleep(millis);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    @Test
     void run_whenOneThreadLoopsForever_otherThreadsKeepRunning() throws Exception {
         try (ScriptRuntime runtime = ScriptRuntime.create(ScriptConfig.defaults()
                 .withTimeLimit(Duration.ofMillis(500)).withStatementLimit(Long.MAX_VALUE))) {

@@ -3,6 +3,9 @@ package org.kicnp.script;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
 import java.time.Duration;
 import java.util.Map;
 import java.util.Set;
@@ -83,6 +86,21 @@ class SandboxTest {
                 .isInstanceOf(ScriptFailedException.class);
         assertThatThrownBy(() -> runtime.run(runtime.compile(ID, "m.getClass().forName('java.io.File')"), Map.of("m", mouth)))
                 .isInstanceOf(ScriptFailedException.class);
+    }
+
+    @Test
+    void run_whenScriptLogs_writesNothingToStandardOutput() {
+        PrintStream original = System.out;
+        ByteArrayOutputStream captured = new ByteArrayOutputStream();
+        System.setOut(new PrintStream(captured, true, StandardCharsets.UTF_8));
+        try (ScriptRuntime fresh = ScriptRuntime.create(ScriptConfig.defaults())) {
+            // Created while System.out is captured: GraalJS would take that stream as its default output.
+            fresh.run(fresh.compile(ID, "console.log('leak?'); print('leak?'); 1"), Map.of());
+        } finally {
+            System.setOut(original);
+        }
+
+        assertThat(captured.toString(StandardCharsets.UTF_8)).doesNotContain("leak?");
     }
 
     @Test

@@ -87,9 +87,29 @@ class ScriptRuntimeTest {
                     assertThat(e.id()).isEqualTo(GREETING);
                     assertThat(e.line()).isEqualTo(2);
                     assertThat(e.column()).isEqualTo(23);
-                    assertThat(e.parserMessage()).isNotBlank();
+                    assertThat(e.parserMessage()).isEqualTo("Expected , but found ;");
                 })
-                .hasMessageStartingWith("Script in slot 'onInstantiate' of frame 'Greeting' has a syntax error at line 2, column 23: ");
+                .hasMessage("Script in slot 'onInstantiate' of frame 'Greeting' has a syntax error at line 2, column 23: "
+                        + "Expected , but found ;");
+    }
+
+    @Test
+    void compile_whenBlockUnclosed_reportsEndOfTheTextAsWritten() {
+        assertThatThrownBy(() -> runtime.compile(GREETING, "if (x) {"))
+                .isInstanceOfSatisfying(ScriptSyntaxException.class, e -> {
+                    assertThat(e.line()).isEqualTo(1);
+                    assertThat(e.column()).isEqualTo(9);
+                    assertThat(e.parserMessage()).isEqualTo("Expected } but found eof");
+                });
+    }
+
+    @Test
+    void compile_whenTextTriesToCloseTheWrappingBlock_isASyntaxError() {
+        assertThatThrownBy(() -> runtime.compile(GREETING, "x }{ y"))
+                .isInstanceOf(ScriptSyntaxException.class);
+        assertThatThrownBy(() -> runtime.compile(GREETING, "return 1"))
+                .isInstanceOf(ScriptSyntaxException.class)
+                .hasMessageContaining("Invalid return statement");
     }
 
     @Test

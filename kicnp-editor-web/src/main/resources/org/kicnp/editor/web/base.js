@@ -86,7 +86,7 @@ export function showErrors(containerId, error) {
   box.hidden = false;
 }
 
-const PANELS = ['welcome', 'import-panel', 'create-panel', 'frame-panel', 'inference-panel'];
+const PANELS = ['welcome', 'import-panel', 'create-panel', 'frame-panel', 'inference-panel', 'world-panel'];
 
 export function showMain(id) {
   for (const p of PANELS) show(p, p === id);

@@ -4,6 +4,8 @@ import { $, RELATIONS, api, el, show, showErrors, showMain, state } from './base
 import { loadFrames, renderNameLists, renderTree } from './tree.js';
 import { create, markDirty, openFrame, remove, rename, renderFrame, save, setFrame, startCreate } from './frame.js';
 import { addTrace, askInference, loadInference, openInference, runInference, scheduleInferenceReload } from './inference.js';
+import { openWorld, renderWorldSession, worldEvent, worldVisible } from './world.js';
+import { cancelWrong, chatLine, feedbackEvent, markWrong, renderActions, renderArgs, say, sendCommand } from './operate.js';
 
 // ---- session ----
 
@@ -28,6 +30,8 @@ async function loadSession() {
   $('run-button').disabled = !s.loggedIn;
   document.body.classList.toggle('readonly', !s.loggedIn);
   if (state.frame) renderFrame();
+  renderWorldSession();
+  if (worldVisible()) openWorld();
 }
 
 async function login(event) {
@@ -95,6 +99,12 @@ function connect() {
       if (!$('inference-panel').hidden) scheduleInferenceReload();
     } else if (event.type === 'trace') {
       addTrace(event);
+    } else if (event.type === 'world') {
+      worldEvent(event);
+    } else if (event.type === 'chat') {
+      chatLine(event);
+    } else if (event.type === 'feedback') {
+      feedbackEvent(event);
     }
   };
 }
@@ -192,6 +202,15 @@ function wire() {
   $('run-button').addEventListener('click', runInference);
   $('ask-form').addEventListener('submit', askInference);
   $('import-apply').addEventListener('click', applyImport);
+  $('world-button').addEventListener('click', openWorld);
+  $('world-refresh').addEventListener('click', openWorld);
+  $('chat-form').addEventListener('submit', say);
+  $('teleop-robot').addEventListener('change', renderActions);
+  $('teleop-action').addEventListener('change', renderArgs);
+  $('teleop-form').addEventListener('submit', sendCommand);
+  $('wrong-form').addEventListener('submit', markWrong);
+  $('wrong-cancel').addEventListener('click', cancelWrong);
+  window.addEventListener('resize', () => { if (worldVisible()) renderWorldSession(); });
   $('import-file').addEventListener('change', async (e) => {
     const file = e.target.files[0];
     if (file) $('import-text').value = await file.text();
@@ -205,7 +224,8 @@ async function init() {
     await loadSession();
     await loadFrames();
     const wanted = decodeURIComponent(location.hash.slice(1));
-    if (wanted && state.byName.has(wanted)) await openFrame(wanted);
+    if (wanted === 'world') await openWorld();
+    else if (wanted && state.byName.has(wanted)) await openFrame(wanted);
   } catch (e) {
     $('login-error').textContent = e.message;
     $('login-error').hidden = false;

@@ -1,0 +1,147 @@
+package org.kicnp.bench;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.UncheckedIOException;
+import java.lang.ref.Reference;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Random;
+import java.util.concurrent.Callable;
+import java.util.stream.Stream;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.xml.KnowledgeLoader;
+import org.kicnp.core.xml.KnowledgeXmlException;
+import org.kicnp.core.xml.KnowledgeXmlWriter;
+import org.kicnp.core.xml.LoadError;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code ./kicnp bench core}: the knowledge core on a large generated knowledge base. Saves it as XML, loads it
+ * back into a fresh knowledge base, and measures load time, save time, the heap the loaded knowledge base
+ * retains, and the cost per result of {@code instancesOf}. Untimed warm-up rounds come first; times are the
+ * median of the timed rounds.
+ */
+@Command(name = "core",
+        mixinStandardHelpOptions = true,
+        description = {
+            "Knowledge core: XML load and save time, retained heap, instancesOf cost per result.",
+            "Generates a knowledge base (IS-A tree 8 deep, 6 slots per frame, a third instances), saves it as XML,",
+            "loads it back into a fresh knowledge base, and measures; times are medians of the timed rounds.",
+            "The last line of output is one JSON object with the figures."
+        })
+final class CoreBench implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--frames", defaultValue = "100000", description = "Frames to generate (default: ${DEFAULT-VALUE}).")
+    int frames;
+
+    @Option(names = "--warmup", defaultValue = "2", description = "Untimed load/save rounds first (default: ${DEFAULT-VALUE}).")
+    int warmup;
+
+    @Option(names = "--rounds", defaultValue = "5", description = "Timed rounds; the median is reported (default: ${DEFAULT-VALUE}).")
+    int rounds;
+
+    @Option(names = "--seed", defaultValue = "42", description = "Seed of the generator (default: ${DEFAULT-VALUE}).")
+    long seed;
+
+    @Override public Integer call() throws IOException {
+        if (frames < 3 || warmup < 0 || rounds < 1) {
+            throw new ParameterException(spec.commandLine(),
+                    "Need --frames of at least 3, --warmup of 0 or more and --rounds of 1 or more.");
+        }
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        Path dir = Files.createTempDirectory("kicnp-bench-core");
+        try {
+            return run(dir, out, err);
+        } catch (KnowledgeXmlException e) {
+            List<LoadError> errors = e.errors();
+            errors.stream().limit(20).forEach(x -> err.println(x.format()));
+            err.printf("The generated knowledge base did not load back (%d errors); no figures.%n", errors.size());
+            return 1;
+        } finally {
+            deleteTree(dir);
+            out.flush();
+            err.flush();
+        }
+    }
+
+    private int run(Path dir, PrintWriter out, PrintWriter err) throws IOException {
+        KnowledgeGenerator generator = KnowledgeGenerator.of(frames, seed);
+        Path source = Files.createDirectories(dir.resolve("source"));
+        Path saved = dir.resolve("saved.xml");
+        progress(err, "Generating %d frames and writing them to %s", frames, source);
+        long bytes = writeGenerated(generator, source.resolve("knowledge.xml"));
+
+        progress(err, "Warming up: %d untimed load/save rounds", warmup);
+        for (int i = 0; i < warmup; i++) {
+            save(load(source), saved);
+        }
+        Timed loads = new Timed();
+        Timed saves = new Timed();
+        for (int i = 0; i < rounds; i++) {
+            progress(err, "Timed round %d of %d", i + 1, rounds);
+            KnowledgeBase kb = loads.time(() -> load(source));
+            saves.time(() -> save(kb, saved));
+        }
+
+        progress(err, "Measuring the retained heap of one loaded knowledge base");
+        long before = HeapMeter.usedAfterGc();
+        KnowledgeBase kb = load(source);
+        long after = HeapMeter.usedAfterGc();
+        Reference.reachabilityFence(kb);
+        double heapMb = (after - before) / (1024.0 * 1024.0);
+
+        progress(err, "Timing instancesOf on classes at every depth");
+        QueryTiming timing = QueryTiming.over(kb, generator, new Random(seed));
+        QueryTiming.Result query = timing.measure(rounds);
+
+        new CoreReport(frames, generator.classCount(), generator.instanceCount(), bytes, warmup, rounds,
+                loads, saves, heapMb, query).print(out);
+        return 0;
+    }
+
+    /** Generates and writes the frames; they are unreachable once this returns, so they do not skew the heap. */
+    private static long writeGenerated(KnowledgeGenerator generator, Path file) throws IOException {
+        List<Frame> generated = generator.generate();
+        KnowledgeXmlWriter.write(generated, file);
+        return Files.size(file);
+    }
+
+    private KnowledgeBase load(Path source) {
+        KnowledgeBase kb = KnowledgeBase.create();
+        KnowledgeLoader.load(kb, List.of(source));
+        if (kb.size() != frames) {
+            throw new IllegalStateException("The knowledge base loaded back holds " + kb.size() + " frames, not "
+                    + frames + ": the benchmark would measure the wrong thing.");
+        }
+        return kb;
+    }
+
+    private static KnowledgeBase save(KnowledgeBase kb, Path file) {
+        KnowledgeXmlWriter.write(kb.frames(), file);
+        return kb;
+    }
+
+    private static void progress(PrintWriter err, String format, Object... args) {
+        err.printf("[bench core] " + format + "%n", args);
+        err.flush();
+    }
+
+    private static void deleteTree(Path dir) {
+        try (Stream<Path> paths = Files.walk(dir)) {
+            paths.sorted(Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
+        } catch (IOException | UncheckedIOException e) {
+            // A temporary directory left behind is harmless; the figures are what matter.
+        }
+    }
+}

@@ -1,0 +1,120 @@
+package org.kicnp.bench;
+
+import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Optional;
+import java.util.Properties;
+import java.util.function.Consumer;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.gateway.AgentDirectory;
+import org.kicnp.gateway.FeedbackListener;
+import org.kicnp.gateway.GatewayConfig;
+import org.kicnp.gateway.GatewayServer;
+
+/**
+ * {@code ./kicnp bench gateway}: many agents relaying small messages to each other through a hub, K-ICNP's real
+ * {@link GatewayServer} against a Mosquitto broker, with the same clients in the same process. For each agent
+ * count, each hub gets a closed-loop throughput run and an open-loop latency run at a fixed offered load.
+ */
+final class GatewayRelayBench {
+    private static final Duration CONNECT_TIMEOUT = Duration.ofSeconds(60);
+
+    private GatewayRelayBench() {
+    }
+
+    /**
+     * Runs every agent count on both hubs. The gateway and the broker are each started once, before the first
+     * count, and stopped after the last.
+     *
+     * @param progress told what is being measured, for people watching
+     */
+    static List<RelayRun> run(RelayBenchOptions o, Consumer<String> progress) throws IOException, InterruptedException {
+        int most = Collections.max(o.agentCounts());
+        MosquittoBroker broker = null;
+        String brokerNote = "Mosquitto skipped (--no-mosquitto).";
+        if (o.mosquittoScript().isPresent()) {
+            try {
+                progress.accept("Starting Mosquitto with " + o.mosquittoScript().get() + " ...");
+                broker = MosquittoBroker.start(o.mosquittoScript().get(), o.install());
+            } catch (IllegalStateException e) {
+                brokerNote = "Mosquitto not measured: " + e.getMessage();
+                progress.accept(brokerNote);
+            }
+        }
+        try (GatewayServer gateway = GatewayServer.start(GatewayConfig.defaults().withPort(0), directory(most),
+                KnowledgeBase.create(), FeedbackListener.NONE)) {
+            if (!o.jitWarmup().isZero()) {
+                // Untimed: the JIT compiles the gateway's and both clients' hot paths before anything is measured
+                // (Mosquitto is native and needs no such start).
+                int n = o.agentCounts().get(0);
+                progress.accept("Warming up the JIT for " + o.jitWarmup().toSeconds() + " s per hub (not measured) ...");
+                warm(new KicnpRelayClient(o.messageBytes()), gateway.address(), n, o);
+                if (broker != null) {
+                    warm(new MqttRelayClient(o.messageBytes()), broker.address(), n, o);
+                }
+            }
+            List<RelayRun> runs = new ArrayList<>();
+            for (int agents : o.agentCounts()) {
+                progress.accept("K-ICNP gateway, " + agents + " agents ...");
+                long shedBefore = gateway.metrics().shed();
+                HubFigures kicnp = measure(new KicnpRelayClient(o.messageBytes()), gateway.address(), agents, o,
+                        () -> gateway.metrics().shed() - shedBefore, GatewayRelayBench::processCpuMinus);
+                progress.accept("  " + gateway.metrics());
+                Optional<HubFigures> mqtt = Optional.empty();
+                Optional<String> note = broker == null ? Optional.of(brokerNote) : Optional.empty();
+                if (broker != null) {
+                    progress.accept("Mosquitto, " + agents + " agents ...");
+                    MosquittoBroker b = broker;
+                    mqtt = Optional.of(measure(new MqttRelayClient(o.messageBytes()), broker.address(), agents, o,
+                            () -> 0L, clients -> b.cpuNanos()));
+                }
+                runs.add(new RelayRun(agents, o.windowFor(agents), kicnp, mqtt, note));
+            }
+            return runs;
+        } finally {
+            if (broker != null) {
+                broker.close();
+            }
+        }
+    }
+
+    private static HubFigures measure(RelayClient client, InetSocketAddress hub, int agents, RelayBenchOptions o,
+                                      java.util.function.LongSupplier shed,
+                                      java.util.function.LongUnaryOperator hubCpu) throws InterruptedException {
+        try (RelayDriver d = RelayDriver.connect(client, hub, agents, o.clientThreads(), CONNECT_TIMEOUT)) {
+            RelayDriver.Throughput t = d.throughput(o.windowFor(agents), o.warmup(), o.throughputTime(), hubCpu);
+            LatencyFigures latency = d.latency(o.rate(), o.warmup(), o.latencyTime());
+            return new HubFigures(t.msgsPerSecond(), latency, shed.getAsLong(), t.hubCpuMicrosPerMsg(),
+                    t.clientCpuMicrosPerMsg());
+        }
+    }
+
+    private static void warm(RelayClient client, InetSocketAddress hub, int agents, RelayBenchOptions o)
+            throws InterruptedException {
+        try (RelayDriver d = RelayDriver.connect(client, hub, agents, o.clientThreads(), CONNECT_TIMEOUT)) {
+            d.throughput(o.windowFor(agents), o.jitWarmup(), Duration.ofMillis(100), clients -> 0);
+        }
+    }
+
+    /** This process's CPU time minus the given client CPU time: the in-process gateway's share, in nanoseconds. */
+    private static long processCpuMinus(long clientCpuNanos) {
+        var os = java.lang.management.ManagementFactory.getOperatingSystemMXBean();
+        long process = os instanceof com.sun.management.OperatingSystemMXBean sun ? sun.getProcessCpuTime() : 0;
+        return process - clientCpuNanos;
+    }
+
+    /** An agent file for the bench agents {@code a00000 ...}: each a user with its own token. */
+    private static AgentDirectory directory(int agents) {
+        Properties p = new Properties();
+        for (int k = 0; k < agents; k++) {
+            String name = RelayAgent.nameOf(k);
+            p.setProperty(name + ".token", KicnpRelayClient.TOKEN_PREFIX + name);
+            p.setProperty(name + ".kinds", "user");
+        }
+        return AgentDirectory.of(p, "bench agents");
+    }
+}

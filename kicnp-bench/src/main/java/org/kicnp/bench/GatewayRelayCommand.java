@@ -1,0 +1,113 @@
+package org.kicnp.bench;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+import java.util.Optional;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code ./kicnp bench gateway}: runs {@link GatewayRelayBench} and prints its conditions, its table and, as the
+ * last line, one JSON object with the figures.
+ */
+@Command(name = "gateway",
+        mixinStandardHelpOptions = true,
+        description = {
+            "Many agents relaying ~200-byte messages to each other through the K-ICNP gateway, then through Mosquitto",
+            "(started by scripts/mosquitto.sh, which installs it with apt-get when missing), with the same clients in",
+            "this JVM: max throughput (closed loop) and p50/p99/p99.9 latency at a fixed offered load (open loop).",
+            "The last line of output is one JSON object with the figures."
+        })
+final class GatewayRelayCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--agents", split = ",", defaultValue = "100,1000",
+            description = "Agent counts to run, in order (default: ${DEFAULT-VALUE}).")
+    List<Integer> agents;
+
+    @Option(names = "--message-bytes", defaultValue = "200",
+            description = "Bytes of each message on the wire (default: ${DEFAULT-VALUE}).")
+    int messageBytes;
+
+    @Option(names = "--rate", defaultValue = "50000",
+            description = "Offered load of the latency run, messages per second in total (default: ${DEFAULT-VALUE}).")
+    int rate;
+
+    @Option(names = "--warmup", defaultValue = "2", description = "Warm-up seconds before each measurement (default: ${DEFAULT-VALUE}).")
+    int warmupSeconds;
+
+    @Option(names = "--jit-warmup", defaultValue = "20",
+            description = "Seconds of an untimed run on each hub (with the first agent count) before the first "
+                    + "measurement, so the JIT has compiled the gateway and the clients; on a loaded machine the "
+                    + "compiler gets little CPU (default: ${DEFAULT-VALUE}; 0: none).")
+    int jitWarmupSeconds;
+
+    @Option(names = "--seconds", defaultValue = "5",
+            description = "Seconds of each throughput and each latency measurement (default: ${DEFAULT-VALUE}).")
+    int seconds;
+
+    @Option(names = "--outstanding", defaultValue = "8192",
+            description = "Closed-loop messages outstanding in total, spread over the agents (default: ${DEFAULT-VALUE}).")
+    int outstanding;
+
+    @Option(names = "--client-threads", defaultValue = "2", description = "Client event loops (default: ${DEFAULT-VALUE}).")
+    int clientThreads;
+
+    @Option(names = "--no-mosquitto", description = "Measure K-ICNP alone.")
+    boolean noMosquitto;
+
+    @Option(names = "--no-install", description = "Never install Mosquitto; skip it (with a note) when it is missing.")
+    boolean noInstall;
+
+    @Option(names = "--mosquitto-script", description = "The broker script (default: scripts/mosquitto.sh of this tree).")
+    Optional<Path> script;
+
+    @Override public Integer call() throws Exception {
+        if (seconds < 1 || warmupSeconds < 0 || jitWarmupSeconds < 0) {
+            throw new ParameterException(spec.commandLine(),
+                    "Need --seconds of 1 or more, and --warmup and --jit-warmup of 0 or more.");
+        }
+        quietGatewayLog();
+        Optional<Path> mosquitto = noMosquitto ? Optional.empty() : script.or(MosquittoBroker::defaultScript);
+        if (!noMosquitto && mosquitto.isEmpty()) {
+            throw new ParameterException(spec.commandLine(), "Cannot find scripts/mosquitto.sh; give --mosquitto-script.");
+        }
+        RelayBenchOptions o;
+        try {
+            o = new RelayBenchOptions(agents, messageBytes, rate, Duration.ofSeconds(warmupSeconds),
+                    Duration.ofSeconds(seconds), Duration.ofSeconds(seconds), outstanding, clientThreads,
+                    Duration.ofSeconds(jitWarmupSeconds), mosquitto,
+                    !noInstall);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        out.print(RelayReport.preamble(o, noMosquitto ? "" : MosquittoBroker.version()));
+        out.flush();
+        List<RelayRun> runs = GatewayRelayBench.run(o, line -> {
+            err.println(line);
+            err.flush();
+        });
+        out.println();
+        out.print(RelayReport.table(runs, o.rate()));
+        out.println();
+        out.println(RelayReport.json(runs, o));
+        out.flush();
+        return 0;
+    }
+
+    /** The gateway logs every connection at INFO; a thousand of them would bury the table. */
+    private static void quietGatewayLog() {
+        if (System.getProperty("org.slf4j.simpleLogger.log.org.kicnp.gateway") == null) {
+            System.setProperty("org.slf4j.simpleLogger.log.org.kicnp.gateway", "warn");
+        }
+    }
+}

@@ -1,0 +1,201 @@
+package org.kicnp.bench;
+
+import static java.nio.charset.StandardCharsets.US_ASCII;
+
+import io.netty.buffer.ByteBuf;
+import io.netty.buffer.ByteBufUtil;
+import io.netty.buffer.Unpooled;
+import io.netty.channel.ChannelHandlerContext;
+import io.netty.channel.ChannelInboundHandlerAdapter;
+import io.netty.channel.ChannelPipeline;
+import io.netty.handler.codec.LengthFieldBasedFrameDecoder;
+import java.util.concurrent.CompletableFuture;
+import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.Framing;
+import org.kicnp.protocol.Message;
+import org.kicnp.protocol.MessageCodec;
+
+/**
+ * A lean K-ICNP agent for the benchmark: the real wire protocol over a real TCP connection, without the SDK's
+ * thread per agent. The handshake ({@code hello}, {@code auth_result}, {@code register}, {@code ack}) goes
+ * through the protocol's own {@link MessageCodec}. Each relay is the codec's encoding of
+ * {@code Relay.toAgent(id, me, peer, "bench", body)}, made once per agent as a template whose id and body digits
+ * are then rewritten in place, so the client spends its CPU on the network rather than on JSON. Deliveries are
+ * recognised by their type and their body read where the codec puts it (last); the hub's {@code ack} to every
+ * relay is read and discarded (fire and forget: the sender never waits for it).
+ */
+final class KicnpRelayClient implements RelayClient {
+    static final String TOKEN_PREFIX = "bench-token-";
+    private static final byte[] RELAY_PREFIX = "{\"v\":1,\"type\":\"relay\"".getBytes(US_ASCII);
+    private static final int ID_DIGITS = 10;
+    private static final int STAMP_DIGITS = 19;
+
+    private final MessageCodec codec = new MessageCodec();
+    private final int messageBytes;
+    /** The length of every bench body (all agent names have the same length, so all bodies do). */
+    private volatile int bodyChars;
+
+    /** @param messageBytes bytes of each relay on the wire, the 4-byte length prefix included */
+    KicnpRelayClient(int messageBytes) {
+        this.messageBytes = messageBytes;
+    }
+
+    @Override public String describe() {
+        return "K-ICNP relay (toAgent, fire and forget; the hub acks each relay)";
+    }
+
+    @Override public RelayAgent.Encoder encoderFor(String name, String peer) {
+        byte[] bare = template(name, peer, 0);
+        int pad = messageBytes - bare.length;
+        if (pad < 0) {
+            throw new IllegalArgumentException("A relay needs at least " + bare.length + " bytes on the wire; "
+                    + messageBytes + " is too few.");
+        }
+        byte[] frame = template(name, peer, pad);
+        bodyChars = 1 + STAMP_DIGITS + pad;
+        ByteBuf shared = Unpooled.wrappedBuffer(frame);
+        int idAt = indexOf(frame, "\"id\":\"") + 6;
+        int stampAt = indexOf(frame, "\"body\":\"t") + 9;
+        return (from, stamp) -> {
+            ByteBuf buf = from.channel.alloc().directBuffer(frame.length);
+            buf.writeBytes(shared, 0, frame.length);
+            Digits.put(buf, idAt, from.sequence % 10_000_000_000L, ID_DIGITS);
+            Digits.put(buf, stampAt, stamp, STAMP_DIGITS);
+            return buf;
+        };
+    }
+
+    /** The framed relay from {@code name} to {@code peer} with {@code pad} bytes of padding in its body. */
+    private byte[] template(String name, String peer, int pad) {
+        String body = "t" + "0".repeat(STAMP_DIGITS) + "x".repeat(pad);
+        byte[] json = codec.encode(Message.Relay.toAgent("0".repeat(ID_DIGITS), name, peer, "bench", body));
+        byte[] frame = new byte[Framing.LENGTH_BYTES + json.length];
+        frame[0] = (byte) (json.length >>> 24);
+        frame[1] = (byte) (json.length >>> 16);
+        frame[2] = (byte) (json.length >>> 8);
+        frame[3] = (byte) json.length;
+        System.arraycopy(json, 0, frame, Framing.LENGTH_BYTES, json.length);
+        return frame;
+    }
+
+    private static int indexOf(byte[] haystack, String needle) {
+        byte[] n = needle.getBytes(US_ASCII);
+        outer:
+        for (int i = 0; i + n.length <= haystack.length; i++) {
+            for (int j = 0; j < n.length; j++) {
+                if (haystack[i + j] != n[j]) {
+                    continue outer;
+                }
+            }
+            return i;
+        }
+        throw new IllegalStateException("The relay template lacks '" + needle + "'.");
+    }
+
+    @Override public void initPipeline(ChannelPipeline p, RelayAgent agent, CompletableFuture<Void> ready) {
+        p.addLast(new LengthFieldBasedFrameDecoder(Framing.DEFAULT_MAX_FRAME_BYTES + Framing.LENGTH_BYTES,
+                0, Framing.LENGTH_BYTES, 0, Framing.LENGTH_BYTES));
+        p.addLast(new Handler(agent, ready));
+    }
+
+    /** The handshake through the codec, then the fast path for deliveries. */
+    private final class Handler extends ChannelInboundHandlerAdapter {
+        private final RelayAgent agent;
+        private final CompletableFuture<Void> ready;
+        private int step;
+
+        Handler(RelayAgent agent, CompletableFuture<Void> ready) {
+            this.agent = agent;
+            this.ready = ready;
+        }
+
+        @Override public void channelActive(ChannelHandlerContext ctx) {
+            send(ctx, new Message.Hello("h", agent.name, AgentKind.USER, TOKEN_PREFIX + agent.name));
+        }
+
+        private void send(ChannelHandlerContext ctx, Message m) {
+            byte[] json = codec.encode(m);
+            ctx.writeAndFlush(ctx.alloc().buffer(json.length + 4).writeInt(json.length).writeBytes(json));
+        }
+
+        @Override public void channelRead(ChannelHandlerContext ctx, Object msg) {
+            ByteBuf frame = (ByteBuf) msg;
+            try {
+                if (step == 2) {
+                    if (isRelay(frame)) {
+                        agent.loop.delivered(agent, stampOf(frame));
+                    }
+                    return;
+                }
+                handshake(ctx, codec.decode(ByteBufUtil.getBytes(frame)));
+            } finally {
+                frame.release();
+            }
+        }
+
+        private void handshake(ChannelHandlerContext ctx, Message m) {
+            switch (m) {
+                case Message.AuthResult a when a.accepted() && step == 0 -> {
+                    step = 1;
+                    send(ctx, new Message.Register("r", java.util.List.of()));
+                }
+                case Message.Ack a when step == 1 -> {
+                    step = 2;
+                    ready.complete(null);
+                }
+                case Message.Heartbeat h -> { }
+                default -> ready.completeExceptionally(new IllegalStateException("Agent " + agent
+                        + " got " + m + " during its handshake."));
+            }
+        }
+
+        @Override public void channelReadComplete(ChannelHandlerContext ctx) {
+            agent.loop.readComplete();
+        }
+
+        @Override public void channelInactive(ChannelHandlerContext ctx) {
+            if (ready.isDone() && !agent.loop.closing) {
+                org.slf4j.LoggerFactory.getLogger(RelayDriver.class).warn("Bench agent {}'s connection closed.", agent);
+            }
+            ready.completeExceptionally(new IllegalStateException("Agent " + agent + "'s connection closed."));
+        }
+
+        @Override public void exceptionCaught(ChannelHandlerContext ctx, Throwable cause) {
+            if (ready.isDone()) {
+                org.slf4j.LoggerFactory.getLogger(RelayDriver.class).warn("Bench agent {} failed; closing it.", agent, cause);
+            }
+            ready.completeExceptionally(cause);
+            ctx.close();
+        }
+    }
+
+    private static boolean isRelay(ByteBuf frame) {
+        int at = frame.readerIndex();
+        if (frame.readableBytes() < RELAY_PREFIX.length) {
+            return false;
+        }
+        for (int i = 0; i < RELAY_PREFIX.length; i++) {
+            if (frame.getByte(at + i) != RELAY_PREFIX[i]) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** The stamp in a delivered relay's body, the last member ({@code ..."body":"t<19 digits>xxx"}}). */
+    private long stampOf(ByteBuf frame) {
+        int expected = frame.writerIndex() - 1 - bodyChars;
+        if (expected > 3 && frame.getByte(expected) == 't' && frame.getByte(expected - 1) == '"'
+                && frame.getByte(expected - 2) == ':') {
+            return Digits.get(frame, expected + 1, STAMP_DIGITS);
+        }
+        int marker = ByteBufUtil.indexOf(BODY_MARKER, frame);
+        if (marker < 0) {
+            throw new IllegalStateException("A delivered relay has no bench body.");
+        }
+        return Digits.get(frame, marker + BODY_MARKER.readableBytes(), STAMP_DIGITS);
+    }
+
+    private static final ByteBuf BODY_MARKER = Unpooled.unreleasableBuffer(
+            Unpooled.wrappedBuffer("\"body\":\"t".getBytes(US_ASCII)));
+}

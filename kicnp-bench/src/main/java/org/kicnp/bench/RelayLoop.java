@@ -1,0 +1,177 @@
+package org.kicnp.bench;
+
+import io.netty.channel.EventLoop;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ScheduledFuture;
+import java.util.concurrent.TimeUnit;
+import org.HdrHistogram.Histogram;
+
+/**
+ * The benchmark state of one client event loop and the agents it owns. Everything here runs on that loop:
+ * sending (closed-loop window refills, open-loop ticks), counting deliveries, recording latencies, and flushing
+ * each written channel once per batch of reads rather than once per message.
+ *
+ * <p>Open loop: each agent has a constant-rate schedule of intended send times, released by a 1 ms tick; a
+ * message carries its <em>intended</em> time, and its latency is the delivery time minus that time. A stall
+ * anywhere (client, hub, kernel) delays the sends behind it too, and every one of them is charged the full
+ * delay, so coordinated omission is not hidden.
+ */
+final class RelayLoop {
+    /** Bench time: nanoseconds since this class was loaded (plus one second, so stamps are never negative). */
+    private static final long ORIGIN = System.nanoTime() - TimeUnit.SECONDS.toNanos(1);
+    static final long TICK_NANOS = TimeUnit.MILLISECONDS.toNanos(1);
+    /** The largest latency the histograms track: one minute, in microseconds. */
+    private static final long MAX_MICROS = TimeUnit.MINUTES.toMicros(1);
+
+    enum Mode { IDLE, CLOSED, OPEN }
+
+    final EventLoop executor;
+    final List<RelayAgent> agents = new ArrayList<>();
+    final List<RelayAgent> dirty = new ArrayList<>();
+    Mode mode = Mode.IDLE;
+    /** Set when the driver closes the connections, so closing is not reported as a failure. */
+    volatile boolean closing;
+    long sent;
+    long delivered;
+    final Histogram latencies = new Histogram(MAX_MICROS, 3);
+    /** Open loop: messages whose intended time is in [recordFrom, recordUntil) are measured. */
+    long recordFrom;
+    long recordUntil;
+    /** Open loop: no message is intended at or after this time. */
+    long sendUntil;
+    long scheduledInWindow;
+    long periodNanos;
+    private ScheduledFuture<?> ticker;
+
+    RelayLoop(EventLoop executor) {
+        this.executor = executor;
+    }
+
+    static long now() {
+        return System.nanoTime() - ORIGIN;
+    }
+
+    /** Called by a client handler when {@code to} receives a message its peer stamped {@code stampNanos}. */
+    void delivered(RelayAgent to, long stampNanos) {
+        delivered++;
+        RelayAgent from = to.peer;
+        switch (mode) {
+            case CLOSED -> {
+                from.inFlight--;
+                refill(from);
+            }
+            case OPEN -> {
+                if (stampNanos >= recordFrom && stampNanos < recordUntil) {
+                    long micros = (now() - stampNanos) / 1_000;
+                    latencies.recordValue(Math.min(MAX_MICROS, Math.max(0, micros)));
+                }
+            }
+            case IDLE -> from.inFlight = Math.max(0, from.inFlight - 1);
+        }
+    }
+
+    /** Called by a client handler at the end of a batch of reads: one flush per written channel. */
+    void readComplete() {
+        flushDirty();
+    }
+
+    private void flushDirty() {
+        for (int i = 0; i < dirty.size(); i++) {
+            RelayAgent a = dirty.get(i);
+            a.dirty = false;
+            a.channel.flush();
+        }
+        dirty.clear();
+    }
+
+    private void refill(RelayAgent a) {
+        if (a.window > 0 && a.inFlight < a.window) {
+            long stamp = now();
+            while (a.inFlight < a.window) {
+                a.send(stamp);
+                a.inFlight++;
+            }
+        }
+    }
+
+    /** Starts the closed loop: every agent keeps {@code window} messages outstanding. */
+    void startClosed(int window) {
+        mode = Mode.CLOSED;
+        for (RelayAgent a : agents) {
+            a.window = window;
+            refill(a);
+        }
+        flushDirty();
+    }
+
+    /** Stops the closed loop; outstanding messages still arrive and are counted. */
+    void stopClosed() {
+        for (RelayAgent a : agents) {
+            a.window = 0;
+        }
+        mode = Mode.IDLE;
+    }
+
+    int inFlight() {
+        int n = 0;
+        for (RelayAgent a : agents) {
+            n += a.inFlight;
+        }
+        return n;
+    }
+
+    /**
+     * Starts the open loop at {@code perAgentRate} messages per second per agent from {@code start}; agent
+     * {@code k}'s phase is spread over one period by its position among {@code total} agents.
+     */
+    void startOpen(long start, long period, int total, long recordFrom, long recordUntil) {
+        this.mode = Mode.OPEN;
+        this.periodNanos = period;
+        this.recordFrom = recordFrom;
+        this.recordUntil = recordUntil;
+        this.sendUntil = recordUntil;
+        for (RelayAgent a : agents) {
+            a.scheduled = 0;
+            a.nextIntended = intended(start, a, total);
+        }
+        latencies.reset();
+        scheduledInWindow = 0;
+        ticker = executor.scheduleAtFixedRate(() -> tick(start, total), 0, TICK_NANOS, TimeUnit.NANOSECONDS);
+    }
+
+    /** An agent's next intended time: its constant-rate schedule, rounded down to the 1 ms tick that sends it. */
+    private long intended(long start, RelayAgent a, int total) {
+        long exact = start + a.index * periodNanos / total + a.scheduled * periodNanos;
+        return start + (exact - start) / TICK_NANOS * TICK_NANOS;
+    }
+
+    private void tick(long start, int total) {
+        long now = now();
+        for (int i = 0; i < agents.size(); i++) {
+            RelayAgent a = agents.get(i);
+            while (a.nextIntended <= now && a.nextIntended < sendUntil) {
+                a.send(a.nextIntended);
+                if (a.nextIntended >= recordFrom) {
+                    scheduledInWindow++;
+                }
+                a.scheduled++;
+                a.nextIntended = intended(start, a, total);
+            }
+        }
+        flushDirty();
+        if (now >= sendUntil && ticker != null) {
+            ticker.cancel(false);
+            ticker = null;
+        }
+    }
+
+    /** Ends the open loop (sending has already stopped at {@code sendUntil}). */
+    void stopOpen() {
+        if (ticker != null) {
+            ticker.cancel(false);
+            ticker = null;
+        }
+        mode = Mode.IDLE;
+    }
+}

@@ -1,0 +1,79 @@
+package org.kicnp.bench;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import picocli.CommandLine;
+
+/** {@code bench gateway} end to end on a tiny configuration: real gateway, real sockets, the real broker if any. */
+class GatewayRelayCommandTest {
+    private static final List<String> RUN_KEYS = List.of("agents", "kicnp_msgs_per_s", "mosquitto_msgs_per_s",
+            "ratio", "kicnp_p99_ms_at_50k");
+
+    @Test
+    void gateway_kicnpAlone_printsTableThenJsonWithPositiveFigures() throws Exception {
+        Output run = run("gateway", "--agents", "10", "--seconds", "1", "--warmup", "1", "--jit-warmup", "0", "--rate", "2000",
+                "--no-mosquitto");
+
+        assertThat(run.code()).as(run.err()).isZero();
+        JsonNode r = lastJson(run.out()).get("runs").get(0);
+        assertThat(RUN_KEYS).allSatisfy(k -> assertThat(r.has(k)).as(k).isTrue());
+        assertThat(r.get("agents").asInt()).isEqualTo(10);
+        assertThat(r.get("kicnp_msgs_per_s").asDouble()).isPositive();
+        assertThat(r.get("kicnp_p99_ms_at_50k").asDouble()).isPositive();
+        assertThat(r.get("kicnp_lost_at_50k").asLong()).isZero();
+        assertThat(r.get("mosquitto_msgs_per_s").isNull()).isTrue();
+        assertThat(r.get("ratio").isNull()).isTrue();
+        assertThat(run.out()).contains("K-ICNP", "coordinated omission",
+                Runtime.getRuntime().availableProcessors() + " cores");
+    }
+
+    @Test
+    void gateway_withMosquitto_measuresBothAndGivesTheRatio() throws Exception {
+        assumeTrue(MosquittoBroker.installed(),
+                "Mosquitto is not installed (apt-get install mosquitto): the side-by-side run is skipped.");
+
+        Output run = run("gateway", "--agents", "10", "--seconds", "1", "--warmup", "1", "--jit-warmup", "0", "--rate", "2000",
+                "--no-install");
+
+        assertThat(run.code()).as(run.err()).isZero();
+        JsonNode r = lastJson(run.out()).get("runs").get(0);
+        assertThat(RUN_KEYS).allSatisfy(k -> assertThat(r.get(k).isNumber()).as(k).isTrue());
+        assertThat(r.get("kicnp_msgs_per_s").asDouble()).isPositive();
+        assertThat(r.get("mosquitto_msgs_per_s").asDouble()).isPositive();
+        assertThat(r.get("ratio").asDouble()).isCloseTo(r.get("kicnp_msgs_per_s").asDouble()
+                / r.get("mosquitto_msgs_per_s").asDouble(), org.assertj.core.data.Percentage.withPercentage(1));
+        assertThat(r.get("mosquitto_p99_ms_at_50k").asDouble()).isPositive();
+        assertThat(run.out()).contains("Mosquitto", "ratio K-ICNP / Mosquitto");
+    }
+
+    @Test
+    void gateway_oddAgentCount_isAUsageError() {
+        Output run = run("gateway", "--agents", "3", "--no-mosquitto");
+
+        assertThat(run.code()).isEqualTo(2);
+        assertThat(run.err()).contains("even");
+    }
+
+    private static JsonNode lastJson(String out) throws Exception {
+        List<String> lines = out.lines().toList();
+        return new ObjectMapper().readTree(lines.get(lines.size() - 1));
+    }
+
+    private record Output(int code, String out, String err) {
+    }
+
+    private static Output run(String... args) {
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        int code = new CommandLine(new BenchMain()).setOut(new PrintWriter(out)).setErr(new PrintWriter(err))
+                .execute(args);
+        return new Output(code, out.toString(), err.toString());
+    }
+}

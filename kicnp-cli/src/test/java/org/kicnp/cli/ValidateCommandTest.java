@@ -1,0 +1,154 @@
+package org.kicnp.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class ValidateCommandTest {
+    private static final String BASE = """
+            <KNOWLEDGEBASE>
+              <FRAME><NAME>System</NAME><ISINSTANCE>FALSE</ISINSTANCE></FRAME>
+              <FRAME><NAME>Speech</NAME><ISA>System</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>
+              <FRAME><NAME>Mouth</NAME><ISA>System</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>
+              <FRAME><NAME>KnownUser</NAME><ISA>System</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>
+              <FRAME><NAME>RobovieMouth</NAME><ISA>Mouth</ISA><ISINSTANCE>TRUE</ISINSTANCE></FRAME>
+            </KNOWLEDGEBASE>
+            """;
+
+    /** The frame of the paper's Table 4, whose parent Speech is declared in another file. */
+    private static final String GREETING = """
+            <FRAME>
+              <NAME>Greeting</NAME>
+              <ISA>%s</ISA>
+              <ISINSTANCE>FALSE</ISINSTANCE>
+              <SLOTLIST>
+                <SLOT>
+                  <NAME>mUser</NAME>
+                  <TYPE>TYPE_INSTANCE</TYPE>
+                  <CONDITION>COND_ANY</CONDITION>
+                  <ARGUMENT>KnownUser</ARGUMENT>
+                  <VALUE></VALUE>
+                  <REQUIRED>TRUE</REQUIRED>
+                  <SHARED>TRUE</SHARED>
+                  <UNIQUE>TRUE</UNIQUE>
+                </SLOT>
+                <SLOT>
+                  <NAME>mMouth</NAME>
+                  <TYPE>TYPE_INSTANCE</TYPE>
+                  <CONDITION>COND_ANY</CONDITION>
+                  <ARGUMENT>Mouth</ARGUMENT>
+                  <VALUE></VALUE>
+                  <REQUIRED>TRUE</REQUIRED>
+                  <SHARED>TRUE</SHARED>
+                  <UNIQUE>TRUE</UNIQUE>
+                </SLOT>
+                <SLOT>
+                  <NAME>onInstantiate</NAME>
+                  <TYPE>TYPE_STR</TYPE>
+                  <CONDITION>COND_ANY</CONDITION>
+                  <ARGUMENT></ARGUMENT>
+                  <VALUE>Sendmsg(s.mMouth, “Hi! Nice to meet you. Welcome to visit my room!”);</VALUE>
+                  <REQUIRED>FALSE</REQUIRED>
+                  <SHARED>TRUE</SHARED>
+                  <UNIQUE>TRUE</UNIQUE>
+                </SLOT>
+              </SLOTLIST>
+            </FRAME>
+            """;
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void validate_whenDirectoryLoadsAcrossFiles_exitsZeroAndCountsFrames() throws IOException {
+        Files.writeString(dir.resolve("base.xml"), BASE);
+        Files.writeString(dir.resolve("greeting.xml"), GREETING.formatted("Speech"));
+
+        CliRun run = CliRun.of("validate", dir.toString());
+
+        assertThat(run.exitCode()).as(run.out() + run.err()).isZero();
+        assertThat(run.outLines()).containsExactly("OK: 6 frames (5 classes, 1 instance) from 2 files");
+    }
+
+    @Test
+    void validate_whenParentMissing_reportsFileLineAndColumn() throws IOException {
+        Files.writeString(dir.resolve("base.xml"), BASE);
+        Path greeting = dir.resolve("greeting.xml");
+        Files.writeString(greeting, GREETING.formatted("Conversation"));
+
+        CliRun run = CliRun.of("validate", dir.toString());
+
+        assertThat(run.exitCode()).isEqualTo(1);
+        assertThat(run.outLines()).hasSize(2);
+        assertThat(run.outLines().get(0)).startsWith(greeting + ":" + MISSING_PARENT_AT + ": ").contains("'Conversation'");
+        assertThat(run.outLines().get(1)).startsWith("FAILED: 1 error in 1 file");
+    }
+
+    @Test
+    void validate_whenSeveralFilesHaveErrors_printsOneLinePerErrorThenASummary() throws IOException {
+        Path base = dir.resolve("base.xml");
+        Files.writeString(base, BASE.replace("<ISA>System</ISA>", "<ISA>Sistem</ISA>"));
+        Path greeting = dir.resolve("greeting.xml");
+        Files.writeString(greeting, GREETING.formatted("Conversation"));
+
+        CliRun run = CliRun.of("validate", base.toString(), greeting.toString());
+
+        assertThat(run.exitCode()).isEqualTo(1);
+        assertThat(run.outLines()).filteredOn(l -> l.startsWith(base + ":")).hasSize(3)
+                .allSatisfy(l -> assertThat(l).matches(".*:\\d+:\\d+: .*'Sistem'.*"));
+        assertThat(run.outLines()).filteredOn(l -> l.startsWith(greeting + ":")).hasSize(1);
+        assertThat(run.outLines().get(run.outLines().size() - 1)).isEqualTo("FAILED: 4 errors in 2 files (of 2 files checked)");
+    }
+
+    @Test
+    void validate_whenXmlMalformed_reportsTheLineAndFails() throws IOException {
+        Path broken = dir.resolve("broken.xml");
+        Files.writeString(broken, "<FRAME>\n  <NAME>Oops</NAME>\n  <ISINSTANCE>FALSE</ISINST>\n</FRAME>\n");
+
+        CliRun run = CliRun.of("validate", broken.toString());
+
+        assertThat(run.exitCode()).isEqualTo(1);
+        assertThat(run.outLines().get(0)).startsWith(broken + ":3:");
+    }
+
+    @Test
+    void validate_whenPathDoesNotExist_saysSoAndFails() {
+        Path missing = dir.resolve("nowhere.xml");
+
+        CliRun run = CliRun.of("validate", missing.toString());
+
+        assertThat(run.exitCode()).isEqualTo(1);
+        assertThat(run.out()).contains(missing + ": no such file or directory.");
+    }
+
+    @Test
+    void validate_whenDirectoryHasNoKnowledgeFiles_fails() {
+        CliRun run = CliRun.of("validate", dir.toString());
+
+        assertThat(run.exitCode()).isEqualTo(1);
+        assertThat(run.out()).contains("no knowledge files");
+    }
+
+    @Test
+    void validate_withoutArguments_isAUsageError() {
+        CliRun run = CliRun.of("validate");
+
+        assertThat(run.exitCode()).isEqualTo(2);
+        assertThat(run.err()).contains("FILE_OR_DIR");
+    }
+
+    @Test
+    void validate_help_explainsAndSucceeds() {
+        CliRun run = CliRun.of("validate", "--help");
+
+        assertThat(run.exitCode()).isZero();
+        assertThat(run.out()).contains("Usage: kicnp validate").contains("FILE:LINE:COLUMN");
+    }
+
+    /** Where the loader reports an unknown parent in GREETING: the ISA element, line 3. */
+    private static final String MISSING_PARENT_AT = "3:3";
+}

@@ -1,0 +1,82 @@
+package org.kicnp.editor;
+
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+/**
+ * The recent commands the World panel lists ({@code GET /api/commands}): each with its arguments, its latest
+ * status ({@code sent}, {@code started}, {@code ended}, {@code failed}), the result or reason, and the person's
+ * "wrong" judgement. Keeps the newest {@link #LIMIT}; feedback for commands sent elsewhere (by the platform's
+ * behavior frames) is listed too, so any action can be judged.
+ */
+final class CommandLog {
+    static final int LIMIT = 50;
+
+    private final LinkedHashMap<String, Map<String, Object>> entries = new LinkedHashMap<>();
+
+    /** Records a command the editor sent; answers its row. */
+    synchronized Map<String, Object> sent(String id, String robot, String action, Map<String, String> args) {
+        Map<String, Object> row = row(id, robot, action);
+        row.put("args", Collections.unmodifiableMap(new LinkedHashMap<>(args)));
+        return snapshot(row);
+    }
+
+    /** Records feedback; answers the command's row as it now is. */
+    synchronized Map<String, Object> feedback(CommandFeedback f) {
+        Map<String, Object> row = row(f.commandId(), f.robot(), f.action());
+        row.put("status", f.status().name().toLowerCase(Locale.ROOT));
+        row.put("detail", f.detail());
+        row.put("at", f.at().toString());
+        return snapshot(row);
+    }
+
+    /** Records a "wrong" judgement; answers the row. */
+    synchronized Map<String, Object> wrong(String id, String reason) {
+        Map<String, Object> row = row(id, "", "");
+        row.put("wrong", reason);
+        return snapshot(row);
+    }
+
+    /** Newest first. */
+    synchronized List<Map<String, Object>> recent() {
+        List<Map<String, Object>> out = new ArrayList<>();
+        entries.values().forEach(r -> out.addFirst(snapshot(r)));
+        return out;
+    }
+
+    private static Map<String, Object> snapshot(Map<String, Object> row) {
+        return Collections.unmodifiableMap(new LinkedHashMap<>(row));
+    }
+
+    private Map<String, Object> row(String id, String robot, String action) {
+        Map<String, Object> row = entries.get(id);
+        if (row == null) {
+            row = new LinkedHashMap<>();
+            row.put("id", id);
+            row.put("robot", robot);
+            row.put("action", action);
+            row.put("args", Map.of());
+            row.put("status", "sent");
+            row.put("detail", "");
+            row.put("at", Instant.now().toString());
+            row.put("wrong", "");
+            entries.put(id, row);
+            while (entries.size() > LIMIT) {
+                entries.remove(entries.keySet().iterator().next());
+            }
+        } else {
+            if (!robot.isEmpty()) {
+                row.put("robot", robot);
+            }
+            if (!action.isEmpty()) {
+                row.put("action", action);
+            }
+        }
+        return row;
+    }
+}
