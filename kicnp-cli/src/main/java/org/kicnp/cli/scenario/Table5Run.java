@@ -89,8 +89,10 @@ public final class Table5Run implements AutoCloseable {
     public void playUntilAskedForADrink(String name) throws TimeoutException, InterruptedException {
         user.appear();
         record.awaitLine("What is your name?", STEP);
+        record.awaitFinished("AskUserName", STEP); // a person lets Robovie finish its question
         user.say("My name is " + name + ".");
         record.awaitLine("What do you want to drink?", STEP.multipliedBy(2));
+        record.awaitFinished("AskDrink", STEP);
     }
 
     /** Waits until AIBO has lain down, or Robovie has said AIBO cannot come. */
