@@ -18,6 +18,9 @@ import picocli.CommandLine.Command;
             InferCommand.class,
             BenchCommand.class,
             TestCommand.class,
+            ServeCommand.class,
+            ReplayCommand.class,
+            DemoCommand.class,
         })
 public final class Main implements Runnable {
     @CommandLine.Spec

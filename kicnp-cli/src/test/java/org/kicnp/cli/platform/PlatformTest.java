@@ -1,0 +1,90 @@
+package org.kicnp.cli.platform;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.kicnp.agent.ActionHandle;
+import org.kicnp.agent.AgentBase;
+import org.kicnp.agent.AgentOptions;
+import org.kicnp.agent.UserAgent;
+import org.kicnp.cli.scenario.ScenarioFiles;
+import org.kicnp.core.DataType;
+import org.kicnp.core.Frame;
+import org.kicnp.core.Slot;
+import org.kicnp.core.Value;
+import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.Message.Command;
+
+/**
+ * The platform in-process on ephemeral ports over a copy of scenarios/table5: an agent asserts a stimulus and the
+ * robot agent receives the command the inference engine issued; its feedback reaches the engine.
+ */
+@Timeout(value = 60, unit = TimeUnit.SECONDS)
+class PlatformTest {
+    @TempDir
+    Path tmp;
+
+    /** A stand-in Robovie that records its commands and ends each one. */
+    static final class RecordingRobot extends AgentBase {
+        final LinkedBlockingQueue<Command> commands = new LinkedBlockingQueue<>();
+
+        RecordingRobot(AgentOptions o) {
+            super(o);
+        }
+
+        @Override protected void onCommand(Command command, ActionHandle handle) {
+            commands.add(command);
+            handle.started();
+            handle.ended("said it");
+        }
+    }
+
+    @Test
+    void serve_whenAStimulusIsAsserted_theRobotReceivesTheCommandAndItsFeedbackEndsTheAction() throws Exception {
+        Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
+        try (Platform platform = Platform.start(PlatformConfig.of(kb).withEphemeralPorts())) {
+            assertThat(Platform.defaultAgentsFile(kb)).exists();
+            assertThat(platform.editorPasswordFile()).hasValueSatisfying(p -> assertThat(p).exists());
+            try (RecordingRobot robovie = new RecordingRobot(AgentOptions.of("127.0.0.1", platform.gatewayPort(),
+                    "robovie", AgentKind.ROBOT, platform.token("robovie")));
+                 UserAgent user = new UserAgent(AgentOptions.of("127.0.0.1", platform.gatewayPort(), "user",
+                         AgentKind.USER, platform.token("user")))) {
+                robovie.startAndAwait(Duration.ofSeconds(10));
+                user.startAndAwait(Duration.ofSeconds(10));
+                user.assertFrame(Frame.instance("userA", "NewUser")
+                        .slot(Slot.ofValue("faceText", DataType.STRING, Value.of("0.1,0.2"))).build());
+
+                Command first = robovie.commands.poll(20, TimeUnit.SECONDS);
+                Command second = robovie.commands.poll(20, TimeUnit.SECONDS);
+                assertThat(first).isNotNull();
+                assertThat(second).isNotNull();
+                // FirstMeet: Robovie looks at the face; AskUserName: it asks the name (head and voice, together)
+                Command look = first.action().equals("head") ? first : second;
+                Command c = look == first ? second : first;
+                assertThat(look.action()).isEqualTo("head");
+                assertThat(c.robot()).isEqualTo("robovie");
+                assertThat(c.action()).isEqualTo("say");
+                assertThat(c.args()).containsEntry("text", "How are you! I have never seen you before. What is your name?");
+                long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+                while (System.nanoTime() < deadline && !platform.engine().actionStatus(c.id())
+                        .map(s -> s.finished()).orElse(false)) {
+                    Thread.sleep(20);
+                }
+                assertThat(platform.engine().actionStatus(c.id())).hasValueSatisfying(
+                        s -> assertThat(s.name()).isEqualTo("ENDED"));
+            }
+            List<String> log = Files.readAllLines(platform.events().file());
+            assertThat(log).anyMatch(l -> l.contains("\"event\":\"fired\"") && l.contains("AskUserName"));
+            assertThat(log).anyMatch(l -> l.contains("\"event\":\"command\"") && l.contains("robovie"));
+            assertThat(log).anyMatch(l -> l.contains("\"event\":\"feedback\"") && l.contains("\"stage\":\"ended\""));
+        }
+    }
+}

@@ -1,0 +1,164 @@
+package org.kicnp.cli.scenario;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Optional;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.kicnp.cli.scenario.RunRecord.Step;
+import org.kicnp.robots.SimRequest;
+
+/**
+ * The headless replay of Table 5 with real processes on loopback: the platform in-process, the simulator
+ * subprocess at accelerated time, the four robot agents and a scripted User A.
+ */
+@Timeout(value = 150, unit = TimeUnit.SECONDS)
+class Table5ReplayTest {
+    static final double TIME_SCALE = 8;
+    static final long SKEW_MS = 250;
+
+    @TempDir
+    Path tmp;
+
+    private Table5Run start(Path kb, String name) {
+        return Table5Run.headless(kb, Optional.of(Path.of("target/replay-events/" + name + ".jsonl")), 2004, TIME_SCALE,
+                Optional.of(new PrintStream(System.out, true)));
+    }
+
+    private static String holding(Table5Run run) {
+        return run.world().sim().query().at("/users/userA/holding/0").asText();
+    }
+
+    private Path kb() throws Exception {
+        return ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
+    }
+
+    @Test
+    void table5_rowsHappenInOrder_withFeedback_succession_synchronization_andRestriction() throws Exception {
+        try (Table5Run run = Table5Run.headless(kb(), Optional.of(Path.of("target/replay-events/first-visit.jsonl")), 2004, TIME_SCALE, Optional.of(new PrintStream(System.out, true)))) {
+            run.playFirstVisit("Taro", "Tea, please.");
+            run.awaitEnd();
+            RunRecord r = run.record();
+            System.out.println(r.latencySummary());
+            assertThat(Table5Checks.problems(r, "Taro")).isEmpty();
+
+            assertThat(r.lines()).containsSubsequence(
+                    "How are you! I have never seen you before. What is your name?",
+                    "Hi, Taro. Nice to meet you. Welcome you to visit my room.",
+                    "This is my friend, PINO.",
+                    "What do you want to drink?",
+                    "This is a robot dog AIBO. Please enjoy yourself with it.");
+            List<String> frames = r.steps().stream().map(Step::frame).toList();
+            assertThat(frames).containsSubsequence("FirstMeet", "AskUserName", "Welcome", "ShakeBothHands",
+                    "PinoGreetsUser", "AskDrink", "ScoutToKitchen", "ScoutToCup", "ScoutTakesCup", "ScoutBring",
+                    "ScoutServesCup", "IntroduceAibo", "AIBOAction1", "AIBOAction2");
+            assertThat(r.steps()).allSatisfy(s -> assertThat(s.outcome()).as(s.frame() + " " + s.detail()).isEqualTo("ended"));
+            // succession: each starts after the one before has ended
+            String[] chain = {"Welcome", "ShakeBothHands", "ScoutToKitchen", "ScoutToCup", "ScoutTakesCup", "ScoutBring",
+                    "ScoutServesCup", "IntroduceAibo", "AIBOAction1", "AIBOAction2"};
+            for (int i = 1; i < chain.length; i++) {
+                Step before = r.stepsOf(chain[i - 1]).getFirst();
+                Step after = r.stepsOf(chain[i]).getFirst();
+                assertThat(after.sent()).as(chain[i] + " after " + chain[i - 1]).isGreaterThanOrEqualTo(before.finished());
+            }
+            // synchronization: Robovie's "This is my friend, PINO." and PINO's walk start together
+            Step intro = r.stepsOf("IntroducePino").getFirst();
+            Step walk = r.stepsOf("PinoWalk").getFirst();
+            assertThat(Math.abs(intro.sent() - walk.sent()) / 1_000_000).isLessThanOrEqualTo(SKEW_MS);
+            // restriction: nothing else is sent while Scout hands over the cup
+            Step hand = r.stepsOf("ScoutServesCup").getFirst();
+            assertThat(r.steps()).filteredOn(s -> s != hand && s.sent() > hand.sent() && s.sent() < hand.finished())
+                    .isEmpty();
+            assertThat(run.world().sim().query().at("/users/userA/holding/0").asText()).startsWith("tea");
+            assertThat(run.platform().kb().contains("Taro")).isTrue();
+        }
+    }
+
+    @Test
+    void secondVisit_isGreetedByName_withoutBeingAsked_alsoAfterARestart() throws Exception {
+        Path kb = kb();
+        try (Table5Run run = start(kb, "second-visit")) {
+            run.playFirstVisit("Taro", "Tea, please.");
+            run.awaitEnd();
+            int before = run.record().lines().size();
+            run.playSecondVisit("Taro");
+            List<String> second = run.record().lines().subList(before, run.record().lines().size());
+            assertThat(second).contains("Hi! Nice to meet you. Welcome to visit my room!")
+                    .noneMatch(l -> l.contains("What is your name?"));
+        }
+        assertThat(Files.readString(kb.resolve("learned.xml"))).contains("<NAME>Taro</NAME>");
+        try (Table5Run again = start(kb, "after-restart")) {
+            again.playReturn("Taro");
+            assertThat(again.record().lines()).noneMatch(l -> l.contains("What is your name?"));
+        }
+    }
+
+    @Test
+    void coffee_scoutBringsCoffee() throws Exception {
+        try (Table5Run run = start(kb(), "coffee")) {
+            run.playFirstVisit("Hanako", "I'd like a coffee.");
+            run.awaitEnd();
+            assertThat(holding(run)).startsWith("coffee");
+            assertThat(run.record().stepsOf("ScoutTakesCup").getFirst().args()).contains("cup=coffee");
+        }
+    }
+
+    @Test
+    void unknownDrink_robovieSaysItHasNone_andScoutStays() throws Exception {
+        try (Table5Run run = start(kb(), "unknown-drink")) {
+            run.playFirstVisit("Jiro", "I'd like a beer, please.");
+            run.awaitEnd();
+            assertThat(run.record().lines()).contains("I am sorry, we have no beer. We have tea and coffee.",
+                    "This is a robot dog AIBO. Please enjoy yourself with it.");
+            assertThat(run.record().steps()).noneMatch(s -> s.robot().equals("scout"));
+        }
+    }
+
+    @Test
+    void changeOfMind_whileScoutIsOnItsWay_theTaskChangesToCoffee() throws Exception {
+        try (Table5Run run = start(kb(), "change-of-mind")) {
+            run.playFirstVisit("Saburo", "Tea, please.");
+            run.record().await(e -> e.kind().equals("feedback") && e.text("stage").equals("started")
+                    && e.text("robot").equals("scout"), Table5Run.STEP, "Scout setting off");
+            run.user().say("No, coffee please.");
+            run.awaitEnd();
+            assertThat(holding(run)).startsWith("coffee");
+            assertThat(run.record().steps()).filteredOn(s -> s.frame().equals("ScoutTakesCup") && s.ended())
+                    .extracting(Step::args).containsExactly("{cup=coffee}");
+            assertThat(run.record().lines()).noneMatch(l -> l.contains("Scout could not"));
+        }
+    }
+
+    @Test
+    void aiboDisconnected_theFailureIsReported_andTheOthersCarryOn() throws Exception {
+        try (Table5Run run = start(kb(), "aibo-disconnected")) {
+            run.playUntilAskedForADrink("Shiro");
+            run.world().agent("aibo").orElseThrow().close();
+            run.user().say("Tea, please.");
+            run.awaitEnd();
+            assertThat(holding(run)).startsWith("tea");
+            assertThat(run.record().stepsOf("AIBOAction1").getFirst().outcome()).isEqualTo("failed");
+            assertThat(run.record().lines()).contains("I am sorry, AIBO cannot come to you now.");
+        }
+    }
+
+    @Test
+    void scoutBlocked_reportsFailure_andRobovieApologises() throws Exception {
+        try (Table5Run run = start(kb(), "scout-blocked")) {
+            run.world().sim().call(new SimRequest.AddObstacle("box", 6.3, 3.0, 1.0, 0.2));
+            run.playFirstVisit("Goro", "Tea, please.");
+            run.awaitEnd();
+            Step trip = run.record().stepsOf("ScoutToKitchen").getFirst();
+            assertThat(trip.outcome()).isEqualTo("failed");
+            assertThat(trip.detail()).contains("blocked");
+            assertThat(run.record().lines()).containsSubsequence("I am sorry, Scout could not bring your drink.",
+                    "This is a robot dog AIBO. Please enjoy yourself with it.");
+        }
+    }
+}
