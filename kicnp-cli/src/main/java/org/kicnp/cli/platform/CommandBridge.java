@@ -86,23 +86,28 @@ final class CommandBridge implements org.kicnp.inference.ActionSink, FeedbackLis
 
     @Override public void started(Command command) {
         feedback(command, "started", "");
-        if (engine != null) {
+        if (engine != null && isEngines(command)) {
             engine.actionStarted(command.id());
         }
     }
 
     @Override public void ended(Command command, String result) {
         feedback(command, "ended", result);
-        if (engine != null) {
+        if (engine != null && isEngines(command)) {
             engine.actionEnded(command.id(), result);
         }
     }
 
     @Override public void failed(Command command, String reason) {
         feedback(command, "failed", reason);
-        if (engine != null) {
+        if (engine != null && isEngines(command)) {
             engine.actionFailed(command.id(), reason);
         }
+    }
+
+    /** Whether the engine issued the command (tele-operated ones it does not track). */
+    private static boolean isEngines(Command c) {
+        return !c.id().startsWith(PlatformTeleOperation.ID_PREFIX);
     }
 
     private void feedback(Command c, String stage, String detail) {

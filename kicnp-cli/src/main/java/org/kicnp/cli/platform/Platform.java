@@ -13,7 +13,10 @@ import java.util.concurrent.TimeUnit;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.store.KnowledgeStore;
 import org.kicnp.editor.EditorConfig;
+import org.kicnp.editor.ChatPort;
 import org.kicnp.editor.EditorServer;
+import org.kicnp.editor.PlatformPorts;
+import org.kicnp.editor.TeleOperation;
 import org.kicnp.gateway.AgentDirectory;
 import org.kicnp.gateway.GatewayConfig;
 import org.kicnp.gateway.GatewayServer;
@@ -52,10 +55,13 @@ public final class Platform implements AutoCloseable {
     private final Path agentsFile;
     private final Optional<Path> passwordFile;
     private final TraceLog traceLog;
+    private final PlatformChat chat;
+    private final PlatformTeleOperation teleOperation;
 
     private Platform(KnowledgeStore store, ScriptRuntime scripts, EventLog log, ExecutorService engineThread,
                      ScheduledExecutorService ticker, InferenceEngine engine, GatewayServer gateway,
-                     Optional<EditorServer> editor, Path agentsFile, Optional<Path> passwordFile, TraceLog traceLog) {
+                     Optional<EditorServer> editor, Path agentsFile, Optional<Path> passwordFile, TraceLog traceLog,
+                     PlatformChat chat, PlatformTeleOperation teleOperation) {
         this.store = store;
         this.scripts = scripts;
         this.log = log;
@@ -67,6 +73,8 @@ public final class Platform implements AutoCloseable {
         this.agentsFile = agentsFile;
         this.passwordFile = passwordFile;
         this.traceLog = traceLog;
+        this.chat = chat;
+        this.teleOperation = teleOperation;
     }
 
     /** The directory of the platform's own files in a knowledge-base directory. */
@@ -100,6 +108,8 @@ public final class Platform implements AutoCloseable {
         ScheduledExecutorService ticker = null;
         InferenceEngine engine = null;
         GatewayServer gateway = null;
+        PlatformChat chat = null;
+        PlatformTeleOperation teleOperation = null;
         try {
             KnowledgeBase kb = store.kb();
             log = EventLog.open(logFile);
@@ -116,22 +126,32 @@ public final class Platform implements AutoCloseable {
             ticker = Executors.newSingleThreadScheduledExecutor(r -> daemon(r, "kicnp-engine-tick"));
             InferenceEngine e = engine;
             ticker.scheduleAtFixedRate(e::tick, 250, 250, TimeUnit.MILLISECONDS);
+            GatewayServer g = gateway;
+            chat = new PlatformChat(gateway.port(), name -> tokenIn(agents, name), kb, log);
+            teleOperation = new PlatformTeleOperation(kb, log, g::registeredAgents, g::actionSink);
             Optional<EditorServer> editor = Optional.empty();
             Optional<Path> passwordFile = Optional.empty();
             if (config.httpPort().isPresent()) {
                 Path pw = config.editorPasswordFile().orElseGet(() -> metaDir(dir).resolve("editor-password"));
                 passwordFile = Optional.of(pw);
                 editor = Optional.of(EditorServer.start(EditorConfig.defaults().withPort(config.httpPort().get())
-                        .withPassword(Secrets.password(pw)), kb, engine));
+                        .withPassword(Secrets.password(pw)), kb, engine,
+                        PlatformPorts.none().withChat(chat).withTeleOperation(teleOperation)));
             }
             engine.tick();
             log.record("started", Map.of("kb", dir.toString(), "gateway", gateway.port(),
                     "editor", editor.map(EditorServer::port).orElse(-1)));
             return new Platform(store, scripts, log, engineThread, ticker, engine, gateway, editor, agents,
-                    passwordFile, traceLog);
+                    passwordFile, traceLog, chat, teleOperation);
         } catch (RuntimeException ex) {
             if (ticker != null) {
                 ticker.shutdownNow();
+            }
+            if (chat != null) {
+                chat.close();
+            }
+            if (teleOperation != null) {
+                teleOperation.close();
             }
             if (gateway != null) {
                 gateway.close();
@@ -192,16 +212,27 @@ public final class Platform implements AutoCloseable {
         return log;
     }
 
+    /** The chat port the editor uses: a person's words to the sentence parser, the verdicts and robots' lines back. */
+    public ChatPort chat() {
+        return chat;
+    }
+
+    /** The tele-operation port the editor uses: commands by hand, their feedback, judgements of wrong actions. */
+    public TeleOperation teleOperation() {
+        return teleOperation;
+    }
+
     /** The agent directory's token for an agent, read from the agent file. */
     public String token(String agent) {
+        return tokenIn(agentsFile, agent).orElseThrow(() -> new IllegalArgumentException(
+                "The agent file '" + agentsFile + "' has no token for '" + agent + "'."));
+    }
+
+    private static Optional<String> tokenIn(Path agentsFile, String agent) {
         try (var r = java.nio.file.Files.newBufferedReader(agentsFile)) {
             java.util.Properties p = new java.util.Properties();
             p.load(r);
-            String t = p.getProperty(agent + ".token");
-            if (t == null) {
-                throw new IllegalArgumentException("The agent file '" + agentsFile + "' has no token for '" + agent + "'.");
-            }
-            return t.strip();
+            return Optional.ofNullable(p.getProperty(agent + ".token")).map(String::strip);
         } catch (java.io.IOException e) {
             throw new java.io.UncheckedIOException("Cannot read the agent file '" + agentsFile + "'.", e);
         }
@@ -211,6 +242,8 @@ public final class Platform implements AutoCloseable {
         log.record("stopping", Map.of());
         ticker.shutdownNow();
         editor.ifPresent(EditorServer::close);
+        chat.close();
+        teleOperation.close();
         gateway.close();
         store.kb().removeListener(traceLog);
         engine.close();
