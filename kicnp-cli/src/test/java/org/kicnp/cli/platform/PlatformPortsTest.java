@@ -12,7 +12,11 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import org.kicnp.agent.AgentOptions;
+import org.kicnp.agent.UserAgent;
 import org.kicnp.cli.scenario.ScenarioFiles;
+import org.kicnp.core.DataType;
+import org.kicnp.core.Frame;
+import org.kicnp.core.Slot;
 import org.kicnp.core.Value;
 import org.kicnp.editor.ChatLine;
 import org.kicnp.editor.CommandFeedback;
@@ -60,6 +64,26 @@ class PlatformPortsTest {
                 ChatLine again = lines.poll(20, TimeUnit.SECONDS);
                 assertThat(again).isNotNull();
                 assertThat(again.kind()).isEqualTo(ChatLine.Kind.NOT_UNDERSTOOD);
+            }
+        }
+    }
+
+    @Test
+    void chat_whenTheEngineMakesRobovieSpeak_theLineComesBackAsARobotLine() throws Exception {
+        try (Platform platform = start();
+             PlatformTest.RecordingRobot robovie = new PlatformTest.RecordingRobot(options(platform, "robovie", AgentKind.ROBOT));
+             UserAgent user = new UserAgent(options(platform, "user", AgentKind.USER))) {
+            robovie.startAndAwait(Duration.ofSeconds(10));
+            user.startAndAwait(Duration.ofSeconds(10));
+            LinkedBlockingQueue<ChatLine> lines = new LinkedBlockingQueue<>();
+            try (Subscription s = platform.chat().onLine(lines::add)) {
+                user.assertFrame(Frame.instance("userA", "NewUser")
+                        .slot(Slot.ofValue("faceText", DataType.STRING, Value.of("0.1,0.2"))).build());
+                ChatLine line = lines.poll(20, TimeUnit.SECONDS);
+                assertThat(line).isNotNull();
+                assertThat(line.kind()).isEqualTo(ChatLine.Kind.ROBOT);
+                assertThat(line.speaker()).isEqualTo("Robovie");
+                assertThat(line.text()).isEqualTo("How are you! I have never seen you before. What is your name?");
             }
         }
     }
