@@ -57,11 +57,12 @@ public final class Platform implements AutoCloseable {
     private final TraceLog traceLog;
     private final PlatformChat chat;
     private final PlatformTeleOperation teleOperation;
+    private final LiveWorldView world;
 
     private Platform(KnowledgeStore store, ScriptRuntime scripts, EventLog log, ExecutorService engineThread,
                      ScheduledExecutorService ticker, InferenceEngine engine, GatewayServer gateway,
                      Optional<EditorServer> editor, Path agentsFile, Optional<Path> passwordFile, TraceLog traceLog,
-                     PlatformChat chat, PlatformTeleOperation teleOperation) {
+                     PlatformChat chat, PlatformTeleOperation teleOperation, LiveWorldView world) {
         this.store = store;
         this.scripts = scripts;
         this.log = log;
@@ -75,6 +76,7 @@ public final class Platform implements AutoCloseable {
         this.traceLog = traceLog;
         this.chat = chat;
         this.teleOperation = teleOperation;
+        this.world = world;
     }
 
     /** The directory of the platform's own files in a knowledge-base directory. */
@@ -129,6 +131,7 @@ public final class Platform implements AutoCloseable {
             GatewayServer g = gateway;
             chat = new PlatformChat(gateway.port(), name -> tokenIn(agents, name), kb, log);
             teleOperation = new PlatformTeleOperation(kb, log, g::registeredAgents, g::actionSink);
+            LiveWorldView world = new LiveWorldView();
             Optional<EditorServer> editor = Optional.empty();
             Optional<Path> passwordFile = Optional.empty();
             if (config.httpPort().isPresent()) {
@@ -136,13 +139,13 @@ public final class Platform implements AutoCloseable {
                 passwordFile = Optional.of(pw);
                 editor = Optional.of(EditorServer.start(EditorConfig.defaults().withPort(config.httpPort().get())
                         .withPassword(Secrets.password(pw)), kb, engine,
-                        PlatformPorts.none().withChat(chat).withTeleOperation(teleOperation)));
+                        PlatformPorts.none().withChat(chat).withTeleOperation(teleOperation).withWorld(world)));
             }
             engine.tick();
             log.record("started", Map.of("kb", dir.toString(), "gateway", gateway.port(),
                     "editor", editor.map(EditorServer::port).orElse(-1)));
             return new Platform(store, scripts, log, engineThread, ticker, engine, gateway, editor, agents,
-                    passwordFile, traceLog, chat, teleOperation);
+                    passwordFile, traceLog, chat, teleOperation, world);
         } catch (RuntimeException ex) {
             if (ticker != null) {
                 ticker.shutdownNow();
@@ -220,6 +223,14 @@ public final class Platform implements AutoCloseable {
     /** The tele-operation port the editor uses: commands by hand, their feedback, judgements of wrong actions. */
     public TeleOperation teleOperation() {
         return teleOperation;
+    }
+
+    /**
+     * The world view the editor's World panel shows: empty until a simulator is {@linkplain LiveWorldView#attach
+     * attached} ({@code demo} and {@code replay} attach theirs once it runs).
+     */
+    public LiveWorldView world() {
+        return world;
     }
 
     /** The agent directory's token for an agent, read from the agent file. */

@@ -41,6 +41,7 @@ public final class RobotWorld implements AutoCloseable {
         FaceRecognizer recognizer = FaceRecognizer.create();
         RobotWorld w = new RobotWorld(sim, FaceBook.attach(platform.kb(), recognizer));
         try {
+            platform.world().attach(sim);
             w.connect(new RobovieAgent(options(platform, "robovie"), sim, recognizer));
             w.connect(new PinoAgent(options(platform, "pino"), sim));
             w.connect(new ScoutAgent(options(platform, "scout"), sim));
