@@ -79,6 +79,11 @@ final class Agenda {
         return queue.size();
     }
 
+    /** The waiting activations in the order they would fire, copied. */
+    List<Activation> inOrder() {
+        return List.copyOf(queue);
+    }
+
     private void forget(Activation a) {
         byKey.remove(a.key());
         for (String fact : a.binding().values()) {

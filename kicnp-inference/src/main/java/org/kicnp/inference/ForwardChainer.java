@@ -84,6 +84,10 @@ final class ForwardChainer {
         return agenda.size();
     }
 
+    List<Activation> agenda() {
+        return agenda.inOrder();
+    }
+
     List<Rule> rules() {
         return List.copyOf(rules.values());
     }

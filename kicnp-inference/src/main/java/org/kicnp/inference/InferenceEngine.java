@@ -231,6 +231,20 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
         }
     }
 
+    /**
+     * The activations waiting on the agenda (after the queued changes are processed), in the order they would fire:
+     * a snapshot copy taken under the engine's lock, so it can be read while the engine goes on.
+     */
+    public List<AgendaEntry> agenda() {
+        lock.lock();
+        try {
+            drain();
+            return forward.agenda().stream().map(AgendaEntry::of).toList();
+        } finally {
+            lock.unlock();
+        }
+    }
+
     private void changed(ChangeSet cs) {
         submit(() -> forward.process(cs));
     }
