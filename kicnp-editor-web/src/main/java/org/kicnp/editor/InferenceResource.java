@@ -7,6 +7,7 @@ import java.util.Map;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Provenance;
+import org.kicnp.inference.AgendaEntry;
 import org.kicnp.inference.InferenceEngine;
 import org.kicnp.inference.InferenceLimitException;
 import org.kicnp.inference.TraceListener;
@@ -48,7 +49,18 @@ final class InferenceResource implements Features.Inference {
             }
         }
         Map<String, Object> out = new LinkedHashMap<>();
-        out.put("agenda", engine.agendaSize());
+        List<Map<String, Object>> activations = new ArrayList<>();
+        for (AgendaEntry a : engine.agenda()) {
+            Map<String, Object> row = new LinkedHashMap<>();
+            row.put("frame", a.frame());
+            row.put("binding", new java.util.TreeMap<>(a.binding()));
+            row.put("priority", a.priority());
+            row.put("depth", a.depth());
+            row.put("recency", a.recency());
+            activations.add(row);
+        }
+        out.put("agenda", activations.size());
+        out.put("activations", activations);
         out.put("version", kb.version());
         out.put("instances", instances);
         out.put("actions", engine.actions().size());

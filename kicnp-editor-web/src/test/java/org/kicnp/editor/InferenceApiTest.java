@@ -66,7 +66,13 @@ class InferenceApiTest {
 
     @Test void run_firesAskUserName_andStatusListsTheDerivedInstance() {
         setUpUserAndMouth();
-        assertThat(json(http.get("/api/inference")).get("agenda").asInt()).isEqualTo(1);
+        JsonNode before = json(http.get("/api/inference"));
+        assertThat(before.get("agenda").asInt()).isEqualTo(1);
+        JsonNode waiting = before.get("activations").get(0);
+        assertThat(waiting.get("frame").asText()).isEqualTo("AskUserName");
+        assertThat(waiting.get("binding").get("mUser").asText()).isEqualTo("userA");
+        assertThat(waiting.get("binding").get("mMouth").asText()).isEqualTo("mouth1");
+        assertThat(waiting.has("priority") && waiting.has("depth") && waiting.has("recency")).isTrue();
 
         HttpResponse<String> run = http.post("/api/inference/run", "{}");
 
@@ -74,6 +80,7 @@ class InferenceApiTest {
         assertThat(json(run).get("firings").asInt()).isEqualTo(1);
         JsonNode status = json(http.get("/api/inference"));
         assertThat(status.get("agenda").asInt()).isZero();
+        assertThat(status.get("activations")).isEmpty();
         List<String> derived = new ArrayList<>();
         status.get("instances").forEach(i -> {
             if (i.get("derived").asBoolean()) {

@@ -33,6 +33,14 @@ export async function loadInference() {
         onclick: () => why(i.name)
       }))))
       : [el('tr', {}, el('td', { colspan: '4', class: 'muted', text: 'Working memory is empty.' }))]));
+    const activations = s.activations || [];
+    $('agenda-rows').replaceChildren(...(activations.length ? activations.map((a) => el('tr', {},
+      el('td', {}, el('button', { type: 'button', class: 'chip', text: a.frame, onclick: () => openFrame(a.frame) })),
+      el('td', { text: Object.entries(a.binding).map(([slot, inst]) => slot + ' = ' + inst).join(', ') }),
+      el('td', { text: String(a.priority) }),
+      el('td', { text: String(a.depth) }),
+      el('td', { text: String(a.recency) })))
+      : [el('tr', {}, el('td', { colspan: '5', class: 'muted', text: 'The agenda is empty.' }))]));
     showErrors('inference-errors', null);
   } catch (e) {
     showErrors('inference-errors', e);
