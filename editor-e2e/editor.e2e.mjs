@@ -197,6 +197,9 @@ try {
   await page.locator('#why-tree', { hasText: 'made by AskUserName' }).waitFor();
   check((await page.textContent('#why-tree')).includes('visitor1'), 'why does not rest on visitor1');
   await page.locator('#trace-log li.Fired').first().waitFor();
+  await page.fill('#ask-class', 'AskUserName');
+  await page.click('#prove-button');
+  await page.locator('#ask-answers li', { hasText: 'AskUserName' }).first().waitFor();
   await page.screenshot({ path: join(artifacts, '04-inference.png') });
 
   step = 'world panel: the room is drawn and the robots listed';

@@ -171,6 +171,8 @@ final class ApiHandler extends Handler.Abstract {
             case "why" -> s.length == 3 ? only(m, "GET", () -> ok(engine.why(s[2]))) : notFound(r);
             case "ask" -> only(m, "GET", () -> ok(engine.ask(r.query("class").orElseThrow(() ->
                     new ApiException(400, "Asking needs the class to ask about: ?class=Name.")))));
+            case "prove" -> only(m, "GET", () -> ok(engine.prove(r.query("class").orElseThrow(() ->
+                    new ApiException(400, "Proving needs the class to prove: ?class=Name.")))));
             case "run" -> only(m, "POST", () -> ok(engine.run()));
             default -> notFound(r);
         };

@@ -42,6 +42,9 @@ record Features(Xml xml, Scripts scripts, Inference inference) {
 
         Object ask(String className);
 
+        /** Backward chaining's proof trees for the class: why each answer holds, without side effects. */
+        Object prove(String className);
+
         Object run();
 
         @Override void close();
@@ -65,6 +68,10 @@ record Features(Xml xml, Scripts scripts, Inference inference) {
             }
 
             @Override public Object ask(String className) {
+                throw unavailable();
+            }
+
+            @Override public Object prove(String className) {
                 throw unavailable();
             }
 

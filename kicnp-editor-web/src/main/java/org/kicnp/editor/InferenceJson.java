@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Map;
 import org.kicnp.inference.Action;
 import org.kicnp.inference.Answer;
+import org.kicnp.inference.Proof;
 import org.kicnp.inference.Derivation;
 import org.kicnp.inference.Explanation;
 import org.kicnp.inference.TraceEvent;
@@ -91,6 +92,23 @@ final class InferenceJson {
         for (int i = 0; i < keysAndValues.length; i += 2) {
             m.put((String) keysAndValues[i], keysAndValues[i + 1]);
         }
+    }
+
+    /** A proof tree: an existing instance, or a frame that could derive one from the proofs of its slots. */
+    static Map<String, Object> proof(Proof p) {
+        Map<String, Object> m = new LinkedHashMap<>();
+        switch (p) {
+            case Proof.Exists e -> put(m, "kind", "exists", "className", e.className(), "instance", e.instance());
+            case Proof.Derivable d -> {
+                Map<String, Object> slots = new LinkedHashMap<>();
+                d.slots().entrySet().stream().sorted(Map.Entry.comparingByKey())
+                        .forEach(en -> slots.put(en.getKey(), proof(en.getValue())));
+                put(m, "kind", "derivable", "className", d.className(), "slots", slots,
+                        "assumptions", d.assumptions());
+            }
+        }
+        m.put("depth", p.depth());
+        return m;
     }
 
     static List<Map<String, Object>> answers(List<Answer> answers) {

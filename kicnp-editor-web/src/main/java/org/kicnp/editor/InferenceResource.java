@@ -76,6 +76,11 @@ final class InferenceResource implements Features.Inference {
         return InferenceJson.answers(engine.ask(className, Map.of()));
     }
 
+    @Override public Object prove(String className) {
+        kb.require(className);
+        return engine.prove(className, Map.of()).stream().map(InferenceJson::proof).toList();
+    }
+
     @Override public Object run() {
         try {
             int firings = engine.runToQuiescence();

@@ -113,6 +113,23 @@ class InferenceApiTest {
         assertThat(answers.get(0).get("derivable").asBoolean()).isTrue();
     }
 
+    @Test void prove_returnsTheProofTreeWithoutCreatingAnything() {
+        setUpUserAndMouth();
+        int before = json(http.get("/api/frames")).size();
+
+        JsonNode proofs = json(http.get("/api/inference/prove?class=AskUserName"));
+
+        assertThat(proofs).isNotEmpty();
+        JsonNode p = proofs.get(0);
+        assertThat(p.get("kind").asText()).isEqualTo("derivable");
+        assertThat(p.get("className").asText()).isEqualTo("AskUserName");
+        assertThat(p.get("slots").get("mUser").get("kind").asText()).isEqualTo("exists");
+        assertThat(p.get("slots").get("mUser").get("instance").asText()).isEqualTo("userA");
+        assertThat(p.get("depth").asInt()).isEqualTo(1);
+        assertThat(json(http.get("/api/frames")).size()).isEqualTo(before);
+        assertThat(http.get("/api/inference/prove").statusCode()).isEqualTo(400);
+    }
+
     @Test void run_withoutLogin_answers401() {
         Http anonymous = new Http(server.port());
 

@@ -3,7 +3,7 @@
 import { $, RELATIONS, api, el, show, showErrors, showMain, state } from './base.js';
 import { loadFrames, renderNameLists, renderTree } from './tree.js';
 import { create, markDirty, openFrame, remove, rename, renderFrame, save, setFrame, startCreate } from './frame.js';
-import { addTrace, askInference, loadInference, openInference, runInference, scheduleInferenceReload } from './inference.js';
+import { addTrace, askInference, loadInference, openInference, proveInference, runInference, scheduleInferenceReload } from './inference.js';
 import { openWorld, renderWorldSession, worldEvent, worldVisible } from './world.js';
 import { cancelWrong, chatLine, feedbackEvent, markWrong, renderActions, renderArgs, say, sendCommand } from './operate.js';
 
@@ -201,6 +201,7 @@ function wire() {
   $('inference-refresh').addEventListener('click', loadInference);
   $('run-button').addEventListener('click', runInference);
   $('ask-form').addEventListener('submit', askInference);
+  $('prove-button').addEventListener('click', proveInference);
   $('import-apply').addEventListener('click', applyImport);
   $('world-button').addEventListener('click', openWorld);
   $('world-refresh').addEventListener('click', openWorld);

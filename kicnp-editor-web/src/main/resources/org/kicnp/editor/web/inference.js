@@ -91,6 +91,34 @@ export async function askInference(event) {
   }
 }
 
+export async function proveInference() {
+  const cls = $('ask-class').value.trim();
+  if (!cls) return;
+  try {
+    const proofs = await api('GET', '/api/inference/prove?class=' + enc(cls));
+    $('ask-answers').replaceChildren(...(proofs.length ? proofs.map(proofItem)
+      : [el('li', { class: 'muted', text: 'Nothing to prove: no instance exists or could be derived.' })]));
+  } catch (e) {
+    showErrors('inference-errors', e);
+  }
+}
+
+function proofItem(p) {
+  if (p.kind === 'exists') {
+    return el('li', {}, el('span', { class: 'what', text: p.instance }),
+      el('span', { class: 'how', text: ' exists (' + p.className + ')' }));
+  }
+  const slots = Object.entries(p.slots).map(([slot, sub]) => {
+    const item = proofItem(sub);
+    item.prepend(el('span', { class: 'how', text: slot + ': ' }));
+    return item;
+  });
+  const assumed = p.assumptions.length ? ' assuming ' + p.assumptions.join('; ') : '';
+  return el('li', {}, el('span', { class: 'what', text: '(new ' + p.className + ')' }),
+    el('span', { class: 'how', text: ' derivable by ' + p.className + assumed }),
+    slots.length ? el('ul', {}, slots) : null);
+}
+
 export function addTrace(event) {
   const log = $('trace-log');
   log.append(el('li', { class: event.event }, el('span', { class: 'ev', text: event.event }), ' ', event.text));
