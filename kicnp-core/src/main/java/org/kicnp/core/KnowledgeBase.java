@@ -166,30 +166,23 @@ public final class KnowledgeBase {
 
     /** Semantic links into the frame: those it declares "from" and those other frames declare "to" it. */
     public List<SemanticLink> linksInto(String name) {
-        return read(() -> {
-            Node n = node(name);
-            List<SemanticLink> out = new ArrayList<>(n.frame.linksFrom());
-            if (n.referrers != null) {
-                for (String r : n.referrers) {
-                    for (SemanticLink l : nodes.get(r).frame.linksTo()) {
-                        if (l.frame().equals(name)) {
-                            out.add(new SemanticLink(l.relation(), r));
-                        }
-                    }
-                }
-            }
-            return out;
-        });
+        return links(name, Frame::linksFrom, Frame::linksTo);
     }
 
     /** Semantic links out of the frame: those it declares "to" and those other frames declare "from" it. */
     public List<SemanticLink> linksOutOf(String name) {
+        return links(name, Frame::linksTo, Frame::linksFrom);
+    }
+
+    /** The frame's own links of one direction plus the referrers' links of the other direction that name it. */
+    private List<SemanticLink> links(String name, java.util.function.Function<Frame, List<SemanticLink>> own,
+            java.util.function.Function<Frame, List<SemanticLink>> mirrored) {
         return read(() -> {
             Node n = node(name);
-            List<SemanticLink> out = new ArrayList<>(n.frame.linksTo());
+            List<SemanticLink> out = new ArrayList<>(own.apply(n.frame));
             if (n.referrers != null) {
                 for (String r : n.referrers) {
-                    for (SemanticLink l : nodes.get(r).frame.linksFrom()) {
+                    for (SemanticLink l : mirrored.apply(nodes.get(r).frame)) {
                         if (l.frame().equals(name)) {
                             out.add(new SemanticLink(l.relation(), r));
                         }
