@@ -144,6 +144,9 @@ final class ActionCoordinator {
 
     /** Times out every running action whose deadline has passed. */
     void checkTimeouts() {
+        if (running.isEmpty()) {
+            return;
+        }
         long now = clock.millis();
         List<Tracked> overdue = new ArrayList<>();
         for (Tracked t : running) {

@@ -1,14 +1,70 @@
 package org.kicnp.inference;
 
+import java.util.LinkedHashMap;
 import java.util.Map;
 
 /**
- * A complete binding of a behavior frame's required slots, waiting on the agenda to fire. {@code recency} is the
- * assertion stamp of the newest fact in the binding; {@code seq} orders activations made at the same moment.
+ * A complete binding of a behavior frame's required slots, waiting on the agenda to fire. {@code facts} are the bound
+ * instances in the order of the rule's required slots; {@code recency} is the assertion stamp of the newest of them;
+ * {@code seq} orders activations made at the same moment and tells activations apart.
  */
-record Activation(Rule rule, Map<String, String> binding, long recency, long seq) {
-    Activation {
-        binding = Map.copyOf(binding);
+final class Activation {
+    private final Rule rule;
+    private final String[] facts;
+    private final long recency;
+    private final long seq;
+    private final BindingKey key;
+
+    Activation(Rule rule, String[] facts, long recency, long seq) {
+        this.rule = rule;
+        this.facts = facts;
+        this.recency = recency;
+        this.seq = seq;
+        this.key = new BindingKey(rule.frame(), facts);
+    }
+
+    Rule rule() {
+        return rule;
+    }
+
+    /** The bound instances, in the order of {@link Rule#required()}; not to be changed. */
+    String[] facts() {
+        return facts;
+    }
+
+    long recency() {
+        return recency;
+    }
+
+    long seq() {
+        return seq;
+    }
+
+    /** The refraction key: the frame and its binding, in slot order. */
+    BindingKey key() {
+        return key;
+    }
+
+    /** The binding as slot → instance, in slot order (a new map). */
+    Map<String, String> binding() {
+        return bindingOf(rule, facts);
+    }
+
+    static Map<String, String> bindingOf(Rule rule, String[] facts) {
+        Map<String, String> b = new LinkedHashMap<>(facts.length * 2);
+        for (int i = 0; i < facts.length; i++) {
+            b.put(rule.required().get(i).slot(), facts[i]);
+        }
+        return b;
+    }
+
+    /** The facts of a binding given as slot → instance, in the order of the rule's required slots. */
+    static String[] factsOf(Rule rule, Map<String, String> binding) {
+        String[] out = new String[rule.required().size()];
+        for (int i = 0; i < out.length; i++) {
+            out[i] = binding.get(rule.required().get(i).slot());
+        }
+        return out;
     }
 
     /** Activations are told apart by their sequence number, which is unique per engine. */
@@ -20,16 +76,7 @@ record Activation(Rule rule, Map<String, String> binding, long recency, long seq
         return Long.hashCode(seq);
     }
 
-    /** The refraction key: the frame and its binding, in slot order. */
-    String key() {
-        return key(rule.frame(), rule, binding);
-    }
-
-    static String key(String frame, Rule rule, Map<String, String> binding) {
-        StringBuilder sb = new StringBuilder(frame);
-        for (SlotPattern p : rule.required()) {
-            sb.append('\u0000').append(binding.get(p.slot()));
-        }
-        return sb.toString();
+    @Override public String toString() {
+        return "Activation" + key + "#" + seq;
     }
 }

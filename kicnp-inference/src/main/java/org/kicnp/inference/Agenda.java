@@ -15,18 +15,32 @@ import java.util.TreeSet;
  * is newest first), then the order activations were made. Activations are withdrawn when a fact they bind leaves.
  */
 final class Agenda {
-    static final Comparator<Activation> ORDER = Comparator
-            .comparingInt((Activation a) -> -a.rule().priority())
-            .thenComparingInt(a -> -a.rule().depth())
-            .thenComparingInt(a -> -a.rule().conditionCount())
-            .thenComparingLong(a -> -a.recency())
-            .thenComparingLong(Activation::seq);
+    static final Comparator<Activation> ORDER = (a, b) -> {
+        Rule ra = a.rule();
+        Rule rb = b.rule();
+        int c = Integer.compare(rb.priority(), ra.priority());
+        if (c == 0) {
+            c = Integer.compare(rb.depth(), ra.depth());
+        }
+        if (c == 0) {
+            c = Integer.compare(rb.conditionCount(), ra.conditionCount());
+        }
+        if (c == 0) {
+            c = Long.compare(b.recency(), a.recency());
+        }
+        return c != 0 ? c : Long.compare(a.seq(), b.seq());
+    };
 
     private final TreeSet<Activation> queue = new TreeSet<>(ORDER);
-    private final Map<String, Activation> byKey = new HashMap<>();
-    private final Map<String, Set<Activation>> byFact = new HashMap<>();
+    private final Map<BindingKey, Activation> byKey = new HashMap<>();
+    /** Where each fact's activations are kept (its {@link FactView.Fact}), so a fact leaving withdraws them. */
+    private final FactView facts;
 
-    boolean contains(String key) {
+    Agenda(FactView facts) {
+        this.facts = facts;
+    }
+
+    boolean contains(BindingKey key) {
         return byKey.containsKey(key);
     }
 
@@ -35,8 +49,8 @@ final class Agenda {
             return;
         }
         queue.add(a);
-        for (String fact : a.binding().values()) {
-            byFact.computeIfAbsent(fact, k -> new HashSet<>()).add(a);
+        for (String fact : a.facts()) {
+            facts.touch(fact).activation(a);
         }
     }
 
@@ -50,8 +64,10 @@ final class Agenda {
 
     /** Withdraws every activation that binds the fact. */
     void withdrawFact(String fact) {
-        Set<Activation> as = byFact.remove(fact);
+        FactView.Fact f = facts.get(fact);
+        Set<Activation> as = f == null ? null : f.activations;
         if (as != null) {
+            f.activations = null;
             for (Activation a : List.copyOf(as)) {
                 queue.remove(a);
                 forget(a);
@@ -72,7 +88,9 @@ final class Agenda {
     void clear() {
         queue.clear();
         byKey.clear();
-        byFact.clear();
+        for (FactView.Fact f : facts.all()) {
+            f.activations = null;
+        }
     }
 
     int size() {
@@ -86,12 +104,12 @@ final class Agenda {
 
     private void forget(Activation a) {
         byKey.remove(a.key());
-        for (String fact : a.binding().values()) {
-            Set<Activation> s = byFact.get(fact);
-            if (s != null) {
-                s.remove(a);
-                if (s.isEmpty()) {
-                    byFact.remove(fact);
+        for (String fact : a.facts()) {
+            FactView.Fact f = facts.get(fact);
+            if (f != null && f.activations != null) {
+                f.activations.remove(a);
+                if (f.activations.isEmpty()) {
+                    f.activations = null;
                 }
             }
         }

@@ -1,8 +1,8 @@
 package org.kicnp.inference;
 
+import java.util.ArrayList;
 import java.util.Collection;
 import java.util.HashMap;
-import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -19,8 +19,10 @@ final class AlphaMemory {
     private final Rule rule;
     private final SlotPattern pattern;
     private final LinkedHashSet<String> facts = new LinkedHashSet<>();
-    private final Map<List<String>, Map<Value, Set<String>>> indexes = new HashMap<>();
-    private final Map<String, Map<List<String>, Value>> keysOf = new HashMap<>();
+    private final List<List<String>> paths = new ArrayList<>(2);
+    private final List<Map<Value, Set<String>>> indexes = new ArrayList<>(2);
+    /** For each fact, the key it is filed under in each index (null where its path reaches nothing). */
+    private final Map<String, Value[]> keysOf = new HashMap<>();
 
     AlphaMemory(Rule rule, SlotPattern pattern) {
         this.rule = rule;
@@ -36,7 +38,10 @@ final class AlphaMemory {
     }
 
     void addIndex(List<String> path) {
-        indexes.putIfAbsent(List.copyOf(path), new HashMap<>());
+        if (!paths.contains(path)) {
+            paths.add(List.copyOf(path));
+            indexes.add(new HashMap<>());
+        }
     }
 
     boolean contains(String fact) {
@@ -53,16 +58,28 @@ final class AlphaMemory {
 
     /** Adds a fact, indexing it under the value each indexed path reaches from it. */
     void add(String fact, BiFunction<String, List<String>, Optional<Value>> pathValue) {
-        if (!facts.add(fact)) {
+        if (!facts.add(fact) || paths.isEmpty()) {
             return;
         }
-        for (Map.Entry<List<String>, Map<Value, Set<String>>> e : indexes.entrySet()) {
-            Optional<Value> key = pathValue.apply(fact, e.getKey());
+        Value[] keys = null;
+        for (int i = 0; i < paths.size(); i++) {
+            Optional<Value> key = pathValue.apply(fact, paths.get(i));
             if (key.isPresent()) {
                 Value k = Values.key(key.get());
-                e.getValue().computeIfAbsent(k, x -> new LinkedHashSet<>()).add(fact);
-                keysOf.computeIfAbsent(fact, x -> new LinkedHashMap<>()).put(e.getKey(), k);
+                Set<String> bucket = indexes.get(i).get(k);
+                if (bucket == null) {
+                    bucket = new LinkedHashSet<>(4);
+                    indexes.get(i).put(k, bucket);
+                }
+                bucket.add(fact);
+                if (keys == null) {
+                    keys = new Value[paths.size()];
+                }
+                keys[i] = k;
             }
+        }
+        if (keys != null) {
+            keysOf.put(fact, keys);
         }
     }
 
@@ -70,26 +87,31 @@ final class AlphaMemory {
         if (!facts.remove(fact)) {
             return;
         }
-        Map<List<String>, Value> keys = keysOf.remove(fact);
-        if (keys != null) {
-            keys.forEach((path, key) -> {
-                Set<String> bucket = indexes.get(path).get(key);
-                if (bucket != null) {
-                    bucket.remove(fact);
-                    if (bucket.isEmpty()) {
-                        indexes.get(path).remove(key);
-                    }
+        Value[] keys = keysOf.remove(fact);
+        if (keys == null) {
+            return;
+        }
+        for (int i = 0; i < keys.length; i++) {
+            if (keys[i] == null) {
+                continue;
+            }
+            Map<Value, Set<String>> index = indexes.get(i);
+            Set<String> bucket = index.get(keys[i]);
+            if (bucket != null) {
+                bucket.remove(fact);
+                if (bucket.isEmpty()) {
+                    index.remove(keys[i]);
                 }
-            });
+            }
         }
     }
 
     /** The facts whose value along {@code path} equals {@code key}; the path must have been indexed. */
     Collection<String> lookup(List<String> path, Value key) {
-        Map<Value, Set<String>> index = indexes.get(path);
-        if (index == null) {
+        int i = paths.indexOf(path);
+        if (i < 0) {
             throw new IllegalStateException("No index on " + path + " for slot '" + pattern.slot() + "'.");
         }
-        return index.getOrDefault(Values.key(key), Set.of());
+        return indexes.get(i).getOrDefault(Values.key(key), Set.of());
     }
 }

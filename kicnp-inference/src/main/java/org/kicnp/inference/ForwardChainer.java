@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
 import org.kicnp.core.Change;
 import org.kicnp.core.ChangeSet;
@@ -36,23 +37,27 @@ final class ForwardChainer {
     private final Conditions conditions;
     private final RuleCompiler compiler;
     private final MatchNetwork network;
-    private final Agenda agenda = new Agenda();
+    private final Agenda agenda;
     private final Supports supports;
     private final ScriptCalls scripts;
     private final Consumer<TraceEvent> tracer;
+    private final BooleanSupplier tracing;
+    private final FactView facts;
     private final Map<String, Rule> rules = new LinkedHashMap<>();
-    private final Map<String, Long> stamps = new HashMap<>();
     private long stampCounter;
     private long seq;
     private long firings;
     private long names;
 
-    ForwardChainer(KnowledgeBase kb, Conditions conditions, Supports supports, ScriptCalls scripts,
-                   Consumer<TraceEvent> tracer) {
+    ForwardChainer(KnowledgeBase kb, FactView facts, Conditions conditions, Supports supports, ScriptCalls scripts,
+                   Consumer<TraceEvent> tracer, BooleanSupplier tracing) {
+        this.facts = facts;
+        this.tracing = tracing;
         this.kb = kb;
         this.conditions = conditions;
         this.compiler = new RuleCompiler(kb);
-        this.network = new MatchNetwork(kb, conditions);
+        this.network = new MatchNetwork(kb, conditions, facts);
+        this.agenda = new Agenda(facts);
         this.supports = supports;
         this.scripts = scripts;
         this.tracer = tracer;
@@ -62,7 +67,7 @@ final class ForwardChainer {
     void start() {
         for (Frame f : kb.frames()) {
             if (f.isInstance()) {
-                stamps.put(f.name(), ++stampCounter);
+                facts.put(f).stamp = ++stampCounter;
             }
         }
         for (Frame f : kb.frames()) {
@@ -104,6 +109,7 @@ final class ForwardChainer {
                     if (a.frame().isInstance()) {
                         factAdded(a.frame());
                     } else {
+                        network.classesChanged();
                         classChanged(a.name());
                     }
                 }
@@ -114,6 +120,7 @@ final class ForwardChainer {
                         if (r.before_().isInstance()) {
                             factRemoved(r.before_());
                         }
+                        network.classesChanged();
                         classChanged(r.name());
                         if (r.frame().isClass() && r.before_().isClass() && (!r.before_().parent()
                                 .equals(r.frame().parent()) || !r.before_().slots().equals(r.frame().slots()))) {
@@ -125,6 +132,7 @@ final class ForwardChainer {
                     if (rm.frame().isInstance()) {
                         factRemoved(rm.frame());
                     } else {
+                        network.classesChanged();
                         uninstall(rm.name());
                     }
                 }
@@ -136,10 +144,14 @@ final class ForwardChainer {
 
     private void factAdded(Frame f) {
         long stamp = ++stampCounter;
-        stamps.put(f.name(), stamp);
-        trace(new TraceEvent.FactAsserted(f.name(), f.parent().orElseThrow(), stamp));
-        if (kb.contains(f.name())) {
-            network.insert(f.name(), f.parent().orElseThrow()).forEach(this::consider);
+        String cls = f.parent().orElseThrow();
+        facts.put(f).stamp = stamp;
+        if (tracing.getAsBoolean()) {
+            trace(new TraceEvent.FactAsserted(f.name(), cls, stamp));
+        }
+        List<MatchNetwork.Match> matches = network.insert(f.name(), cls);
+        for (int i = 0; i < matches.size(); i++) {
+            consider(matches.get(i));
         }
     }
 
@@ -149,7 +161,6 @@ final class ForwardChainer {
         network.retract(name);
         agenda.withdrawFact(name);
         supports.factGone(name);
-        stamps.remove(name);
         Set<String> orphans = supports.closure(name);
         Optional<Derivation> d = supports.release(name);
         if (d.isPresent()) {
@@ -165,10 +176,12 @@ final class ForwardChainer {
             }
         }
         retract(orphans, "it rests on '" + name + "', which was removed");
+        facts.remove(name);
     }
 
     private void factReplaced(Frame before, Frame after) {
         String name = after.name();
+        facts.put(after);
         Set<String> changed = changedSlots(before, after);
         scripts.runDemons(before, after, changed);
         String cls = after.parent().orElseThrow();
@@ -202,7 +215,7 @@ final class ForwardChainer {
                                 + "' no longer holds after " + why);
                     }));
         }
-        stamps.put(name, ++stampCounter);
+        facts.touch(name).stamp = ++stampCounter;
         network.insert(name, now.get().parent().orElseThrow()).forEach(this::consider);
     }
 
@@ -260,37 +273,62 @@ final class ForwardChainer {
 
     private void consider(MatchNetwork.Match m) {
         Rule r = m.rule();
-        String key = Activation.key(r.frame(), r, m.binding());
+        String[] bound = m.facts();
+        BindingKey key = new BindingKey(r.frame(), bound);
         if (agenda.contains(key)) {
             return;
         }
-        trace(new TraceEvent.Matched(r.frame(), m.binding()));
-        Optional<String> blocked = supports.blocked(r, m.binding(), key).or(() -> scripts.conditionFails(r, m.binding()));
+        boolean tracing = this.tracing.getAsBoolean();
+        if (tracing) {
+            trace(new TraceEvent.Matched(r.frame(), m.binding()));
+        }
+        Optional<String> blocked = supports.blocked(r, bound, key);
+        if (blocked.isEmpty() && r.scripted()) {
+            blocked = scripts.conditionFails(r, m.binding());
+        }
         if (blocked.isPresent()) {
             trace(new TraceEvent.Blocked(r.frame(), m.binding(), blocked.get()));
             return;
         }
-        long recency = m.binding().values().stream().mapToLong(f -> stamps.getOrDefault(f, 0L)).max().orElse(0);
-        agenda.add(new Activation(r, m.binding(), recency, ++seq));
-        trace(new TraceEvent.Activated(r.frame(), m.binding(), agenda.size()));
+        long recency = 0;
+        for (String f : bound) {
+            recency = Math.max(recency, stamp(f));
+        }
+        Activation a = new Activation(r, bound, recency, ++seq);
+        agenda.add(a);
+        if (tracing) {
+            trace(new TraceEvent.Activated(r.frame(), m.binding(), agenda.size()));
+        }
+    }
+
+    private long stamp(String fact) {
+        return facts.stamp(fact);
     }
 
     /** Fires one activation: creates the instance and runs its onInstantiate script. */
     void fire(Activation a) {
         Rule r = a.rule();
-        Optional<String> blocked = supports.blocked(r, a.binding(), a.key());
+        Optional<String> blocked = supports.blocked(r, a.facts(), a.key());
         if (blocked.isPresent()) {
             trace(new TraceEvent.Blocked(r.frame(), a.binding(), blocked.get()));
             return;
         }
-        Map<String, String> full = new LinkedHashMap<>();
-        r.required().forEach(p -> full.put(p.slot(), a.binding().get(p.slot())));
-        fillOptional(r, full);
+        Map<String, String> full = a.binding();
+        if (!r.optional().isEmpty()) {
+            fillOptional(r, full);
+        }
         String name = newName(r.frame());
-        String trigger = full.values().stream().max(Comparator.comparingLong(f -> stamps.getOrDefault(f, 0L)))
-                .orElseThrow();
+        String trigger = null;
+        long newest = -1;
+        for (String f : full.values()) {
+            long st = stamp(f);
+            if (st > newest) {
+                newest = st;
+                trigger = f;
+            }
+        }
         Derivation d = new Derivation(name, r.frame(), full, checked(r, full), ++firings, trigger, Optional.empty());
-        supports.markFired(a.key(), a.binding().values());
+        supports.markFired(a.key(), a.facts());
         supports.record(d, Optional.of(r));
         Frame.Builder b = Frame.instance(name, r.frame()).provenance(Provenance.RUNTIME);
         full.forEach((slot, fact) -> b.slot(Slot.builder(slot, DataType.INSTANCE).value(Value.ref(fact)).build()));
@@ -301,10 +339,12 @@ final class ForwardChainer {
             trace(new TraceEvent.Blocked(r.frame(), full, "the instance could not be created: " + e.getMessage()));
             return;
         }
-        trace(new TraceEvent.Fired(r.frame(), name, full, firings));
-        Optional<Value> script = kb.value(name, "onInstantiate");
-        if (script.isPresent() && !script.get().text().isBlank()) {
-            boolean ok = scripts.run(r.frame(), "onInstantiate", script.get().text(), new FrameView(kb, name, 0), name,
+        if (tracing.getAsBoolean()) {
+            trace(new TraceEvent.Fired(r.frame(), name, full, firings));
+        }
+        Optional<String> script = r.onInstantiate();
+        if (script.isPresent()) {
+            boolean ok = scripts.run(r.frame(), "onInstantiate", script.get(), new FrameView(kb, name, 0), name,
                     Optional.of(name));
             if (!ok) {
                 supports.markFailed(name);
@@ -323,7 +363,7 @@ final class ForwardChainer {
                 Map<String, String> trial = new LinkedHashMap<>(full);
                 trial.put(p.slot(), c);
                 if (conditions.holds(p.condition(), Value.ref(c), r.frame(), trial)
-                        && (best == null || stamps.getOrDefault(c, 0L) > stamps.getOrDefault(best, 0L))) {
+                        && (best == null || stamp(c) > stamp(best))) {
                     best = c;
                 }
             }
@@ -383,7 +423,7 @@ final class ForwardChainer {
     private void unmarkFired(Derivation d) {
         Rule r = rules.get(d.frame());
         if (r != null) {
-            supports.unmarkFired(Activation.key(r.frame(), r, d.binding()));
+            supports.unmarkFired(new BindingKey(r.frame(), Activation.factsOf(r, d.binding())));
         }
     }
 

@@ -44,7 +44,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
 
     private final KnowledgeBase kb;
     private final EngineOptions options;
-    private final Supports supports = new Supports();
+    private final Supports supports;
     private final ActionCoordinator actions;
     private final BackwardChainer backward;
     private final ScriptCalls scripts;
@@ -62,7 +62,9 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
         this.kb = kb;
         this.options = options;
         this.runner = runner;
-        Conditions conditions = new Conditions((f, s) -> kb.contains(f) ? kb.value(f, s) : Optional.empty());
+        FactView facts = new FactView(kb);
+        this.supports = new Supports(facts);
+        Conditions conditions = new Conditions(facts);
         this.actions = new ActionCoordinator(kb, sink, clock, options.actionTimeout(), this::trace, this::assertFeedback);
         ScriptApi api = new ScriptApi(kb, new ScriptApi.Services() {
             @Override public String newName(String prefix) {
@@ -86,7 +88,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
                 return forward.firings();
             }
         });
-        this.forward = new ForwardChainer(kb, conditions, supports, scripts, this::trace);
+        this.forward = new ForwardChainer(kb, facts, conditions, supports, scripts, this::trace, () -> !tracers.isEmpty());
         this.backward = new BackwardChainer(kb, options, supports, forward::rules);
     }
 

@@ -4,7 +4,6 @@ import java.util.ArrayList;
 import java.util.Collection;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
-import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -23,11 +22,21 @@ final class MatchNetwork {
     private final Conditions conditions;
     private final Map<String, Map<String, AlphaMemory>> memoriesByRule = new HashMap<>();
     private final Map<String, List<AlphaMemory>> byClass = new HashMap<>();
-    private final Map<String, Set<AlphaMemory>> memberships = new HashMap<>();
+    /** Where each fact's memories are listed (its {@link FactView.Fact}). */
+    private final FactView facts;
+    /** Per class, the memories an instance of it enters (its own and its ancestors'); dropped on any class change. */
+    private final Map<String, List<AlphaMemory>> entryCache = new HashMap<>();
+    /** Per rule, per required pattern (by position): the other required patterns, and the required slots it joins. */
+    private final Map<Rule, Plan> plans = new HashMap<>();
 
     MatchNetwork(KnowledgeBase kb, Conditions conditions) {
+        this(kb, conditions, new FactView(kb));
+    }
+
+    MatchNetwork(KnowledgeBase kb, Conditions conditions, FactView facts) {
         this.kb = kb;
         this.conditions = conditions;
+        this.facts = facts;
     }
 
     /** Installs a rule and fills its memories from the instances there are now; returns every complete binding. */
@@ -43,6 +52,8 @@ final class MatchNetwork {
             });
         }
         memoriesByRule.put(rule.frame(), mems);
+        plans.put(rule, Plan.of(rule));
+        entryCache.clear();
         for (AlphaMemory m : mems.values()) {
             byClass.computeIfAbsent(m.pattern().argument(), k -> new ArrayList<>()).add(m);
             for (var f : kb.instancesOf(m.pattern().argument())) {
@@ -52,7 +63,7 @@ final class MatchNetwork {
         List<Match> out = new ArrayList<>();
         SlotPattern first = rule.required().getFirst();
         for (String fact : List.copyOf(mems.get(first.slot()).facts())) {
-            out.addAll(complete(rule, first, fact));
+            complete(rule, first, fact, out);
         }
         return out;
     }
@@ -62,12 +73,14 @@ final class MatchNetwork {
         if (mems == null) {
             return;
         }
+        entryCache.clear();
+        plans.keySet().removeIf(r -> r.frame().equals(frame));
         for (AlphaMemory m : mems.values()) {
             byClass.getOrDefault(m.pattern().argument(), new ArrayList<>()).remove(m);
             for (String f : m.facts()) {
-                Set<AlphaMemory> s = memberships.get(f);
-                if (s != null) {
-                    s.remove(m);
+                FactView.Fact fact = facts.get(f);
+                if (fact != null && fact.memories != null) {
+                    fact.memories.remove(m);
                 }
             }
         }
@@ -79,24 +92,38 @@ final class MatchNetwork {
 
     /** Enters an instance of {@code className} into every memory it fits; returns the bindings it completes. */
     List<Match> insert(String fact, String className) {
-        List<AlphaMemory> entered = new ArrayList<>();
-        List<String> classes = new ArrayList<>();
-        classes.add(className);
-        classes.addAll(kb.ancestors(className));
-        for (String c : classes) {
-            for (AlphaMemory m : byClass.getOrDefault(c, List.of())) {
-                if (offer(m, fact)) {
-                    entered.add(m);
-                }
+        List<AlphaMemory> candidates = entryCache.get(className);
+        if (candidates == null) {
+            candidates = new ArrayList<>();
+            List<String> classes = new ArrayList<>();
+            classes.add(className);
+            classes.addAll(kb.ancestors(className));
+            for (String c : classes) {
+                candidates.addAll(byClass.getOrDefault(c, List.of()));
+            }
+            entryCache.put(className, candidates);
+        }
+        if (candidates.isEmpty()) {
+            return List.of();
+        }
+        List<AlphaMemory> entered = new ArrayList<>(candidates.size());
+        for (AlphaMemory m : candidates) {
+            if (offer(m, fact)) {
+                entered.add(m);
             }
         }
         List<Match> out = new ArrayList<>();
         for (AlphaMemory m : entered) {
             if (m.pattern().required()) {
-                out.addAll(complete(m.rule(), m.pattern(), fact));
+                complete(m.rule(), m.pattern(), fact, out);
             }
         }
         return out;
+    }
+
+    /** Forgets what it derived from the class hierarchy: call when a class frame was added, changed or removed. */
+    void classesChanged() {
+        entryCache.clear();
     }
 
     /** Matches again one fact in one slot of one rule: after a claim or key on it was freed. */
@@ -106,16 +133,25 @@ final class MatchNetwork {
                 || !mems.get(slot).pattern().required()) {
             return List.of();
         }
-        return complete(mems.get(slot).rule(), mems.get(slot).pattern(), fact);
+        List<Match> out = new ArrayList<>();
+        complete(mems.get(slot).rule(), mems.get(slot).pattern(), fact, out);
+        return out;
     }
 
-    /** A complete binding of a rule's required slots. */
-    record Match(Rule rule, Map<String, String> binding) { }
+    /** A complete binding of a rule's required slots: the instances in the order of {@link Rule#required()}. */
+    record Match(Rule rule, String[] facts) {
+        /** The binding as slot → instance, in slot order (a new map). */
+        Map<String, String> binding() {
+            return Activation.bindingOf(rule, facts);
+        }
+    }
 
     /** Takes a fact out of every memory it is in. */
     void retract(String fact) {
-        Set<AlphaMemory> in = memberships.remove(fact);
-        if (in != null) {
+        FactView.Fact f = facts.get(fact);
+        if (f != null && f.memories != null) {
+            List<AlphaMemory> in = f.memories;
+            f.memories = null;
             in.forEach(m -> m.remove(fact));
         }
     }
@@ -136,38 +172,48 @@ final class MatchNetwork {
             return false;
         }
         m.add(fact, (f, path) -> conditions.follow(Value.ref(f), path));
-        memberships.computeIfAbsent(fact, k -> new LinkedHashSet<>()).add(m);
+        facts.touch(fact).enter(m);
         return true;
     }
 
     /** Every complete binding of the rule's required slots with {@code fact} in {@code start}. */
-    private List<Match> complete(Rule rule, SlotPattern start, String fact) {
-        List<Match> out = new ArrayList<>();
-        Map<String, String> b = new LinkedHashMap<>();
+    private void complete(Rule rule, SlotPattern start, String fact, List<Match> out) {
+        Plan plan = plan(rule);
+        Map<String, String> b = new HashMap<>(8);
         b.put(start.slot(), fact);
-        if (!joinsHold(rule, start, b)) {
-            return out;
+        if (!joinsHold(rule, plan, start, b)) {
+            return;
         }
-        List<SlotPattern> todo = rule.required().stream().filter(p -> p != start).toList();
-        extend(rule, b, todo, 0, out);
-        return out;
+        extend(rule, plan, b, plan.others(start), 0, out);
     }
 
-    private void extend(Rule rule, Map<String, String> b, List<SlotPattern> todo, int k, List<Match> out) {
+    private Plan plan(Rule rule) {
+        Plan p = plans.get(rule);
+        if (p == null) {
+            p = Plan.of(rule);
+            plans.put(rule, p);
+        }
+        return p;
+    }
+
+    private void extend(Rule rule, Plan plan, Map<String, String> b, List<SlotPattern> todo, int k, List<Match> out) {
         if (k == todo.size()) {
-            Map<String, String> ordered = new LinkedHashMap<>();
-            rule.required().forEach(p -> ordered.put(p.slot(), b.get(p.slot())));
-            out.add(new Match(rule, ordered));
+            List<SlotPattern> req = rule.required();
+            String[] facts = new String[req.size()];
+            for (int i = 0; i < facts.length; i++) {
+                facts[i] = b.get(req.get(i).slot());
+            }
+            out.add(new Match(rule, facts));
             return;
         }
         SlotPattern p = todo.get(k);
-        for (String c : List.copyOf(partners(rule, p, b))) {
+        for (String c : partners(rule, p, b)) {
             if (b.containsValue(c)) {
                 continue;
             }
             b.put(p.slot(), c);
-            if (joinsHold(rule, p, b)) {
-                extend(rule, b, todo, k + 1, out);
+            if (joinsHold(rule, plan, p, b)) {
+                extend(rule, plan, b, todo, k + 1, out);
             }
             b.remove(p.slot());
         }
@@ -194,12 +240,17 @@ final class MatchNetwork {
 
     /** Join conditions that the assignment of {@code p} made decidable. */
     boolean joinsHold(Rule rule, SlotPattern p, Map<String, String> b) {
-        for (SlotPattern q : rule.required()) {
+        return joinsHold(rule, plan(rule), p, b);
+    }
+
+    private boolean joinsHold(Rule rule, Plan plan, SlotPattern p, Map<String, String> b) {
+        List<SlotPattern> required = rule.required();
+        for (int i = 0; i < required.size(); i++) {
+            SlotPattern q = required.get(i);
             if (q.joins().isEmpty() || !b.containsKey(q.slot()) || (q != p && !q.joins().contains(p.slot()))) {
                 continue;
             }
-            if (!b.keySet().containsAll(q.joins().stream().filter(j -> rule.required().stream()
-                    .anyMatch(r -> r.slot().equals(j))).toList())) {
+            if (!allBound(plan.requiredJoins(i), b)) {
                 continue;
             }
             if (!conditions.holds(q.condition(), Value.ref(b.get(q.slot())), rule.frame(), b)) {
@@ -207,5 +258,41 @@ final class MatchNetwork {
             }
         }
         return true;
+    }
+
+    private static boolean allBound(List<String> slots, Map<String, String> b) {
+        for (int i = 0; i < slots.size(); i++) {
+            if (!b.containsKey(slots.get(i))) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * What joining a rule needs, worked out once per rule: for each required pattern (by position), the other
+     * required patterns in order, and the slots among its joins that are required (the ones a binding must hold
+     * before its condition can be tested).
+     */
+    private record Plan(Map<SlotPattern, List<SlotPattern>> others, List<List<String>> requiredJoins) {
+        static Plan of(Rule rule) {
+            Map<SlotPattern, List<SlotPattern>> others = new java.util.IdentityHashMap<>();
+            List<List<String>> joins = new ArrayList<>();
+            Set<String> requiredSlots = new java.util.HashSet<>();
+            rule.required().forEach(p -> requiredSlots.add(p.slot()));
+            for (SlotPattern p : rule.required()) {
+                others.put(p, rule.required().stream().filter(q -> q != p).toList());
+                joins.add(p.joins().stream().filter(requiredSlots::contains).toList());
+            }
+            return new Plan(others, joins);
+        }
+
+        List<SlotPattern> others(SlotPattern start) {
+            return others.get(start);
+        }
+
+        List<String> requiredJoins(int index) {
+            return requiredJoins.get(index);
+        }
     }
 }

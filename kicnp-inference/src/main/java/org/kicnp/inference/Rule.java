@@ -1,5 +1,7 @@
 package org.kicnp.inference;
 
+import static java.util.Objects.requireNonNull;
+
 import java.util.List;
 import java.util.Optional;
 import java.util.stream.Stream;
@@ -7,23 +9,30 @@ import java.util.stream.Stream;
 /**
  * A behavior frame compiled for matching: its required instance slots (which must all be bound to fire), its
  * optional instance slots (bound at firing when something fits), and what the agenda orders by: explicit
- * priority, depth in the hierarchy and number of conditions.
+ * priority, depth in the hierarchy and number of conditions. {@code claims}: some slot is unshared or unique, so a
+ * binding may be blocked by what earlier firings hold. {@code scripted}: some slot has a script condition. {@code onInstantiate}: the frame's script, as its instances
+ * inherit it (resolved when the rule is compiled; an edit of the frame recompiles the rule).
  */
 record Rule(String frame, int priority, int depth, int conditionCount, List<SlotPattern> required,
-            List<SlotPattern> optional, List<SlotPattern> patterns, List<String> uniqueSlots) {
+            List<SlotPattern> optional, List<SlotPattern> patterns, List<String> uniqueSlots, boolean claims,
+            boolean scripted, Optional<String> onInstantiate) {
     Rule {
         required = List.copyOf(required);
         optional = List.copyOf(optional);
         patterns = List.copyOf(patterns);
         uniqueSlots = List.copyOf(uniqueSlots);
+        requireNonNull(onInstantiate, "onInstantiate");
     }
 
     /** A rule; {@code patterns} are the required then the optional slots, the unique ones are the required unique. */
     static Rule of(String frame, int priority, int depth, int conditionCount, List<SlotPattern> required,
-                   List<SlotPattern> optional) {
+                   List<SlotPattern> optional, Optional<String> onInstantiate) {
         List<SlotPattern> all = Stream.concat(required.stream(), optional.stream()).toList();
         List<String> unique = required.stream().filter(SlotPattern::unique).map(SlotPattern::slot).toList();
-        return new Rule(frame, priority, depth, conditionCount, required, optional, all, unique);
+        boolean claims = !unique.isEmpty() || all.stream().anyMatch(p -> !p.shared());
+        boolean scripted = all.stream().anyMatch(SlotPattern::isScript);
+        return new Rule(frame, priority, depth, conditionCount, required, optional, all, unique, claims, scripted,
+                onInstantiate);
     }
 
     /** Rules are compared by identity: one compiled rule per frame version. */

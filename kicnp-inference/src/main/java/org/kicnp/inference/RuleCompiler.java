@@ -12,6 +12,7 @@ import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Operand;
 import org.kicnp.core.Slot;
+import org.kicnp.core.Value;
 
 /**
  * Turns a class frame into a {@link Rule} when it is a behavior frame: a class whose effective slots (inherited ones
@@ -55,8 +56,9 @@ final class RuleCompiler {
         if (required.isEmpty()) {
             return Optional.empty();
         }
+        Optional<String> script = kb.value(frameName, "onInstantiate").map(Value::text).filter(t -> !t.isBlank());
         return Optional.of(Rule.of(frameName, frame.get().priority(), kb.ancestors(frameName).size(), conditions,
-                required, optional));
+                required, optional, script));
     }
 
     private static SlotPattern pattern(int index, Slot s, Set<String> instanceSlots) {

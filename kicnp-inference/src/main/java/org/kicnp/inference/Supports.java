@@ -4,6 +4,7 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
 import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.HashSet;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -17,15 +18,18 @@ import java.util.Set;
  * Owned by the engine thread.
  */
 final class Supports {
-    private final Map<String, Derivation> derivations = new HashMap<>();
-    private final Map<String, Set<String>> dependents = new HashMap<>();
-    private final Map<String, Set<String>> byFrame = new HashMap<>();
-    private final Set<String> fired = new HashSet<>();
-    private final Map<String, Set<String>> firedByFact = new HashMap<>();
+    private final Map<String, Derivation> derivations = new LinkedHashMap<>();
+    private final Set<BindingKey> fired = new HashSet<>();
     private final Map<String, String> claims = new HashMap<>();
     private final Map<String, String> keys = new HashMap<>();
     private final Map<String, List<String>> heldBy = new HashMap<>();
     private final Set<String> failed = new HashSet<>();
+    /** Where each fact's fired bindings are kept, so that a fact leaving frees them. */
+    private final FactView facts;
+
+    Supports(FactView facts) {
+        this.facts = facts;
+    }
 
     Optional<Derivation> derivation(String instance) {
         return Optional.ofNullable(derivations.get(instance));
@@ -35,22 +39,33 @@ final class Supports {
         return derivations.containsKey(instance);
     }
 
+    /** The live instances a frame derived (a scan: frames change rarely, firings often). */
     Set<String> derivedFrom(String frame) {
-        return Set.copyOf(byFrame.getOrDefault(frame, Set.of()));
+        Set<String> out = new LinkedHashSet<>();
+        for (Derivation d : derivations.values()) {
+            if (d.frame().equals(frame)) {
+                out.add(d.instance());
+            }
+        }
+        return out;
     }
 
     Set<String> dependentsOf(String fact) {
-        return Set.copyOf(dependents.getOrDefault(fact, Set.of()));
+        FactView.Fact f = facts.get(fact);
+        return f == null || f.dependents == null ? Set.of() : Set.copyOf(f.dependents);
     }
 
     /** Records a new derived instance and, for a firing, what its unshared and unique slots now hold. */
     void record(Derivation d, Optional<Rule> rule) {
         derivations.put(d.instance(), d);
-        byFrame.computeIfAbsent(d.frame(), k -> new LinkedHashSet<>()).add(d.instance());
         for (String s : d.supports()) {
-            dependents.computeIfAbsent(s, k -> new LinkedHashSet<>()).add(d.instance());
+            FactView.Fact f = facts.touch(s);
+            if (f.dependents == null) {
+                f.dependents = new LinkedHashSet<>(4);
+            }
+            f.dependents.add(d.instance());
         }
-        rule.ifPresent(r -> {
+        rule.filter(r -> r.claims()).ifPresent(r -> {
             List<String> held = new ArrayList<>();
             for (SlotPattern p : r.patterns()) {
                 String v = d.binding().get(p.slot());
@@ -74,16 +89,12 @@ final class Supports {
         if (d == null) {
             return Optional.empty();
         }
-        Set<String> f = byFrame.get(d.frame());
-        if (f != null) {
-            f.remove(instance);
-        }
         for (String s : d.supports()) {
-            Set<String> deps = dependents.get(s);
-            if (deps != null) {
-                deps.remove(instance);
-                if (deps.isEmpty()) {
-                    dependents.remove(s);
+            FactView.Fact f = facts.get(s);
+            if (f != null && f.dependents != null) {
+                f.dependents.remove(instance);
+                if (f.dependents.isEmpty()) {
+                    f.dependents = null;
                 }
             }
         }
@@ -108,7 +119,11 @@ final class Supports {
         Set<String> out = new LinkedHashSet<>();
         Deque<String> todo = new ArrayDeque<>(List.of(root));
         while (!todo.isEmpty()) {
-            for (String d : dependents.getOrDefault(todo.pop(), Set.of())) {
+            FactView.Fact f = facts.get(todo.pop());
+            if (f == null || f.dependents == null) {
+                continue;
+            }
+            for (String d : f.dependents) {
                 if (out.add(d)) {
                     todo.push(d);
                 }
@@ -119,18 +134,23 @@ final class Supports {
     }
 
     /** Why a binding may not fire now, if it may not: refracted, consumed by an unshared slot, or key taken. */
-    Optional<String> blocked(Rule r, Map<String, String> binding, String key) {
+    Optional<String> blocked(Rule r, String[] facts, BindingKey key) {
         if (fired.contains(key)) {
             return Optional.of("refraction: this binding has already fired");
         }
-        for (SlotPattern p : r.required()) {
-            String v = binding.get(p.slot());
+        if (!r.claims()) {
+            return Optional.empty();
+        }
+        List<SlotPattern> required = r.required();
+        for (int i = 0; i < required.size(); i++) {
+            SlotPattern p = required.get(i);
+            String v = facts[i];
             if (!p.shared() && claims.containsKey(claimKey(r.frame(), p.slot(), v))) {
                 return Optional.of("unshared slot '" + p.slot() + "' already holds '" + v + "' in '"
                         + claims.get(claimKey(r.frame(), p.slot(), v)) + "'");
             }
         }
-        return uniqueKey(r, binding).filter(keys::containsKey)
+        return uniqueKey(r, Activation.bindingOf(r, facts)).filter(keys::containsKey)
                 .map(k -> "unique slots " + r.uniqueSlots() + " already hold these values in '" + keys.get(k) + "'");
     }
 
@@ -138,22 +158,26 @@ final class Supports {
         return claims.containsKey(claimKey(frame, slot, fact));
     }
 
-    void markFired(String key, Iterable<String> facts) {
+    void markFired(BindingKey key, String[] bound) {
         fired.add(key);
-        for (String f : facts) {
-            firedByFact.computeIfAbsent(f, k -> new HashSet<>()).add(key);
+        for (String f : bound) {
+            this.facts.touch(f).fired(key);
         }
     }
 
-    void unmarkFired(String key) {
+    void unmarkFired(BindingKey key) {
         fired.remove(key);
     }
 
     /** A fact left: bindings with it can never recur, and a re-asserted fact of that name is a new fact. */
     void factGone(String fact) {
-        Set<String> ks = firedByFact.remove(fact);
+        FactView.Fact f = facts.get(fact);
+        List<BindingKey> ks = f == null ? null : f.fired;
         if (ks != null) {
-            fired.removeAll(ks);
+            f.fired = null;
+            for (BindingKey k : ks) {
+                fired.remove(k);
+            }
         }
     }
 

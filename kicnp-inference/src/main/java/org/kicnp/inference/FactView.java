@@ -1,0 +1,125 @@
+package org.kicnp.inference;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Slot;
+import org.kicnp.core.Value;
+
+/**
+ * The instances as the engine has seen them, one {@link Fact} each: its frame as of the last knowledge base event the
+ * engine processed, and the engine's own records about it (assertion stamp, the memories it is in, the activations
+ * and fired bindings it takes part in), kept together so that an event costs one look-up by name instead of one per
+ * record. Matching reads slot values here, without the knowledge base's lock, and sees the state its memories were
+ * built from. A slot the instance does not hold itself (an inherited value or default) is read from the knowledge
+ * base. Owned by the engine thread.
+ */
+final class FactView implements Conditions.Reader {
+    private final KnowledgeBase kb;
+    private final Map<String, Fact> facts = new HashMap<>();
+
+    /** What the engine knows of one instance. Fields are null until needed. */
+    static final class Fact {
+        final String name;
+        /** The frame as last seen; null when the network met the instance in the knowledge base before its event. */
+        Frame frame;
+        long stamp;
+        List<AlphaMemory> memories;
+        Set<Activation> activations;
+        List<BindingKey> fired;
+        /** The derived instances that rest on this one. */
+        Set<String> dependents;
+
+        private Fact(String name) {
+            this.name = name;
+        }
+
+        void enter(AlphaMemory m) {
+            if (memories == null) {
+                memories = new ArrayList<>(2);
+            }
+            if (!memories.contains(m)) {
+                memories.add(m);
+            }
+        }
+
+        void activation(Activation a) {
+            if (activations == null) {
+                activations = new HashSet<>(4);
+            }
+            activations.add(a);
+        }
+
+        void fired(BindingKey k) {
+            if (fired == null) {
+                fired = new ArrayList<>(2);
+            }
+            fired.add(k);
+        }
+    }
+
+    FactView(KnowledgeBase kb) {
+        this.kb = kb;
+    }
+
+    /** Records the instance's frame (as added or replaced) and returns its fact. */
+    Fact put(Frame instance) {
+        Fact f = touch(instance.name());
+        f.frame = instance;
+        return f;
+    }
+
+    /** The fact of that name, made (without a frame) when there is none yet. */
+    Fact touch(String name) {
+        Fact f = facts.get(name);
+        if (f == null) {
+            f = new Fact(name);
+            facts.put(name, f);
+        }
+        return f;
+    }
+
+    /** The fact of that name, or null. */
+    Fact get(String name) {
+        return facts.get(name);
+    }
+
+    void remove(String name) {
+        facts.remove(name);
+    }
+
+    /** The assertion stamp of an instance; 0 when the engine has not stamped it. */
+    long stamp(String name) {
+        Fact f = facts.get(name);
+        return f == null ? 0L : f.stamp;
+    }
+
+    /** Every fact (for the rare whole-engine operations). */
+    Iterable<Fact> all() {
+        return facts.values();
+    }
+
+    @Override public Optional<Value> value(String frame, String slot) {
+        Fact f = facts.get(frame);
+        if (f != null && f.frame != null) {
+            List<Slot> slots = f.frame.slots();
+            for (int i = 0; i < slots.size(); i++) {
+                Slot s = slots.get(i);
+                if (s.name().equals(slot)) {
+                    Optional<Value> v = s.effectiveValue();
+                    if (v.isPresent()) {
+                        return v;
+                    }
+                    break;
+                }
+            }
+        }
+        return kb.contains(frame) ? kb.value(frame, slot) : Optional.empty();
+    }
+}
