@@ -1,5 +1,6 @@
 package org.kicnp.inference;
 
+import java.util.Collection;
 import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -65,7 +66,7 @@ final class Agenda {
     /** Withdraws every activation that binds the fact. */
     void withdrawFact(String fact) {
         FactView.Fact f = facts.get(fact);
-        Set<Activation> as = f == null ? null : f.activations;
+        Collection<Activation> as = f == null ? null : f.activations;
         if (as != null) {
             f.activations = null;
             for (Activation a : List.copyOf(as)) {

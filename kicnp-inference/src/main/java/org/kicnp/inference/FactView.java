@@ -1,6 +1,7 @@
 package org.kicnp.inference;
 
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
@@ -26,12 +27,14 @@ final class FactView implements Conditions.Reader {
 
     /** What the engine knows of one instance. Fields are null until needed. */
     static final class Fact {
+        private static final int SMALL = 8;
         final String name;
         /** The frame as last seen; null when the network met the instance in the knowledge base before its event. */
         Frame frame;
         long stamp;
         List<AlphaMemory> memories;
-        Set<Activation> activations;
+        /** A short list, turned into a hash set when it grows past {@value #SMALL} (removal must stay cheap). */
+        Collection<Activation> activations;
         List<BindingKey> fired;
         /** The derived instances that rest on this one. */
         Set<String> dependents;
@@ -51,7 +54,9 @@ final class FactView implements Conditions.Reader {
 
         void activation(Activation a) {
             if (activations == null) {
-                activations = new HashSet<>(4);
+                activations = new ArrayList<>(2);
+            } else if (activations.size() == SMALL && activations instanceof ArrayList) {
+                activations = new HashSet<>(activations);
             }
             activations.add(a);
         }

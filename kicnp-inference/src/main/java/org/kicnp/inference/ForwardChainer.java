@@ -42,6 +42,8 @@ final class ForwardChainer {
     private final ScriptCalls scripts;
     private final Consumer<TraceEvent> tracer;
     private final BooleanSupplier tracing;
+    /** Canonical condition texts for explanations, made once per condition object. */
+    private final Map<org.kicnp.core.Condition, String> conditionTexts = new java.util.IdentityHashMap<>();
     private final FactView facts;
     private final Map<String, Rule> rules = new LinkedHashMap<>();
     private long stampCounter;
@@ -263,6 +265,7 @@ final class ForwardChainer {
     }
 
     private void uninstall(String frame) {
+        conditionTexts.clear();
         if (rules.remove(frame) != null) {
             network.removeRule(frame);
             agenda.withdrawRule(frame);
@@ -374,7 +377,7 @@ final class ForwardChainer {
     }
 
     private List<Derivation.CheckedCondition> checked(Rule r, Map<String, String> full) {
-        List<Derivation.CheckedCondition> out = new ArrayList<>();
+        List<Derivation.CheckedCondition> out = new ArrayList<>(r.patterns().size());
         for (SlotPattern p : r.patterns()) {
             String fact = full.get(p.slot());
             if (fact == null) {
@@ -391,9 +394,18 @@ final class ForwardChainer {
                         .map(Value::text).orElse(fact);
                 default -> fact;
             };
-            out.add(new Derivation.CheckedCondition(p.slot(), p.condition().text(), value));
+            out.add(new Derivation.CheckedCondition(p.slot(), conditionText(p.condition()), value));
         }
         return out;
+    }
+
+    private String conditionText(org.kicnp.core.Condition c) {
+        String t = conditionTexts.get(c);
+        if (t == null) {
+            t = c.text();
+            conditionTexts.put(c, t);
+        }
+        return t;
     }
 
     /** The first slot of a derived instance whose class or condition no longer holds, if any. */

@@ -179,7 +179,7 @@ final class MatchNetwork {
     /** Every complete binding of the rule's required slots with {@code fact} in {@code start}. */
     private void complete(Rule rule, SlotPattern start, String fact, List<Match> out) {
         Plan plan = plan(rule);
-        Map<String, String> b = new HashMap<>(8);
+        Map<String, String> b = new SlotBinding(rule.required().size());
         b.put(start.slot(), fact);
         if (!joinsHold(rule, plan, start, b)) {
             return;
