@@ -18,6 +18,11 @@ final class BindingKey {
         this.hash = 31 * frame.hashCode() + Arrays.hashCode(facts);
     }
 
+    /** The bound instances, in slot order; not to be changed. */
+    String[] facts() {
+        return facts;
+    }
+
     @Override public boolean equals(Object o) {
         return o instanceof BindingKey k && k.hash == hash && k.frame.equals(frame) && Arrays.equals(k.facts, facts);
     }

@@ -35,7 +35,10 @@ final class FactView implements Conditions.Reader {
         List<AlphaMemory> memories;
         /** A short list, turned into a hash set when it grows past {@value #SMALL} (removal must stay cheap). */
         Collection<Activation> activations;
-        List<BindingKey> fired;
+        /** The bindings with this fact that have fired (refraction); a short list or, past {@value #SMALL}, a set. */
+        Collection<BindingKey> fired;
+        /** How the engine derived this instance, if it did. */
+        Derivation derivation;
         /** The derived instances that rest on this one. */
         Set<String> dependents;
 
@@ -64,8 +67,22 @@ final class FactView implements Conditions.Reader {
         void fired(BindingKey k) {
             if (fired == null) {
                 fired = new ArrayList<>(2);
+            } else if (fired.size() == SMALL && fired instanceof ArrayList) {
+                fired = new HashSet<>(fired);
             }
-            fired.add(k);
+            if (!fired.contains(k)) {
+                fired.add(k);
+            }
+        }
+
+        boolean hasFired(BindingKey k) {
+            return fired != null && fired.contains(k);
+        }
+
+        void unfire(BindingKey k) {
+            if (fired != null) {
+                fired.remove(k);
+            }
         }
     }
 

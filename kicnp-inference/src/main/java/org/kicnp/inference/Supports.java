@@ -2,6 +2,7 @@ package org.kicnp.inference;
 
 import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.Deque;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
@@ -18,8 +19,6 @@ import java.util.Set;
  * Owned by the engine thread.
  */
 final class Supports {
-    private final Map<String, Derivation> derivations = new LinkedHashMap<>();
-    private final Set<BindingKey> fired = new HashSet<>();
     private final Map<String, String> claims = new HashMap<>();
     private final Map<String, String> keys = new HashMap<>();
     private final Map<String, List<String>> heldBy = new HashMap<>();
@@ -32,21 +31,26 @@ final class Supports {
     }
 
     Optional<Derivation> derivation(String instance) {
-        return Optional.ofNullable(derivations.get(instance));
+        FactView.Fact f = facts.get(instance);
+        return Optional.ofNullable(f == null ? null : f.derivation);
     }
 
     boolean isDerived(String instance) {
-        return derivations.containsKey(instance);
+        FactView.Fact f = facts.get(instance);
+        return f != null && f.derivation != null;
     }
 
     /** The live instances a frame derived (a scan: frames change rarely, firings often). */
     Set<String> derivedFrom(String frame) {
-        Set<String> out = new LinkedHashSet<>();
-        for (Derivation d : derivations.values()) {
-            if (d.frame().equals(frame)) {
-                out.add(d.instance());
+        List<Derivation> found = new ArrayList<>();
+        for (FactView.Fact f : facts.all()) {
+            if (f.derivation != null && f.derivation.frame().equals(frame)) {
+                found.add(f.derivation);
             }
         }
+        found.sort(java.util.Comparator.comparingLong(Derivation::firing));
+        Set<String> out = new LinkedHashSet<>();
+        found.forEach(d -> out.add(d.instance()));
         return out;
     }
 
@@ -57,7 +61,7 @@ final class Supports {
 
     /** Records a new derived instance and, for a firing, what its unshared and unique slots now hold. */
     void record(Derivation d, Optional<Rule> rule) {
-        derivations.put(d.instance(), d);
+        facts.touch(d.instance()).derivation = d;
         for (String s : d.supports()) {
             FactView.Fact f = facts.touch(s);
             if (f.dependents == null) {
@@ -85,9 +89,14 @@ final class Supports {
 
     /** Forgets a derived instance; returns its derivation. Its claims and keys are freed. */
     Optional<Derivation> release(String instance) {
-        Derivation d = derivations.remove(instance);
+        FactView.Fact self = facts.get(instance);
+        Derivation d = self == null ? null : self.derivation;
         if (d == null) {
             return Optional.empty();
+        }
+        self.derivation = null;
+        if (self.frame == null) {
+            facts.remove(instance);
         }
         for (String s : d.supports()) {
             FactView.Fact f = facts.get(s);
@@ -135,7 +144,8 @@ final class Supports {
 
     /** Why a binding may not fire now, if it may not: refracted, consumed by an unshared slot, or key taken. */
     Optional<String> blocked(Rule r, String[] facts, BindingKey key) {
-        if (fired.contains(key)) {
+        FactView.Fact first = this.facts.get(facts0(key));
+        if (first != null && first.hasFired(key)) {
             return Optional.of("refraction: this binding has already fired");
         }
         if (!r.claims()) {
@@ -159,24 +169,37 @@ final class Supports {
     }
 
     void markFired(BindingKey key, String[] bound) {
-        fired.add(key);
         for (String f : bound) {
             this.facts.touch(f).fired(key);
         }
     }
 
     void unmarkFired(BindingKey key) {
-        fired.remove(key);
+        for (String name : key.facts()) {
+            FactView.Fact f = facts.get(name);
+            if (f != null) {
+                f.unfire(key);
+            }
+        }
+    }
+
+    private static String facts0(BindingKey key) {
+        return key.facts()[0];
     }
 
     /** A fact left: bindings with it can never recur, and a re-asserted fact of that name is a new fact. */
     void factGone(String fact) {
         FactView.Fact f = facts.get(fact);
-        List<BindingKey> ks = f == null ? null : f.fired;
+        Collection<BindingKey> ks = f == null ? null : f.fired;
         if (ks != null) {
             f.fired = null;
             for (BindingKey k : ks) {
-                fired.remove(k);
+                for (String other : k.facts()) {
+                    FactView.Fact o = other.equals(fact) ? null : facts.get(other);
+                    if (o != null) {
+                        o.unfire(k);
+                    }
+                }
             }
         }
     }
