@@ -360,7 +360,7 @@ final class ForwardChainer {
         for (SlotPattern p : r.optional()) {
             String best = null;
             for (String c : network.candidates(r.frame(), p.slot())) {
-                if (full.containsValue(c) || (!p.shared() && supports.consumed(r.frame(), p.slot(), c))) {
+                if (full.containsValue(c) || (p.claims() && supports.consumed(r.frame(), p.slot(), c))) {
                     continue;
                 }
                 Map<String, String> trial = new LinkedHashMap<>(full);

@@ -29,7 +29,7 @@ record Rule(String frame, int priority, int depth, int conditionCount, List<Slot
                    List<SlotPattern> optional, Optional<String> onInstantiate) {
         List<SlotPattern> all = Stream.concat(required.stream(), optional.stream()).toList();
         List<String> unique = required.stream().filter(SlotPattern::unique).map(SlotPattern::slot).toList();
-        boolean claims = !unique.isEmpty() || all.stream().anyMatch(p -> !p.shared());
+        boolean claims = !unique.isEmpty() || all.stream().anyMatch(SlotPattern::claims);
         boolean scripted = all.stream().anyMatch(SlotPattern::isScript);
         return new Rule(frame, priority, depth, conditionCount, required, optional, all, unique, claims, scripted,
                 onInstantiate);

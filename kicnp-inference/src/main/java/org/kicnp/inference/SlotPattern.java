@@ -27,6 +27,15 @@ record SlotPattern(int index, String slot, String argument, Condition condition,
         }
     }
 
+    /**
+     * Whether what this slot holds is claimed: an unshared slot (its instance fills it once), or an optional unique
+     * slot (the same instance never in this slot of two instances of the frame). Required unique slots form the
+     * frame's key instead (see {@link Rule#uniqueSlots()}).
+     */
+    boolean claims() {
+        return !shared || (unique && !required);
+    }
+
     boolean isScript() {
         return condition instanceof Condition.Script;
     }

@@ -73,7 +73,7 @@ final class Supports {
             List<String> held = new ArrayList<>();
             for (SlotPattern p : r.patterns()) {
                 String v = d.binding().get(p.slot());
-                if (v != null && !p.shared()) {
+                if (v != null && p.claims()) {
                     String c = claimKey(r.frame(), p.slot(), v);
                     claims.put(c, d.instance());
                     held.add(c);

@@ -145,6 +145,29 @@ class ForwardChainingTest {
     }
 
     @Test
+    void optionalUniqueSlot_neverHoldsTheSameInstanceInTwoInstances_andIsFreedByRetraction() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Camera", null);
+        f.kb.add(Frame.classFrame("Watch").slot(Fixture.inst("mUser", "User"))
+                .slot(Slot.builder("mCam", DataType.INSTANCE).argument("Camera").unique(true).build()).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("cam", "Camera");
+        f.assertFact("u1", "User");
+        f.assertFact("u2", "User");
+        e.runToQuiescence();
+        var made = f.instancesOf("Watch");
+        assertThat(made).hasSize(2);
+        assertThat(made.stream().filter(w -> f.kb.value(w, "mCam").isPresent()).toList())
+                .as("only one Watch may hold the unique camera").hasSize(1);
+        String holder = made.stream().filter(w -> f.kb.value(w, "mCam").isPresent()).findFirst().orElseThrow();
+        e.destroy(holder);
+        f.assertFact("u3", "User");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Watch").stream().filter(w -> f.kb.value(w, "mCam").isPresent()).toList())
+                .as("the camera is free again once its holder is gone").hasSize(1);
+    }
+
+    @Test
     void refraction_whenFactIsChangedWithoutEffect_doesNotFireTheSameBindingTwice() {
         Fixture f = Fixture.paper();
         InferenceEngine e = f.engine();
