@@ -193,6 +193,17 @@ public final class KnowledgeBase {
         });
     }
 
+    /**
+     * The frames that mention this one other than as their parent (slot values and arguments, parts, links), in the
+     * order they came to mention it: what a change to this frame may affect. Empty for an unknown name.
+     */
+    public List<String> referrers(String name) {
+        return read(() -> {
+            Node n = nodes.get(name);
+            return n == null || n.referrers == null ? List.of() : List.copyOf(n.referrers);
+        });
+    }
+
     /** The version of the knowledge base when the frame last changed: the editor's check against lost updates. */
     public long revision(String name) {
         return read(() -> node(name).revision);

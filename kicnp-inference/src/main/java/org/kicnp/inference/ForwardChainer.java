@@ -126,7 +126,7 @@ final class ForwardChainer {
                         classChanged(r.name());
                         if (r.frame().isClass() && r.before_().isClass() && (!r.before_().parent()
                                 .equals(r.frame().parent()) || !r.before_().slots().equals(r.frame().slots()))) {
-                            kb.instancesOf(r.name()).forEach(i -> rematch(i.name(), "class '" + r.name() + "' changed"));
+                            kb.instancesOf(r.name()).forEach(i -> rematchOne(i.name(), "class '" + r.name() + "' changed"));
                         }
                     }
                 }
@@ -200,6 +200,30 @@ final class ForwardChainer {
      * on it are re-checked (and retracted when a condition no longer holds), and it enters again as a recent fact.
      */
     private void rematch(String name, String why) {
+        rematchOne(name, why);
+        rematchReaders(name, why);
+    }
+
+    /**
+     * A changed instance may be read through: a condition or an index path such as {@code mP.mA.key} reaches it from
+     * an instance that refers to it. Every instance referring to it, directly or through others, is matched again,
+     * so that indexes are rebuilt and the conditions of what was derived from them are checked again (and the
+     * derived instances retracted where they no longer hold).
+     */
+    private void rematchReaders(String name, String why) {
+        Set<String> seen = new LinkedHashSet<>(List.of(name));
+        List<String> todo = new ArrayList<>(kb.referrers(name));
+        for (int i = 0; i < todo.size(); i++) {
+            String r = todo.get(i);
+            if (!seen.add(r) || facts.get(r) == null || facts.get(r).frame == null) {
+                continue;
+            }
+            rematchOne(r, why + " (read through '" + r + "')");
+            todo.addAll(kb.referrers(r));
+        }
+    }
+
+    private void rematchOne(String name, String why) {
         Optional<Frame> now = kb.frame(name);
         if (now.isEmpty() || !now.get().isInstance()) {
             return;

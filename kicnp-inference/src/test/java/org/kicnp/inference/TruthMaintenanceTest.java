@@ -212,4 +212,30 @@ class TruthMaintenanceTest {
         out.addAll(rest);
         return out;
     }
+
+    @Test
+    void farPathCondition_whenTheFarInstanceChanges_isCheckedAgainAndReindexed() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("Stim").slot(Slot.builder("key", DataType.INTEGER).build()).build());
+        f.kb.add(Frame.classFrame("Target").slot(Slot.builder("key", DataType.INTEGER).build()).build());
+        f.kb.add(Frame.classFrame("Holder").slot(Fixture.inst("mS", "Stim")).build());
+        f.kb.add(Frame.classFrame("Far").slot(Fixture.inst("mH", "Holder"))
+                .slot(Fixture.inst("mT", "Target", ".key == mH.mS.key")).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("s1", "Stim", "key", 1L);
+        f.assertFact("t1", "Target", "key", 1L);
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Far")).hasSize(1);
+
+        f.kb.replace(f.kb.require("s1").withSlot(Fixture.num("key", 2)));
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Holder")).as("Holder reads s1 directly and has no condition").hasSize(1);
+        assertThat(f.instancesOf("Far")).as("Far read s1.key through Holder; 2 != 1 now").isEmpty();
+        assertThat(f.traced(TraceEvent.Retracted.class)).anySatisfy(r ->
+                assertThat(r.reason()).contains("no longer holds").contains("read through"));
+
+        f.kb.replace(f.kb.require("t1").withSlot(Fixture.num("key", 2)));
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Far")).as("the index on mH.mS.key was rebuilt with s1's new key").hasSize(1);
+    }
 }
