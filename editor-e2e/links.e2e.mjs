@@ -122,8 +122,10 @@ try {
     'focusing a link in the list does not light its arrow up');
   await page.keyboard.press('Enter');
   await page.locator('#frame-title', { hasText: 'ScoutToKitchen' }).waitFor();
-  check(await page.locator('#tree path.link-arrow.hot[data-from="ScoutToKitchen"]').count() === 1,
-    'the opened frame\'s arrows are not highlighted');
+  const hot = await page.$$eval('#tree path.link-arrow', (ps) => ps.map((p) => [p.classList.contains('hot'),
+    p.dataset.from === 'ScoutToKitchen' || p.dataset.to === 'ScoutToKitchen']));
+  check(hot.some(([h]) => h) && hot.every(([h, touches]) => h === touches),
+    'exactly the opened frame\'s arrows should be highlighted: ' + JSON.stringify(hot));
   await arrowBetween(page, 'ScoutToKitchen', 'ScoutToCup', 'SUCCESSION');
 
   step = 'screenshot at 1280x800';
