@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING, Any, Optional
 
 from .specs import Arg
 from .geometry import dist, r
+from .room import COUNTER, CUP_X
 from .skills import CUP_REACH_M, HAND_REACH_M, Timed, user_gap
 
 if TYPE_CHECKING:
@@ -41,6 +42,38 @@ class PickUp(Timed):
         self.cup.holder = f"robot:{self.robot.name}"
         self.robot.carrying = self.cup.id
         return {"cup": self.cup.id, "kind": self.cup.kind}
+
+
+class PutDown(Timed):
+    """Put the carried cup down on the counter, on its front edge level with the robot; needs to be near it; 1.5 s.
+
+    Carrying no cup there is nothing to put down: the action ends at once with ``cup`` None, so a changed order can
+    always "empty the gripper" without first asking whether the robot still holds the old cup.
+    """
+
+    ARGS = ()
+
+    def begin(self, world: "World") -> Optional[str]:
+        self.cup = world.cups.get(self.robot.carrying) if self.robot.carrying else None
+        if self.cup is None:
+            return None
+        y0, y1 = COUNTER[1] + 0.1, COUNTER[3] - 0.1
+        self.spot = (CUP_X, min(max(self.robot.pos[1], y0), y1))
+        gap = dist(self.robot.pos, self.spot) - self.robot.radius
+        if gap > CUP_REACH_M:
+            return f"not near the counter: its edge is {gap:.2f} m away (needs <= {CUP_REACH_M} m)"
+        return None
+
+    def duration(self, world: "World") -> float:
+        return 1.5 if self.cup is not None else 0.0
+
+    def finish(self, world: "World") -> dict[str, Any]:
+        if self.cup is None:
+            return {"cup": None, "kind": None}
+        self.cup.holder = None
+        self.cup.x, self.cup.y = self.spot
+        self.robot.carrying = None
+        return {"cup": self.cup.id, "kind": self.cup.kind, "x": r(self.spot[0], 3), "y": r(self.spot[1], 3)}
 
 
 class HandOver(Timed):

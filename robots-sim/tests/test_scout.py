@@ -90,3 +90,33 @@ def test_scout_carries_tea_from_counter_to_user(sim: Sim) -> None:
     st = sim.state()
     assert st["cups"][cup]["holder"] == "user:alice" and st["users"]["alice"]["holding"] == [cup]
     assert st["robots"]["scout"]["carrying"] is None
+
+
+def test_scout_puts_the_carried_cup_down_on_the_counter(sim: Sim) -> None:
+    sim.command("scout", "go_to", "g", x=6.85, y=3.7)
+    assert sim.run("g")[0]["type"] == "action_ended"
+    sim.command("scout", "pick_up", "p1", cup="tea")
+    cup = sim.run("p1")[0]["result"]["cup"]
+    sim.command("scout", "go_to", "g2", x=5.0, y=3.0)
+    assert sim.run("g2", max_s=20)[0]["type"] == "action_ended"
+    far = sim.command("scout", "put_down", "b0")
+    assert only(far, "action_failed", id="b0")[0]["reason"].startswith("not near the counter")
+    assert sim.state()["robots"]["scout"]["carrying"] == cup
+    sim.command("scout", "go_to", "g3", x=6.85, y=4.6)
+    assert sim.run("g3", max_s=20)[0]["type"] == "action_ended"
+    sim.command("scout", "put_down", "b1")
+    end, _ = sim.run("b1")
+    assert end["type"] == "action_ended" and end["result"]["cup"] == cup and end["result"]["kind"] == "tea"
+    st = sim.state()
+    assert st["robots"]["scout"]["carrying"] is None
+    assert st["cups"][cup]["holder"] is None
+    assert st["cups"][cup]["x"] == 7.3 and abs(st["cups"][cup]["y"] - 4.6) < 0.1
+    sim.command("scout", "pick_up", "p2", cup="coffee")
+    end, _ = sim.run("p2")
+    assert end["type"] == "action_ended" and end["result"]["kind"] == "coffee"
+
+
+def test_scout_put_down_with_empty_gripper_ends_at_once(sim: Sim) -> None:
+    sim.command("scout", "put_down", "b2")
+    end, _ = sim.run("b2")
+    assert end["type"] == "action_ended" and end["result"] == {"cup": None, "kind": None, "duration_s": 0.0}

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any, Optional
 
 from .. import sensors
 from ..geometry import r
-from ..skills_scout import Drive, HandOver, PickUp
+from ..skills_scout import Drive, HandOver, PickUp, PutDown
 from .base import MOTION_SPECS, Robot, spec
 
 if TYPE_CHECKING:
@@ -35,6 +35,7 @@ class Scout(Robot):
         "drive": spec("drive", ("base",), Drive),
         "pick_up": spec("pick_up", ("base", "gripper"), PickUp),
         "hand_over": spec("hand_over", ("base", "gripper"), HandOver),
+        "put_down": spec("put_down", ("base", "gripper"), PutDown),
     }
 
     def __init__(self, *a: Any, **kw: Any):

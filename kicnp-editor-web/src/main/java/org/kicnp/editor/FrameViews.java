@@ -1,5 +1,6 @@
 package org.kicnp.editor;
 
+import java.util.ArrayList;
 import java.util.List;
 import org.kicnp.core.EffectiveSlot;
 import org.kicnp.core.Frame;
@@ -17,9 +18,19 @@ final class FrameViews {
     private FrameViews() {
     }
 
-    /** A row of {@code GET /api/frames}. */
+    /**
+     * A row of {@code GET /api/frames}. {@code links} are the semantic links the frame declares (both its "to" and
+     * its "from" items) as directed arrows, so the page can draw every link of the hierarchy from the listing alone.
+     */
     record Summary(String name, String kind, String parent, boolean learned, String provenance, long revision,
-            int slotCount, boolean hasLinks) {
+            int slotCount, boolean hasLinks, List<Arrow> links) {
+    }
+
+    /**
+     * A semantic link as an arrow: the relation's name, the frame it goes out of and the frame it goes into. A
+     * frame's "to" link {@code (R, X)} is {@code self -> X}; its "from" link {@code (R, X)} is {@code X -> self}.
+     */
+    record Arrow(String relation, String from, String to) {
     }
 
     /** A semantic link: the relation's name and the frame at the other end. */
@@ -50,7 +61,20 @@ final class FrameViews {
 
     static Summary summary(KnowledgeBase kb, Frame f) {
         return new Summary(f.name(), f.kind().name(), f.parent().orElse(null), f.learned(), f.provenance().name(),
-                kb.revision(f.name()), f.slots().size(), !f.linksTo().isEmpty() || !f.linksFrom().isEmpty());
+                kb.revision(f.name()), f.slots().size(), !f.linksTo().isEmpty() || !f.linksFrom().isEmpty(),
+                arrows(f));
+    }
+
+    /** The frame's declared links as arrows: its "to" links first, then its "from" links, each in declared order. */
+    static List<Arrow> arrows(Frame f) {
+        List<Arrow> out = new ArrayList<>(f.linksTo().size() + f.linksFrom().size());
+        for (SemanticLink l : f.linksTo()) {
+            out.add(new Arrow(l.relation().name(), f.name(), l.frame()));
+        }
+        for (SemanticLink l : f.linksFrom()) {
+            out.add(new Arrow(l.relation().name(), l.frame(), f.name()));
+        }
+        return List.copyOf(out);
     }
 
     static Detail detail(KnowledgeBase kb, Frame f) {

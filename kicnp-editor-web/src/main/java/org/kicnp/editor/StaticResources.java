@@ -29,6 +29,7 @@ final class StaticResources extends Handler.Abstract {
             Map.entry("/editor.js", "editor.js"),
             Map.entry("/base.js", "base.js"),
             Map.entry("/tree.js", "tree.js"),
+            Map.entry("/links.js", "links.js"),
             Map.entry("/frame.js", "frame.js"),
             Map.entry("/slots.js", "slots.js"),
             Map.entry("/inference.js", "inference.js"),

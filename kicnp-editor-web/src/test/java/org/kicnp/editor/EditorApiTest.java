@@ -14,6 +14,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Relation;
 import org.kicnp.core.Value;
 
 /** The JSON API against a real Jetty on an ephemeral loopback port. */
@@ -55,6 +56,22 @@ class EditorApiTest {
         assertThat(robovie.get("revision").asLong()).isEqualTo(kb.revision("Robovie"));
         assertThat(find(rows, "Taro").get("learned").asBoolean()).isTrue();
         assertThat(find(rows, "System").get("parent").isNull()).isTrue();
+    }
+
+    @Test void list_givesEachFramesDeclaredLinksAsArrowsFromBothEnds() {
+        kb.add(Frame.classFrame("Farewell").parent("Speech")
+                .linkFrom(Relation.Coordination.SUCCESSION, "Greeting")
+                .linkTo(new Relation.Named("answers"), "AskUserName").build());
+
+        JsonNode rows = json(http.get("/api/frames"));
+
+        assertThat(find(rows, "Greeting").get("links")).extracting(JsonNode::toString)
+                .containsExactly("{\"relation\":\"SUCCESSION\",\"from\":\"Greeting\",\"to\":\"AskUserName\"}");
+        assertThat(find(rows, "Farewell").get("links")).extracting(JsonNode::toString).containsExactly(
+                "{\"relation\":\"answers\",\"from\":\"Farewell\",\"to\":\"AskUserName\"}",
+                "{\"relation\":\"SUCCESSION\",\"from\":\"Greeting\",\"to\":\"Farewell\"}");
+        assertThat(find(rows, "Robovie").get("links")).isEmpty();
+        assertThat(find(rows, "Robovie").get("hasLinks").asBoolean()).isFalse();
     }
 
     @Test void list_withQuery_keepsOnlyMatchingNames() {

@@ -19,6 +19,7 @@ import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Provenance;
 import org.kicnp.core.Slot;
+import org.kicnp.core.xml.KnowledgeLoader;
 import org.kicnp.inference.GraalScriptHost;
 import org.kicnp.inference.InferenceEngine;
 import org.kicnp.script.ScriptConfig;
@@ -29,7 +30,8 @@ import org.kicnp.script.ScriptRuntime;
  * a real editor server (with an inference engine attached, and a small in-test platform behind the World panel's
  * ports, its robots moving) on an ephemeral loopback port. Skipped, with a
  * message, only when Chromium (or Node.js to drive it) is not installed; screenshots are kept under
- * {@code target/e2e/}.
+ * {@code target/e2e/}. A third run, {@code editor-e2e/links.e2e.mjs}, opens the Table 5 scenario's knowledge base
+ * and checks the semantic links drawn as arrows between the frame nodes.
  */
 class EditorBrowserTest {
     private static final Path CHROMIUM = Path.of("/usr/bin/chromium");
@@ -114,6 +116,37 @@ class EditorBrowserTest {
             assertThat(exit).as(Files.readString(log)).isZero();
         }
         assertThat(artifacts.resolve("06-world-not-connected.png")).exists();
+    }
+
+    @Test void hierarchy_onTable5Scenario_drawsSemanticLinksAsArrowsBetweenFrameNodes() throws Exception {
+        boolean required = "1".equals(System.getenv("KICNP_REQUIRE_BROWSER"));
+        Path node = which("node");
+        if (required) {
+            assertThat(Files.isExecutable(CHROMIUM)).as("Chromium at /usr/bin/chromium (KICNP_REQUIRE_BROWSER=1)").isTrue();
+            assertThat(node).as("Node.js on PATH (KICNP_REQUIRE_BROWSER=1)").isNotNull();
+        }
+        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && node != null,
+                "Chromium or Node.js is not installed; browser test skipped.");
+        Path root = Path.of(System.getProperty("user.dir")).resolve("..").normalize();
+        Path e2e = root.resolve("editor-e2e");
+        Path artifacts = Path.of(System.getProperty("user.dir"), "target", "e2e");
+        Files.createDirectories(artifacts);
+        if (!Files.isDirectory(e2e.resolve("node_modules/playwright-core"))) {
+            run(e2e, List.of("npm", "ci", "--no-audit", "--no-fund"), Map.of(), artifacts.resolve("npm-ci.log"), 180);
+        }
+        KnowledgeBase kb = KnowledgeBase.create();
+        KnowledgeLoader.load(kb, List.of(root.resolve("scenarios/table5")));
+        assertThat(kb.require("ScoutToKitchen").linksTo()).extracting(l -> l.frame()).contains("ScoutToCup");
+        try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
+            Map<String, String> env = Map.of("EDITOR_URL", "http://127.0.0.1:" + server.port() + "/",
+                    "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString());
+            Path log = artifacts.resolve("browser-links.log");
+
+            int exit = run(e2e, List.of(node.toString(), "links.e2e.mjs"), env, log, 90);
+
+            assertThat(exit).as(Files.readString(log)).isZero();
+        }
+        assertThat(artifacts.resolve("07-semantic-links.png")).exists();
     }
 
     private static int run(Path dir, List<String> command, Map<String, String> env, Path log, int seconds)

@@ -45,6 +45,8 @@ public final class RobotModels {
         a.add(spec("Scout", "pick_up", "Picks up a cup (tea, coffee or a cup id) from the counter within 0.4 m.",
                 required("cup", STRING)));
         a.add(spec("Scout", "hand_over", "Hands the carried cup to a user within 0.6 m.", required("user", STRING)));
+        a.add(spec("Scout", "put_down", "Puts the carried cup down on the counter in front of it (within 0.4 m); "
+                + "carrying none, it ends at once."));
         return new RobotModel("scout", "differential-drive mobile robot: 16 sonars, 6 bumpers, carries a cup", a);
     }
 

@@ -136,6 +136,39 @@ class Table5ReplayTest {
     }
 
     @Test
+    void changeOfMind_whileScoutBringsTheTea_scoutPutsItDownAndBringsCoffee() throws Exception {
+        try (Table5Run run = start(kb(), "late-change-of-mind")) {
+            run.playFirstVisit("Shiro", "Tea, please.");
+            run.record().await(e -> e.kind().equals("feedback") && e.text("stage").equals("started")
+                    && e.text("robot").equals("scout") && e.text("action").equals("approach_user"),
+                    Table5Run.STEP, "Scout bringing the tea back");
+            assertThat(run.world().sim().query().at("/robots/scout/carrying").asText()).startsWith("tea");
+            run.user().say("No, coffee please.");
+            run.awaitEnd();
+            RunRecord r = run.record();
+
+            assertThat(r.lines()).contains("All right, Scout will bring you coffee instead.")
+                    .noneMatch(l -> l.contains("Scout could not"));
+            Step oldBring = r.stepsOf("ScoutBring").getFirst();
+            assertThat(oldBring.args()).contains("user=userA");
+            assertThat(oldBring.outcome()).isEqualTo("ended");
+            Step back = r.stepsOf("ScoutBackToKitchen").getFirst();
+            assertThat(back.sent()).as("back to the kitchen once the old trip's action ended")
+                    .isGreaterThanOrEqualTo(oldBring.finished());
+            Step putDown = r.stepsOf("ScoutPutsCupDown").getFirst();
+            assertThat(putDown.outcome()).isEqualTo("ended");
+            assertThat(putDown.detail()).contains("\"kind\":\"tea\"");
+            assertThat(r.steps()).filteredOn(st -> st.frame().equals("ScoutTakesCup") && st.ended())
+                    .extracting(Step::args).containsExactly("{cup=tea}", "{cup=coffee}");
+            assertThat(r.stepsOf("ScoutServesCup")).filteredOn(Step::ended).singleElement()
+                    .satisfies(st -> assertThat(st.sent()).isGreaterThan(putDown.finished()));
+            assertThat(run.world().sim().query().at("/users/userA/holding")).singleElement()
+                    .satisfies(cup -> assertThat(cup.asText()).startsWith("coffee"));
+            assertThat(run.world().sim().query().at("/robots/scout/carrying").isNull()).isTrue();
+        }
+    }
+
+    @Test
     void aiboDisconnected_theFailureIsReported_andTheOthersCarryOn() throws Exception {
         try (Table5Run run = start(kb(), "aibo-disconnected")) {
             run.playUntilAskedForADrink("Shiro");

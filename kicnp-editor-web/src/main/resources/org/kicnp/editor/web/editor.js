@@ -2,6 +2,7 @@
 // An ES module loaded by index.html; no build step, nothing from the network.
 import { $, RELATIONS, api, el, show, showErrors, showMain, state } from './base.js';
 import { loadFrames, renderNameLists, renderTree } from './tree.js';
+import { drawLinks, scheduleDrawLinks, swatch } from './links.js';
 import { create, markDirty, openFrame, remove, rename, renderFrame, save, setFrame, startCreate } from './frame.js';
 import { addTrace, askInference, loadInference, openInference, proveInference, runInference, scheduleInferenceReload } from './inference.js';
 import { openWorld, renderWorldSession, worldEvent, worldVisible } from './world.js';
@@ -212,6 +213,11 @@ function wire() {
   $('wrong-form').addEventListener('submit', markWrong);
   $('wrong-cancel').addEventListener('click', cancelWrong);
   window.addEventListener('resize', () => { if (worldVisible()) renderWorldSession(); });
+  // The arrows follow the tree's boxes: redrawn when the tree is re-rendered (tree.js), resized or re-wrapped.
+  $('link-legend').replaceChildren(...[['succession', 'succession'], ['synchronization', 'sync'],
+    ['restriction', 'restriction'], ['named', 'named']].map(([kind, text]) => el('span', {}, swatch(kind), text)));
+  $('show-links').addEventListener('change', drawLinks);
+  new ResizeObserver(scheduleDrawLinks).observe($('tree'));
   $('import-file').addEventListener('change', async (e) => {
     const file = e.target.files[0];
     if (file) $('import-text').value = await file.text();

@@ -2,6 +2,7 @@
 // An ES module loaded by index.html; no build step, nothing from the network.
 import { $, api, el, state } from './base.js';
 import { openFrame } from './frame.js';
+import { drawLinks } from './links.js';
 
 // ---- hierarchy ----
 
@@ -61,6 +62,7 @@ export function renderTree() {
     const again = tree.querySelector('[data-frame="' + CSS.escape(focused) + '"]');
     if (again) again.focus();
   }
+  drawLinks();
 }
 
 function item(f, ctx) {
