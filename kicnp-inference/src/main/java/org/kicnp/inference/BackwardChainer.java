@@ -112,7 +112,7 @@ final class BackwardChainer {
         if (k == options.size()) {
             Map<String, String> binding = new LinkedHashMap<>();
             chosen.forEach((s, p) -> binding.put(s, name(p, hypo)));
-            if (new HashSet<>(binding.values()).size() < binding.size() || exists(r, binding)) {
+            if (new HashSet<>(binding.values()).size() < binding.size() || blocked(r, binding)) {
                 return;
             }
             List<String> assumptions = new ArrayList<>();
@@ -163,14 +163,13 @@ final class BackwardChainer {
         return kb.contains(frame) ? kb.value(frame, slot) : Optional.empty();
     }
 
-    /** Whether the binding already has a derived instance of the frame. */
-    private boolean exists(Rule r, Map<String, String> binding) {
-        for (String d : supports.derivedFrom(r.frame())) {
-            if (supports.derivation(d).map(x -> r.required().stream().allMatch(p ->
-                    binding.get(p.slot()).equals(x.binding().get(p.slot())))).orElse(false)) {
-                return true;
-            }
-        }
-        return false;
+    /**
+     * Whether forward chaining would refuse the binding: it fired already (refraction), an unshared slot's instance
+     * or an optional unique slot's instance is claimed, or the frame's unique key is taken by a live instance. Only
+     * real instances claim anything: a hypothetical one is free.
+     */
+    private boolean blocked(Rule r, Map<String, String> binding) {
+        String[] facts = Activation.factsOf(r, binding);
+        return supports.blocked(r, facts, new BindingKey(r.frame(), facts)).isPresent();
     }
 }

@@ -5,7 +5,9 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
+import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
+import org.kicnp.core.Slot;
 import org.kicnp.core.Value;
 
 class BackwardChainingTest {
@@ -48,6 +50,30 @@ class BackwardChainingTest {
         assertThat(answers.get(0).slots()).containsEntry("mIn", "s1");
         assertThat(answers.get(1).derivable()).isTrue();
         assertThat(answers.get(1).slots()).containsEntry("mIn", "s2");
+    }
+
+    @Test
+    void ask_appliesUniqueAndUnsharedFacetsToRealInstances_asForwardChainingWould() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Mouth", null);
+        f.kb.add(Frame.classFrame("OncePerUser").slot(Fixture.inst("mUser", "User"))
+                .slot(Slot.builder("mMouth", DataType.INSTANCE).argument("Mouth").required(true).build()).build());
+        f.kb.add(Frame.classFrame("TakeMouth").slot(Slot.builder("mMouth", DataType.INSTANCE).argument("Mouth")
+                .required(true).shared(false).build())
+                .slot(Slot.builder("mUser", DataType.INSTANCE).argument("User").required(true).build()).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("u1", "User");
+        f.assertFact("m1", "Mouth");
+        e.runToQuiescence();
+        f.kb.add(Frame.instance("u2", "User").build());
+        f.kb.add(Frame.instance("m2", "Mouth").build());
+
+        assertThat(e.ask("OncePerUser", Map.of()).stream().filter(Answer::derivable).map(a -> a.slots().get("mUser")))
+                .as("u1 already holds the unique key; only u2 can make a new OncePerUser")
+                .containsOnly("u2");
+        assertThat(e.ask("TakeMouth", Map.of()).stream().filter(Answer::derivable).map(a -> a.slots().get("mMouth")))
+                .as("m1 is consumed by the unshared slot of the first TakeMouth")
+                .containsOnly("m2");
     }
 
     @Test
