@@ -4,9 +4,11 @@ import static java.util.Objects.requireNonNull;
 
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.function.Consumer;
 
 import org.graalvm.polyglot.Value;
@@ -33,6 +35,11 @@ public final class Proxies {
         Map<String, Object> converted = new LinkedHashMap<>();
         members.forEach((k, v) -> converted.put(requireNonNull(k, "member name"), ScriptValues.toGuest(v)));
         return new ReadOnlyObject(Collections.unmodifiableMap(converted), members);
+    }
+
+    /** A read-only object whose members are read from {@code source} when first asked for, then kept for the run. */
+    public static ProxyObject lazy(ScriptObject source) {
+        return new LazyObject(requireNonNull(source, "source"), new HashMap<>());
     }
 
     /** A read-only array of the list's elements, converted once with {@link ScriptValues#toGuest}. */
@@ -98,6 +105,47 @@ public final class Proxies {
 
         @Override public String toString() {
             return "ReadOnlyObject" + members.keySet();
+        }
+    }
+
+    private record LazyObject(ScriptObject source, Map<String, Optional<Object>> read)
+            implements ProxyObject, Unwrappable {
+
+        private Optional<Object> read(String key) {
+            Optional<Object> v = read.get(key);
+            if (v == null) {
+                v = source.member(key).map(ScriptValues::toGuest);
+                read.put(key, v);
+            }
+            return v;
+        }
+
+        @Override public Object getMember(String key) {
+            return read(key).orElse(null);
+        }
+
+        @Override public Object getMemberKeys() {
+            return ProxyArray.fromArray(source.memberKeys().toArray());
+        }
+
+        @Override public boolean hasMember(String key) {
+            return read(key).isPresent();
+        }
+
+        @Override public void putMember(String key, Value value) {
+            throw new UnsupportedOperationException("The object is read-only; member '" + key + "' cannot be set.");
+        }
+
+        @Override public boolean removeMember(String key) {
+            throw new UnsupportedOperationException("The object is read-only; member '" + key + "' cannot be removed.");
+        }
+
+        @Override public Object javaValue() {
+            return source;
+        }
+
+        @Override public String toString() {
+            return "read-only object";
         }
     }
 

@@ -56,6 +56,7 @@ public final class ScriptValues {
             case Number n -> n;
             case Optional<?> o -> toGuest(o.orElse(null));
             case org.kicnp.core.Value v -> fromCore(v);
+            case ScriptObject o -> Proxies.lazy(o);
             case Map<?, ?> m -> Proxies.object(stringKeys(m));
             case List<?> l -> Proxies.array(l);
             case Collection<?> c -> Proxies.array(List.copyOf(c));
