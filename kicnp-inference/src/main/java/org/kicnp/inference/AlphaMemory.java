@@ -21,8 +21,6 @@ final class AlphaMemory {
     private final LinkedHashSet<String> facts = new LinkedHashSet<>();
     private final List<List<String>> paths = new ArrayList<>(2);
     private final List<Map<Value, Set<String>>> indexes = new ArrayList<>(2);
-    /** For each fact, the key it is filed under in each index (null where its path reaches nothing). */
-    private final Map<String, Value[]> keysOf = new HashMap<>();
 
     AlphaMemory(Rule rule, SlotPattern pattern) {
         this.rule = rule;
@@ -56,10 +54,14 @@ final class AlphaMemory {
         return facts.size();
     }
 
-    /** Adds a fact, indexing it under the value each indexed path reaches from it. */
-    void add(String fact, BiFunction<String, List<String>, Optional<Value>> pathValue) {
+    /**
+     * Adds a fact, indexing it under the value each indexed path reaches from it; returns those keys, one per index
+     * (null where the path reaches nothing), for the caller to keep and give back to {@link #remove}; null when there
+     * are no indexes or the fact was there already.
+     */
+    Value[] add(String fact, BiFunction<String, List<String>, Optional<Value>> pathValue) {
         if (!facts.add(fact) || paths.isEmpty()) {
-            return;
+            return null;
         }
         Value[] keys = null;
         for (int i = 0; i < paths.size(); i++) {
@@ -78,16 +80,14 @@ final class AlphaMemory {
                 keys[i] = k;
             }
         }
-        if (keys != null) {
-            keysOf.put(fact, keys);
-        }
+        return keys;
     }
 
-    void remove(String fact) {
+    /** Removes a fact filed under the keys {@link #add} returned for it. */
+    void remove(String fact, Value[] keys) {
         if (!facts.remove(fact)) {
             return;
         }
-        Value[] keys = keysOf.remove(fact);
         if (keys == null) {
             return;
         }

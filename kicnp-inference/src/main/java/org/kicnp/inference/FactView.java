@@ -32,7 +32,9 @@ final class FactView implements Conditions.Reader {
         /** The frame as last seen; null when the network met the instance in the knowledge base before its event. */
         Frame frame;
         long stamp;
+        /** The memories the fact is in, and beside each the index keys it is filed under there (may be null). */
         List<AlphaMemory> memories;
+        List<Value[]> memoryKeys;
         /** A short list, turned into a hash set when it grows past {@value #SMALL} (removal must stay cheap). */
         Collection<Activation> activations;
         /** The bindings with this fact that have fired (refraction); a short list or, past {@value #SMALL}, a set. */
@@ -46,12 +48,37 @@ final class FactView implements Conditions.Reader {
             this.name = name;
         }
 
-        void enter(AlphaMemory m) {
+        void enter(AlphaMemory m, Value[] keys) {
             if (memories == null) {
                 memories = new ArrayList<>(2);
+                memoryKeys = new ArrayList<>(2);
             }
             if (!memories.contains(m)) {
                 memories.add(m);
+                memoryKeys.add(keys);
+            }
+        }
+
+        /** Forgets one memory (a rule was removed); the memory itself is dropped by the caller. */
+        void leave(AlphaMemory m) {
+            int i = memories == null ? -1 : memories.indexOf(m);
+            if (i >= 0) {
+                memories.remove(i);
+                memoryKeys.remove(i);
+            }
+        }
+
+        /** Takes the fact out of every memory it is in. */
+        void leaveAll() {
+            if (memories == null) {
+                return;
+            }
+            List<AlphaMemory> in = memories;
+            List<Value[]> keys = memoryKeys;
+            memories = null;
+            memoryKeys = null;
+            for (int i = 0; i < in.size(); i++) {
+                in.get(i).remove(name, keys.get(i));
             }
         }
 

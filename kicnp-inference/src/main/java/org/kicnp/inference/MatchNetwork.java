@@ -79,8 +79,8 @@ final class MatchNetwork {
             byClass.getOrDefault(m.pattern().argument(), new ArrayList<>()).remove(m);
             for (String f : m.facts()) {
                 FactView.Fact fact = facts.get(f);
-                if (fact != null && fact.memories != null) {
-                    fact.memories.remove(m);
+                if (fact != null) {
+                    fact.leave(m);
                 }
             }
         }
@@ -149,10 +149,8 @@ final class MatchNetwork {
     /** Takes a fact out of every memory it is in. */
     void retract(String fact) {
         FactView.Fact f = facts.get(fact);
-        if (f != null && f.memories != null) {
-            List<AlphaMemory> in = f.memories;
-            f.memories = null;
-            in.forEach(m -> m.remove(fact));
+        if (f != null) {
+            f.leaveAll();
         }
     }
 
@@ -171,8 +169,8 @@ final class MatchNetwork {
         if (p.alpha() && !conditions.holds(p.condition(), Value.ref(fact), m.rule().frame(), Map.of())) {
             return false;
         }
-        m.add(fact, (f, path) -> conditions.follow(Value.ref(f), path));
-        facts.touch(fact).enter(m);
+        Value[] keys = m.add(fact, (f, path) -> conditions.follow(Value.ref(f), path));
+        facts.touch(fact).enter(m, keys);
         return true;
     }
 
