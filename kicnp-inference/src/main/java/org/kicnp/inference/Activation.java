@@ -11,13 +11,15 @@ import java.util.Map;
 final class Activation {
     private final Rule rule;
     private final String[] facts;
+    private final FactView.Fact[] refs;
     private final long recency;
     private final long seq;
     private final BindingKey key;
 
-    Activation(Rule rule, String[] facts, long recency, long seq) {
+    Activation(Rule rule, String[] facts, FactView.Fact[] refs, long recency, long seq) {
         this.rule = rule;
         this.facts = facts;
+        this.refs = refs;
         this.recency = recency;
         this.seq = seq;
         this.key = new BindingKey(rule.frame(), facts);
@@ -30,6 +32,11 @@ final class Activation {
     /** The bound instances, in the order of {@link Rule#required()}; not to be changed. */
     String[] facts() {
         return facts;
+    }
+
+    /** The engine's records of the bound instances, in the same order as {@link #facts()}; not to be changed. */
+    FactView.Fact[] refs() {
+        return refs;
     }
 
     long recency() {

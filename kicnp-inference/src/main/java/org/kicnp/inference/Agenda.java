@@ -50,8 +50,8 @@ final class Agenda {
             return;
         }
         queue.add(a);
-        for (String fact : a.facts()) {
-            facts.touch(fact).activation(a);
+        for (FactView.Fact f : a.refs()) {
+            f.activation(a);
         }
     }
 
@@ -105,9 +105,8 @@ final class Agenda {
 
     private void forget(Activation a) {
         byKey.remove(a.key());
-        for (String fact : a.facts()) {
-            FactView.Fact f = facts.get(fact);
-            if (f != null && f.activations != null) {
+        for (FactView.Fact f : a.refs()) {
+            if (f.activations != null) {
                 f.activations.remove(a);
                 if (f.activations.isEmpty()) {
                     f.activations = null;

@@ -309,7 +309,13 @@ final class ForwardChainer {
         if (tracing) {
             trace(new TraceEvent.Matched(r.frame(), m.binding()));
         }
-        Optional<String> blocked = supports.blocked(r, bound, key);
+        FactView.Fact[] refs = new FactView.Fact[bound.length];
+        long recency = 0;
+        for (int i = 0; i < bound.length; i++) {
+            refs[i] = facts.touch(bound[i]);
+            recency = Math.max(recency, refs[i].stamp);
+        }
+        Optional<String> blocked = supports.blocked(r, bound, refs[0], key);
         if (blocked.isEmpty() && r.scripted()) {
             blocked = scripts.conditionFails(r, m.binding());
         }
@@ -317,11 +323,7 @@ final class ForwardChainer {
             trace(new TraceEvent.Blocked(r.frame(), m.binding(), blocked.get()));
             return;
         }
-        long recency = 0;
-        for (String f : bound) {
-            recency = Math.max(recency, stamp(f));
-        }
-        Activation a = new Activation(r, bound, recency, ++seq);
+        Activation a = new Activation(r, bound, refs, recency, ++seq);
         agenda.add(a);
         if (tracing) {
             trace(new TraceEvent.Activated(r.frame(), m.binding(), agenda.size()));
@@ -335,7 +337,7 @@ final class ForwardChainer {
     /** Fires one activation: creates the instance and runs its onInstantiate script. */
     void fire(Activation a) {
         Rule r = a.rule();
-        Optional<String> blocked = supports.blocked(r, a.facts(), a.key());
+        Optional<String> blocked = supports.blocked(r, a.facts(), a.refs()[0], a.key());
         if (blocked.isPresent()) {
             trace(new TraceEvent.Blocked(r.frame(), a.binding(), blocked.get()));
             return;
@@ -355,8 +357,8 @@ final class ForwardChainer {
             }
         }
         Derivation d = new Derivation(name, r.frame(), full, checked(r, full), ++firings, trigger, Optional.empty());
-        supports.markFired(a.key(), a.facts());
-        supports.record(d, Optional.of(r));
+        supports.markFired(a.key(), a.refs());
+        supports.record(d, Optional.of(r), a.refs());
         Frame.Builder b = Frame.instance(name, r.frame()).provenance(Provenance.RUNTIME);
         full.forEach((slot, fact) -> b.slot(Slot.builder(slot, DataType.INSTANCE).value(Value.ref(fact)).build()));
         try {

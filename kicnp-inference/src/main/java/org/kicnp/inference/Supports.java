@@ -61,9 +61,19 @@ final class Supports {
 
     /** Records a new derived instance and, for a firing, what its unshared and unique slots now hold. */
     void record(Derivation d, Optional<Rule> rule) {
+        record(d, rule, new FactView.Fact[0]);
+    }
+
+    /**
+     * As {@link #record(Derivation, Optional)}, with the records of (some of) the supporting instances already at
+     * hand: {@code known} are the first supports in order; the others are looked up.
+     */
+    void record(Derivation d, Optional<Rule> rule, FactView.Fact[] known) {
         facts.touch(d.instance()).derivation = d;
-        for (String s : d.supports()) {
-            FactView.Fact f = facts.touch(s);
+        List<String> supports = d.supports();
+        for (int i = 0; i < supports.size(); i++) {
+            FactView.Fact f = i < known.length && known[i].name.equals(supports.get(i)) ? known[i]
+                    : facts.touch(supports.get(i));
             if (f.dependents == null) {
                 f.dependents = new LinkedHashSet<>(4);
             }
@@ -144,7 +154,11 @@ final class Supports {
 
     /** Why a binding may not fire now, if it may not: refracted, consumed by an unshared slot, or key taken. */
     Optional<String> blocked(Rule r, String[] facts, BindingKey key) {
-        FactView.Fact first = this.facts.get(facts0(key));
+        return blocked(r, facts, this.facts.get(facts0(key)), key);
+    }
+
+    /** As {@link #blocked(Rule, String[], BindingKey)}, with the first bound instance's record (or null) at hand. */
+    Optional<String> blocked(Rule r, String[] facts, FactView.Fact first, BindingKey key) {
         if (first != null && first.hasFired(key)) {
             return Optional.of("refraction: this binding has already fired");
         }
@@ -168,9 +182,9 @@ final class Supports {
         return claims.containsKey(claimKey(frame, slot, fact));
     }
 
-    void markFired(BindingKey key, String[] bound) {
-        for (String f : bound) {
-            this.facts.touch(f).fired(key);
+    void markFired(BindingKey key, FactView.Fact[] bound) {
+        for (FactView.Fact f : bound) {
+            f.fired(key);
         }
     }
 
