@@ -182,9 +182,12 @@ final class KicnpRelayClient implements RelayClient {
         return true;
     }
 
-    /** The stamp in a delivered relay's body, the last member ({@code ..."body":"t<19 digits>xxx"}}). */
+    /**
+     * The stamp in a delivered relay's body, the last member ({@code ..."body":"t<19 digits>xxx"}}): the body's
+     * {@code bodyChars} characters end just before the closing {@code "}}, so its {@code t} is found without a search.
+     */
     private long stampOf(ByteBuf frame) {
-        int expected = frame.writerIndex() - 1 - bodyChars;
+        int expected = frame.writerIndex() - 2 - bodyChars;
         if (expected > 3 && frame.getByte(expected) == 't' && frame.getByte(expected - 1) == '"'
                 && frame.getByte(expected - 2) == ':') {
             return Digits.get(frame, expected + 1, STAMP_DIGITS);
