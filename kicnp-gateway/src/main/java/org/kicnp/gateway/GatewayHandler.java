@@ -1,7 +1,7 @@
 package org.kicnp.gateway;
 
 import io.netty.channel.ChannelHandlerContext;
-import io.netty.channel.SimpleChannelInboundHandler;
+import io.netty.channel.ChannelInboundHandlerAdapter;
 import io.netty.handler.codec.CorruptedFrameException;
 import io.netty.handler.codec.DecoderException;
 import io.netty.handler.codec.TooLongFrameException;
@@ -11,6 +11,7 @@ import java.io.IOException;
 import org.kicnp.protocol.ErrorCode;
 import org.kicnp.protocol.Message;
 import org.kicnp.protocol.Message.ErrorReply;
+import org.kicnp.protocol.MessageCodec;
 import org.kicnp.protocol.ProtocolException;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -18,18 +19,20 @@ import org.slf4j.LoggerFactory;
 /**
  * One agent connection: enforces "authenticate first", dispatches each message over the closed set, answers
  * protocol errors and closes that connection only, keeps heartbeats, and cleans up when the connection closes.
+ * Reads decoded {@link Message}s and, for plain relays, {@link InboundRelay}s whose frame it forwards or releases.
  */
-final class GatewayHandler extends SimpleChannelInboundHandler<Message> {
+final class GatewayHandler extends ChannelInboundHandlerAdapter {
     private static final Logger LOG = LoggerFactory.getLogger(GatewayHandler.class);
 
     private final ServerAgent server;
     private final GatewayMetrics metrics;
+    private final MessageCodec codec;
     private Session session;
 
-    GatewayHandler(ServerAgent server, GatewayMetrics metrics) {
-        super(Message.class);
+    GatewayHandler(ServerAgent server, GatewayMetrics metrics, MessageCodec codec) {
         this.server = server;
         this.metrics = metrics;
+        this.codec = codec;
     }
 
     @Override public void handlerAdded(ChannelHandlerContext ctx) {
@@ -42,8 +45,37 @@ final class GatewayHandler extends SimpleChannelInboundHandler<Message> {
         super.channelInactive(ctx);
     }
 
-    @Override protected void channelRead0(ChannelHandlerContext ctx, Message message) {
-        metrics.received.incrementAndGet();
+    @Override public void channelRead(ChannelHandlerContext ctx, Object msg) {
+        if (msg instanceof InboundRelay relay) {
+            try {
+                relay(relay);
+            } finally {
+                relay.frame().release();
+            }
+        } else if (msg instanceof Message message) {
+            read(message);
+        } else {
+            ctx.fireChannelRead(msg);
+        }
+    }
+
+    /**
+     * A plain relay: forwarded as it arrived when it names this connection's agent as its sender (what every
+     * well-behaved agent writes), otherwise decoded in full so the hub stamps the sender it authenticated.
+     */
+    private void relay(InboundRelay relay) {
+        if (session.state() == Session.State.AUTHENTICATED || session.state() == Session.State.REGISTERED) {
+            if (relay.route().from().equals(session.agent())) {
+                metrics.received.increment();
+                reply(server.relayFrame(session, relay.route(), relay.frame()));
+                return;
+            }
+        }
+        read(relay.decode(codec));
+    }
+
+    private void read(Message message) {
+        metrics.received.increment();
         switch (session.state()) {
             case CLOSING -> { }
             case NEW -> {

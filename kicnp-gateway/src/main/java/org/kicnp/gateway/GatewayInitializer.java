@@ -41,11 +41,11 @@ final class GatewayInitializer extends ChannelInitializer<SocketChannel> {
         config.tls().ifPresent(tls -> p.addLast("tls", tls.newHandler(ch.alloc())));
         // failFast: an oversize length is refused when read, without waiting for (or buffering) its bytes.
         p.addLast("frames", new LengthFieldBasedFrameDecoder(config.maxFrameBytes() + Framing.LENGTH_BYTES,
-                0, Framing.LENGTH_BYTES, 0, Framing.LENGTH_BYTES, true));
+                0, Framing.LENGTH_BYTES, 0, 0, true)); // the prefix stays: a forwarded relay keeps its frame
         p.addLast("decoder", new MessageDecoder(codec));
         p.addLast("encoder", new MessageEncoder(codec));
         long timeout = config.heartbeatTimeout().toMillis();
         p.addLast("idle", new IdleStateHandler(timeout, Math.max(10, timeout / 3), 0, TimeUnit.MILLISECONDS));
-        p.addLast("agent", new GatewayHandler(server, metrics));
+        p.addLast("agent", new GatewayHandler(server, metrics, codec));
     }
 }

@@ -1,5 +1,6 @@
 package org.kicnp.gateway;
 
+import io.netty.buffer.ByteBuf;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
@@ -12,6 +13,7 @@ import org.kicnp.protocol.ErrorCode;
 import org.kicnp.protocol.FrameText;
 import org.kicnp.protocol.Message;
 import org.kicnp.protocol.Message.ErrorReply;
+import org.kicnp.protocol.RelayRoute;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -135,6 +137,28 @@ final class ServerAgent {
             }
         }
         return new Message.Ack(r.id());
+    }
+
+    /**
+     * Relays a plain relay's frame as it is, to one agent or to every agent of a kind (not back to the sender); the
+     * caller has checked that the frame names {@code from} as its sender, and keeps its own reference to it.
+     */
+    Message relayFrame(Session from, RelayRoute route, ByteBuf frame) {
+        if (route.toAgent().isPresent()) {
+            String to = route.toAgent().get();
+            Optional<Session> target = registry.find(to);
+            if (target.isEmpty()) {
+                return ErrorReply.to(route.id(), ErrorCode.UNKNOWN_AGENT, "No agent '" + to + "' is registered.");
+            }
+            out.sendFrame(target.get(), frame.retainedDuplicate());
+        } else {
+            for (Session target : registry.ofKind(route.toKind().orElseThrow())) {
+                if (target != from) {
+                    out.sendFrame(target, frame.retainedDuplicate());
+                }
+            }
+        }
+        return new Message.Ack(route.id());
     }
 
     /** Records a sensor signal; an error (without id) if the knowledge base refuses it. */

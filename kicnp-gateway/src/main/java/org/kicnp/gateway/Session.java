@@ -65,8 +65,8 @@ final class Session {
         this.state = State.REGISTERED;
     }
 
-    /** Queues a message for this connection; safe from any thread. */
-    void enqueue(Message m) {
+    /** Queues a message, or a whole frame to write as it is, for this connection; safe from any thread. */
+    void enqueue(Object m) {
         outbox.offer(m);
         scheduleDrain();
     }
