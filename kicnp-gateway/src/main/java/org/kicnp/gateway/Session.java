@@ -37,6 +37,8 @@ final class Session {
 
     private final Queue<Object> outbox = PlatformDependent.newMpscQueue();
     private final AtomicBoolean drainScheduled = new AtomicBoolean();
+    /** When the outbox was last written to the connection ({@link System#nanoTime}); read on the event loop. */
+    private long lastWriteNanos = System.nanoTime();
 
     /** A last message, after which the connection closes. */
     private record Last(Message message) {
@@ -86,6 +88,7 @@ final class Session {
     /** Writes everything queued, in order, then flushes once. Runs on the channel's event loop. */
     private void drain() {
         drainScheduled.set(false); // before polling: a message queued from now on schedules another drain
+        lastWriteNanos = System.nanoTime();
         Object next;
         while ((next = outbox.poll()) != null) {
             if (next instanceof Last last) {
@@ -95,6 +98,11 @@ final class Session {
             }
         }
         channel.flush();
+    }
+
+    /** When messages were last written to this connection ({@link System#nanoTime}); on the event loop only. */
+    long lastWriteNanos() {
+        return lastWriteNanos;
     }
 
     void closing() {
