@@ -147,7 +147,7 @@ public final class MessageCodec {
      * body; empty for any other payload, which {@link #decode} then handles.
      */
     public Optional<RelayRoute> relayRoute(byte[] payload, int offset, int length) {
-        return RelayRoute.scan(mapper.getFactory(), payload, offset, length);
+        return RelayRoute.scan(payload, offset, length);
     }
 
     /**
