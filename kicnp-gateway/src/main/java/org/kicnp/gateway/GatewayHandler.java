@@ -43,7 +43,7 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter {
     }
 
     @Override public void handlerAdded(ChannelHandlerContext ctx) {
-        session = new Session(ctx.channel());
+        session = new Session(ctx.channel(), codec);
         metrics.connections.incrementAndGet();
     }
 
