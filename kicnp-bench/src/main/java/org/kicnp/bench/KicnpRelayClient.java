@@ -56,12 +56,11 @@ final class KicnpRelayClient implements RelayClient {
         ByteBuf shared = Unpooled.wrappedBuffer(frame);
         int idAt = indexOf(frame, "\"id\":\"") + 6;
         int stampAt = indexOf(frame, "\"body\":\"t") + 9;
-        return (from, stamp) -> {
-            ByteBuf buf = from.channel.alloc().directBuffer(frame.length);
+        return (from, stamp, buf) -> {
+            int start = buf.writerIndex();
             buf.writeBytes(shared, 0, frame.length);
-            Digits.put(buf, idAt, from.sequence % 10_000_000_000L, ID_DIGITS);
-            Digits.put(buf, stampAt, stamp, STAMP_DIGITS);
-            return buf;
+            Digits.put(buf, start + idAt, from.sequence % 10_000_000_000L, ID_DIGITS);
+            Digits.put(buf, start + stampAt, stamp, STAMP_DIGITS);
         };
     }
 
