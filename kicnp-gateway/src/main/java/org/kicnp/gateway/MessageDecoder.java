@@ -38,7 +38,7 @@ final class MessageDecoder extends MessageToMessageDecoder<ByteBuf> {
             frame.getBytes(at, scratch, 0, length);
             Optional<RelayRoute> route = codec.relayRoute(scratch, 0, length);
             if (route.isPresent()) {
-                out.add(new InboundRelay(route.get(), frame.retainedDuplicate()));
+                out.add(new InboundRelay(route.get(), frame.retain()));
                 return;
             }
         }

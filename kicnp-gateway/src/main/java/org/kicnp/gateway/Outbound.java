@@ -33,7 +33,8 @@ final class Outbound {
 
     /**
      * Sends a whole frame as it is (a forwarded relay), taking over the caller's reference to it: the frame is
-     * released here when it is not handed to the connection.
+     * released here when it is not handed to the connection. The frame's indices are never moved, so one buffer
+     * may go to several connections, each with its own reference.
      */
     boolean sendFrame(Session to, ByteBuf frame) {
         boolean sent = false;

@@ -141,7 +141,8 @@ final class ServerAgent {
 
     /**
      * Relays a plain relay's frame as it is, to one agent or to every agent of a kind (not back to the sender); the
-     * caller has checked that the frame names {@code from} as its sender, and keeps its own reference to it.
+     * caller has checked that the frame names {@code from} as its sender, and keeps its own reference to it. Every
+     * receiver shares the one buffer (a reference each): the outbox copies it out without moving its indices.
      */
     Message relayFrame(Session from, RelayRoute route, ByteBuf frame) {
         if (route.toAgent().isPresent()) {
@@ -150,11 +151,11 @@ final class ServerAgent {
             if (target.isEmpty()) {
                 return ErrorReply.to(route.id(), ErrorCode.UNKNOWN_AGENT, "No agent '" + to + "' is registered.");
             }
-            out.sendFrame(target.get(), frame.retainedDuplicate());
+            out.sendFrame(target.get(), frame.retain());
         } else {
             for (Session target : registry.ofKind(route.toKind().orElseThrow())) {
                 if (target != from) {
-                    out.sendFrame(target, frame.retainedDuplicate());
+                    out.sendFrame(target, frame.retain());
                 }
             }
         }
