@@ -94,7 +94,7 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter {
         if (session.state() == Session.State.AUTHENTICATED || session.state() == Session.State.REGISTERED) {
             if (relay.route().from().equals(session.agent())) {
                 metrics.received.increment();
-                reply(server.relayFrame(session, relay.route(), relay.frame()));
+                server.relayFrame(session, relay.route(), relay.frame()).ifPresent(this::reply);
                 return;
             }
         }
@@ -124,7 +124,7 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter {
                     "This connection is already authenticated as " + session + "."));
             case Message.Register r -> reply(server.register(session, r));
             case Message.Heartbeat h -> { }
-            case Message.Relay r -> reply(server.relay(session, r));
+            case Message.Relay r -> server.relay(session, r).ifPresent(this::reply);
             case Message.Command c -> reply(server.commands().fromAgent(session, c));
             case Message.Feedback f -> server.commands().feedback(session, f);
             case Message.SensorSignal s -> server.sensor(session, s).ifPresent(this::reply);

@@ -88,6 +88,22 @@ class RelayForwardingTest {
     }
 
     @Test
+    void relay_withEmptyId_isDeliveredWithoutAck_andRefusedWithAnErrorWithoutId() throws IOException {
+        try (RawClient alice = agent("alice", "a"); RawClient bob = agent("bob", "b")) {
+            Message.Relay quiet = Message.Relay.toAgent("", "alice", "bob", "say", "no ack");
+            alice.send(quiet);
+            alice.send(Message.Relay.toAgent("", "alice", "dave", "say", "nobody"));
+            assertThat(bob.read()).isEqualTo(quiet);
+            assertThat(alice.read()).isInstanceOfSatisfying(Message.ErrorReply.class, e -> {
+                assertThat(e.id()).isEmpty();
+                assertThat(e.message()).isEqualTo("No agent 'dave' is registered.");
+            });
+            alice.send(Message.Relay.toAgent("7", "alice", "bob", "say", "with ack"));
+            assertThat(alice.read()).isEqualTo(new Message.Ack("7")); // nothing else came before it
+        }
+    }
+
+    @Test
     void plainRelay_beforeHello_isRefused() throws IOException {
         try (RawClient eve = new RawClient(server.port())) {
             eve.send(Message.Relay.toAgent("5", "eve", "bob", "s", "b"));
