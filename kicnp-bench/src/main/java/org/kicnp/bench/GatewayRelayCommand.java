@@ -60,8 +60,9 @@ final class GatewayRelayCommand implements Callable<Integer> {
     @Option(names = "--client-threads", defaultValue = "2", description = "Client event loops (default: ${DEFAULT-VALUE}).")
     int clientThreads;
 
-    @Option(names = "--gateway-threads", defaultValue = "0",
-            description = "The gateway's I/O threads (default: ${DEFAULT-VALUE}, the gateway's own default, one per core).")
+    @Option(names = "--gateway-threads", defaultValue = "1",
+            description = "The gateway's I/O threads (default: ${DEFAULT-VALUE}, as Mosquitto's one thread, leaving the "
+                    + "other core to the clients; 0: the gateway's own default, one per core).")
     int gatewayThreads;
 
     @Option(names = "--no-mosquitto", description = "Measure K-ICNP alone.")
