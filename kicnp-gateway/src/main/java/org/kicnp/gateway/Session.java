@@ -43,6 +43,8 @@ final class Session {
 
     private final Queue<Object> outbox = PlatformDependent.newMpscQueue();
     private final AtomicBoolean drainScheduled = new AtomicBoolean();
+    /** The drain as a task, made once rather than per message. */
+    private final Runnable drainTask = this::drain;
     /** When the outbox was last written to the connection ({@link System#nanoTime}); read on the event loop. */
     private long lastWriteNanos = System.nanoTime();
 
@@ -88,7 +90,7 @@ final class Session {
 
     private void scheduleDrain() {
         if (drainScheduled.compareAndSet(false, true)) {
-            channel.eventLoop().execute(this::drain);
+            channel.eventLoop().execute(drainTask);
         }
     }
 
