@@ -226,6 +226,20 @@ public abstract class AgentBase implements AutoCloseable {
         request(Message.Relay.toKind(nextId(), name(), kind, subject, body));
     }
 
+    /**
+     * Relays a message to one agent by name without waiting for the hub's {@code ack} (fire and forget: the relay
+     * carries an empty id, so none is sent). A refusal, such as an unknown agent, arrives later as an error without
+     * id and is logged. For a stream of messages where one round trip per message would be too slow.
+     */
+    public final void tellTo(String agent, String subject, String body) {
+        send(Message.Relay.toAgent("", name(), agent, subject, body));
+    }
+
+    /** Relays a message to every registered agent of a kind (not to this one), fire and forget like {@link #tellTo}. */
+    public final void tellToKind(AgentKind kind, String subject, String body) {
+        send(Message.Relay.toKind("", name(), kind, subject, body));
+    }
+
     /** Sends a command to a robot through the hub (what a user agent does); follow it with the ticket. */
     public final CommandTicket command(String robot, String action, Map<String, String> args) {
         Command c = new Command(name() + "-" + nextId(), robot, action, args);

@@ -45,7 +45,11 @@ final class GatewayRelayBench {
                 progress.accept(brokerNote);
             }
         }
-        try (GatewayServer gateway = GatewayServer.start(GatewayConfig.defaults().withPort(0), directory(most),
+        GatewayConfig config = GatewayConfig.defaults().withPort(0);
+        if (o.gatewayThreads() > 0) {
+            config = config.withIoThreads(o.gatewayThreads());
+        }
+        try (GatewayServer gateway = GatewayServer.start(config, directory(most),
                 KnowledgeBase.create(), FeedbackListener.NONE)) {
             if (!o.jitWarmup().isZero()) {
                 // Untimed: the JIT compiles the gateway's and both clients' hot paths before anything is measured

@@ -60,6 +60,11 @@ final class GatewayRelayCommand implements Callable<Integer> {
     @Option(names = "--client-threads", defaultValue = "2", description = "Client event loops (default: ${DEFAULT-VALUE}).")
     int clientThreads;
 
+    @Option(names = "--gateway-threads", defaultValue = "1",
+            description = "The gateway's I/O threads (default: ${DEFAULT-VALUE}, as Mosquitto's one thread, leaving the "
+                    + "other core to the clients; 0: the gateway's own default, one per core).")
+    int gatewayThreads;
+
     @Option(names = "--no-mosquitto", description = "Measure K-ICNP alone.")
     boolean noMosquitto;
 
@@ -83,7 +88,7 @@ final class GatewayRelayCommand implements Callable<Integer> {
         try {
             o = new RelayBenchOptions(agents, messageBytes, rate, Duration.ofSeconds(warmupSeconds),
                     Duration.ofSeconds(seconds), Duration.ofSeconds(seconds), outstanding, clientThreads,
-                    Duration.ofSeconds(jitWarmupSeconds), mosquitto,
+                    gatewayThreads, Duration.ofSeconds(jitWarmupSeconds), mosquitto,
                     !noInstall);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());

@@ -19,15 +19,14 @@ import org.kicnp.protocol.MessageCodec;
  * A lean K-ICNP agent for the benchmark: the real wire protocol over a real TCP connection, without the SDK's
  * thread per agent. The handshake ({@code hello}, {@code auth_result}, {@code register}, {@code ack}) goes
  * through the protocol's own {@link MessageCodec}. Each relay is the codec's encoding of
- * {@code Relay.toAgent(id, me, peer, "bench", body)}, made once per agent as a template whose id and body digits
- * are then rewritten in place, so the client spends its CPU on the network rather than on JSON. Deliveries are
- * recognised by their type and their body read where the codec puts it (last); the hub's {@code ack} to every
- * relay is read and discarded (fire and forget: the sender never waits for it).
+ * {@code Relay.toAgent("", me, peer, "bench", body)} — a fire-and-forget relay, as the SDK's {@code tellTo} sends,
+ * which the hub does not ack (like MQTT QoS 0) — made once per agent as a template whose body digits are then
+ * rewritten in place, so the client spends its CPU on the network rather than on JSON. Deliveries are recognised
+ * by their type and their body read where the codec puts it (last); anything else from the hub is discarded.
  */
 final class KicnpRelayClient implements RelayClient {
     static final String TOKEN_PREFIX = "bench-token-";
     private static final byte[] RELAY_PREFIX = "{\"v\":1,\"type\":\"relay\"".getBytes(US_ASCII);
-    private static final int ID_DIGITS = 10;
     private static final int STAMP_DIGITS = 19;
 
     private final MessageCodec codec = new MessageCodec();
@@ -41,7 +40,7 @@ final class KicnpRelayClient implements RelayClient {
     }
 
     @Override public String describe() {
-        return "K-ICNP relay (toAgent, fire and forget; the hub acks each relay)";
+        return "K-ICNP relay (toAgent, fire and forget: empty id, no ack)";
     }
 
     @Override public RelayAgent.Encoder encoderFor(String name, String peer) {
@@ -54,21 +53,18 @@ final class KicnpRelayClient implements RelayClient {
         byte[] frame = template(name, peer, pad);
         bodyChars = 1 + STAMP_DIGITS + pad;
         ByteBuf shared = Unpooled.wrappedBuffer(frame);
-        int idAt = indexOf(frame, "\"id\":\"") + 6;
         int stampAt = indexOf(frame, "\"body\":\"t") + 9;
-        return (from, stamp) -> {
-            ByteBuf buf = from.channel.alloc().directBuffer(frame.length);
+        return (from, stamp, buf) -> {
+            int start = buf.writerIndex();
             buf.writeBytes(shared, 0, frame.length);
-            Digits.put(buf, idAt, from.sequence % 10_000_000_000L, ID_DIGITS);
-            Digits.put(buf, stampAt, stamp, STAMP_DIGITS);
-            return buf;
+            Digits.put(buf, start + stampAt, stamp, STAMP_DIGITS);
         };
     }
 
     /** The framed relay from {@code name} to {@code peer} with {@code pad} bytes of padding in its body. */
     private byte[] template(String name, String peer, int pad) {
         String body = "t" + "0".repeat(STAMP_DIGITS) + "x".repeat(pad);
-        byte[] json = codec.encode(Message.Relay.toAgent("0".repeat(ID_DIGITS), name, peer, "bench", body));
+        byte[] json = codec.encode(Message.Relay.toAgent("", name, peer, "bench", body));
         byte[] frame = new byte[Framing.LENGTH_BYTES + json.length];
         frame[0] = (byte) (json.length >>> 24);
         frame[1] = (byte) (json.length >>> 16);
@@ -182,9 +178,12 @@ final class KicnpRelayClient implements RelayClient {
         return true;
     }
 
-    /** The stamp in a delivered relay's body, the last member ({@code ..."body":"t<19 digits>xxx"}}). */
+    /**
+     * The stamp in a delivered relay's body, the last member ({@code ..."body":"t<19 digits>xxx"}}): the body's
+     * {@code bodyChars} characters end just before the closing {@code "}}, so its {@code t} is found without a search.
+     */
     private long stampOf(ByteBuf frame) {
-        int expected = frame.writerIndex() - 1 - bodyChars;
+        int expected = frame.writerIndex() - 2 - bodyChars;
         if (expected > 3 && frame.getByte(expected) == 't' && frame.getByte(expected - 1) == '"'
                 && frame.getByte(expected - 2) == ':') {
             return Digits.get(frame, expected + 1, STAMP_DIGITS);

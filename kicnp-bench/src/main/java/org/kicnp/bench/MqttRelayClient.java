@@ -43,8 +43,8 @@ final class MqttRelayClient implements RelayClient {
         if (payload < 1 + STAMP_DIGITS) {
             throw new IllegalArgumentException("A PUBLISH to '" + peer + "' needs more than " + messageBytes + " bytes.");
         }
-        return (from, stamp) -> {
-            ByteBuf buf = from.channel.alloc().directBuffer(messageBytes);
+        return (from, stamp, buf) -> {
+            buf.ensureWritable(messageBytes); // the stamp's digits are set in place, past the writer index
             buf.writeByte(PUBLISH << 4);
             writeVarint(buf, remaining);
             buf.writeShort(topic.length).writeBytes(topic);
@@ -53,7 +53,6 @@ final class MqttRelayClient implements RelayClient {
             buf.writerIndex(at + STAMP_DIGITS);
             Digits.put(buf, at, stamp, STAMP_DIGITS);
             buf.writeZero(payload - 1 - STAMP_DIGITS);
-            return buf;
         };
     }
 

@@ -9,6 +9,8 @@ import io.netty.channel.Channel;
  * loop, each sending to the other, so a delivery can free its sender's window without crossing threads.
  */
 final class RelayAgent {
+    private static final int BATCH_BYTES = 2048;
+
     final int index;
     final String name;
     final RelayLoop loop;
@@ -26,10 +28,12 @@ final class RelayAgent {
     long scheduled;
     long sequence;
     boolean dirty;
+    /** The messages written since the last flush, back to back in one buffer; null when there are none. */
+    private ByteBuf pending;
 
-    /** Encodes one relay message from this agent to its peer, stamped with a time in bench nanos. */
+    /** Appends one relay message from this agent to its peer, stamped with a time in bench nanos, to {@code out}. */
     interface Encoder {
-        ByteBuf encode(RelayAgent from, long stampNanos);
+        void encode(RelayAgent from, long stampNanos, ByteBuf out);
     }
 
     RelayAgent(int index, String name, RelayLoop loop, Encoder encoder) {
@@ -39,14 +43,39 @@ final class RelayAgent {
         this.encoder = encoder;
     }
 
-    /** Writes one message stamped {@code stampNanos} to the hub; flushed later, once per batch, by the loop. */
+    /**
+     * Sends one message stamped {@code stampNanos} to the hub: appended to this agent's batch, which the loop writes
+     * and flushes once per batch of reads or ticks ({@link #flush}). Each message is still its own frame (or MQTT
+     * packet) on the wire; only the buffer and the system call are shared, as any batching client does.
+     */
     void send(long stampNanos) {
         sequence++;
-        channel.write(encoder.encode(this, stampNanos), channel.voidPromise());
+        if (pending == null) {
+            pending = channel.alloc().ioBuffer(BATCH_BYTES);
+        }
+        encoder.encode(this, stampNanos, pending);
         loop.sent++;
         if (!dirty) {
             dirty = true;
             loop.dirty.add(this);
+        }
+    }
+
+    /** Writes the batch and flushes the connection. */
+    void flush() {
+        dirty = false;
+        if (pending != null) {
+            channel.write(pending, channel.voidPromise());
+            pending = null;
+        }
+        channel.flush();
+    }
+
+    /** Drops an unsent batch (the driver is closing). */
+    void discard() {
+        if (pending != null) {
+            pending.release();
+            pending = null;
         }
     }
 

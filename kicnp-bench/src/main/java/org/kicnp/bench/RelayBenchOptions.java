@@ -15,12 +15,13 @@ import java.util.Optional;
  * @param rate the fixed offered load of the latency measurement, messages per second in total
  * @param outstanding the closed-loop messages outstanding in total, spread over the agents (at least 2 each)
  * @param clientThreads the client event loops
+ * @param gatewayThreads the gateway's I/O threads; 0 keeps the gateway's default
  * @param jitWarmup an untimed closed-loop run on each hub before the first measurement (zero: none)
  * @param mosquittoScript {@code scripts/mosquitto.sh}; empty skips Mosquitto
  * @param install whether the script may install Mosquitto with apt-get
  */
 record RelayBenchOptions(List<Integer> agentCounts, int messageBytes, int rate, Duration warmup, Duration throughputTime,
-                         Duration latencyTime, int outstanding, int clientThreads, Duration jitWarmup,
+                         Duration latencyTime, int outstanding, int clientThreads, int gatewayThreads, Duration jitWarmup,
                          Optional<Path> mosquittoScript,
                          boolean install) {
     RelayBenchOptions {
@@ -33,7 +34,7 @@ record RelayBenchOptions(List<Integer> agentCounts, int messageBytes, int rate, 
         if (agentCounts.isEmpty() || agentCounts.stream().anyMatch(n -> n < 2 || n % 2 != 0)) {
             throw new IllegalArgumentException("Agent counts must be even numbers of 2 or more, not " + agentCounts + ".");
         }
-        if (rate < 1 || outstanding < 1 || clientThreads < 1 || messageBytes < 64) {
+        if (rate < 1 || outstanding < 1 || clientThreads < 1 || gatewayThreads < 0 || messageBytes < 64) {
             throw new IllegalArgumentException("Need a rate, outstanding messages and client threads of 1 or more and "
                     + "messages of 64 bytes or more.");
         }

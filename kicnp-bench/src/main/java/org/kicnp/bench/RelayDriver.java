@@ -213,6 +213,7 @@ final class RelayDriver implements AutoCloseable {
         loops.forEach(l -> l.closing = true);
         for (RelayAgent a : agents) {
             if (a.channel != null) {
+                a.channel.eventLoop().execute(a::discard);
                 a.channel.close();
             }
         }

@@ -78,9 +78,7 @@ final class RelayLoop {
 
     private void flushDirty() {
         for (int i = 0; i < dirty.size(); i++) {
-            RelayAgent a = dirty.get(i);
-            a.dirty = false;
-            a.channel.flush();
+            dirty.get(i).flush();
         }
         dirty.clear();
     }

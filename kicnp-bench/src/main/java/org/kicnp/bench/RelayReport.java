@@ -13,18 +13,20 @@ final class RelayReport {
     static String preamble(RelayBenchOptions o, String mosquittoVersion) {
         return String.format(Locale.ROOT, """
                 Gateway relay benchmark: K-ICNP GatewayServer vs Mosquitto%s
-                  machine: %d cores, load average %s; the clients run in this JVM on the same cores (%d event loops)
+                  machine: %d cores, load average %s; the clients run in this JVM on the same cores (%d event loops);
+                           gateway I/O threads: %s; the JVM's default collector
                   pattern: agents in pairs, each sends to its peer by name through the hub (K-ICNP relay toAgent; MQTT
                            each client subscribes to its own topic and publishes to its peer's); loopback TCP, Nagle off
-                  delivery: K-ICNP fire-and-forget relay (the hub still acks each relay to its sender, read and
-                           discarded) vs MQTT QoS 0 (no acks); %d bytes per message on the wire for both
+                  delivery: K-ICNP fire-and-forget relay (empty id: the hub sends no ack, as the SDK's tellTo) vs
+                           MQTT QoS 0 (no acks); %d bytes per message on the wire for both
                   JIT: an untimed %d s run on each hub first, so the JVM's hot paths are compiled before measuring
                   throughput: closed loop, %d messages outstanding in total (window per agent shown), %d s after %d s
                            warm-up; msgs/s = messages delivered to agents per second; CPU µs per delivered message
                   latency: open loop, %,d msgs/s in total at a constant rate released by 1 ms ticks, %d s after %d s
                            warm-up; latency = delivery time - intended send time (coordinated omission corrected)
                 """, mosquittoVersion.isEmpty() ? "" : " (" + mosquittoVersion + ")",
-                Runtime.getRuntime().availableProcessors(), loadAverage(), o.clientThreads(), o.messageBytes(),
+                Runtime.getRuntime().availableProcessors(), loadAverage(), o.clientThreads(),
+                o.gatewayThreads() > 0 ? String.valueOf(o.gatewayThreads()) : "one per core", o.messageBytes(),
                 o.jitWarmup().toSeconds(), o.outstanding(), o.throughputTime().toSeconds(), o.warmup().toSeconds(), o.rate(),
                 o.latencyTime().toSeconds(), o.warmup().toSeconds());
     }

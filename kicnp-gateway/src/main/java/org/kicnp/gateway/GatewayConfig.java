@@ -10,13 +10,14 @@ import org.kicnp.protocol.Framing;
 /**
  * How a gateway listens and what it bounds. Defaults: loopback only, port 7407, 1 MiB frames, 30 s heartbeat
  * timeout, 64/256 KiB write-buffer water marks, a slow consumer dropped after 1,000 consecutive shed messages,
- * no TLS. Immutable; the {@code with…} methods return changed copies.
+ * no TLS, one I/O thread per core. Immutable; the {@code with…} methods return changed copies.
  *
  * @param port 0 picks an ephemeral port (tests)
+ * @param ioThreads the event loops serving connections (see {@link #withIoThreads})
  */
 public record GatewayConfig(String host, int port, String serverName, int maxFrameBytes, Duration heartbeatTimeout,
                             int writeLowWaterBytes, int writeHighWaterBytes, int maxShedBeforeDrop,
-                            Optional<SslContext> tls) {
+                            Optional<SslContext> tls, int ioThreads) {
     public GatewayConfig {
         requireNonNull(host, "host");
         requireNonNull(serverName, "serverName");
@@ -35,6 +36,9 @@ public record GatewayConfig(String host, int port, String serverName, int maxFra
         if (heartbeatTimeout.toMillis() < 30) {
             throw new IllegalArgumentException("A heartbeat timeout of " + heartbeatTimeout + " is too short.");
         }
+        if (ioThreads < 1) {
+            throw new IllegalArgumentException("A gateway needs at least 1 I/O thread, not " + ioThreads + ".");
+        }
         if (maxShedBeforeDrop < 1) {
             throw new IllegalArgumentException("maxShedBeforeDrop must be at least 1, not " + maxShedBeforeDrop + ".");
         }
@@ -43,41 +47,50 @@ public record GatewayConfig(String host, int port, String serverName, int maxFra
     /** The defaults: {@code 127.0.0.1:7407}. */
     public static GatewayConfig defaults() {
         return new GatewayConfig("127.0.0.1", 7407, "kicnp", Framing.DEFAULT_MAX_FRAME_BYTES, Duration.ofSeconds(30),
-                64 * 1024, 256 * 1024, 1_000, Optional.empty());
+                64 * 1024, 256 * 1024, 1_000, Optional.empty(), Runtime.getRuntime().availableProcessors());
     }
 
     public GatewayConfig withHost(String h) {
         return new GatewayConfig(h, port, serverName, maxFrameBytes, heartbeatTimeout, writeLowWaterBytes,
-                writeHighWaterBytes, maxShedBeforeDrop, tls);
+                writeHighWaterBytes, maxShedBeforeDrop, tls, ioThreads);
     }
 
     public GatewayConfig withPort(int p) {
         return new GatewayConfig(host, p, serverName, maxFrameBytes, heartbeatTimeout, writeLowWaterBytes,
-                writeHighWaterBytes, maxShedBeforeDrop, tls);
+                writeHighWaterBytes, maxShedBeforeDrop, tls, ioThreads);
     }
 
     public GatewayConfig withServerName(String name) {
         return new GatewayConfig(host, port, name, maxFrameBytes, heartbeatTimeout, writeLowWaterBytes,
-                writeHighWaterBytes, maxShedBeforeDrop, tls);
+                writeHighWaterBytes, maxShedBeforeDrop, tls, ioThreads);
     }
 
     public GatewayConfig withMaxFrameBytes(int bytes) {
         return new GatewayConfig(host, port, serverName, bytes, heartbeatTimeout, writeLowWaterBytes,
-                writeHighWaterBytes, maxShedBeforeDrop, tls);
+                writeHighWaterBytes, maxShedBeforeDrop, tls, ioThreads);
     }
 
     public GatewayConfig withHeartbeatTimeout(Duration timeout) {
         return new GatewayConfig(host, port, serverName, maxFrameBytes, timeout, writeLowWaterBytes,
-                writeHighWaterBytes, maxShedBeforeDrop, tls);
+                writeHighWaterBytes, maxShedBeforeDrop, tls, ioThreads);
     }
 
     public GatewayConfig withWriteBuffer(int lowBytes, int highBytes, int maxShed) {
         return new GatewayConfig(host, port, serverName, maxFrameBytes, heartbeatTimeout, lowBytes, highBytes,
-                maxShed, tls);
+                maxShed, tls, ioThreads);
+    }
+
+    /**
+     * The number of event loops serving connections. The default, one per core, keeps every core busy without
+     * more threads than cores taking turns on them (Netty's own default is two per core).
+     */
+    public GatewayConfig withIoThreads(int threads) {
+        return new GatewayConfig(host, port, serverName, maxFrameBytes, heartbeatTimeout, writeLowWaterBytes,
+                writeHighWaterBytes, maxShedBeforeDrop, tls, threads);
     }
 
     public GatewayConfig withTls(SslContext context) {
         return new GatewayConfig(host, port, serverName, maxFrameBytes, heartbeatTimeout, writeLowWaterBytes,
-                writeHighWaterBytes, maxShedBeforeDrop, Optional.of(context));
+                writeHighWaterBytes, maxShedBeforeDrop, Optional.of(context), ioThreads);
     }
 }

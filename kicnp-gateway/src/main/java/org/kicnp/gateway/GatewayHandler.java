@@ -1,16 +1,20 @@
 package org.kicnp.gateway;
 
 import io.netty.channel.ChannelHandlerContext;
-import io.netty.channel.SimpleChannelInboundHandler;
+import io.netty.channel.ChannelInboundHandlerAdapter;
 import io.netty.handler.codec.CorruptedFrameException;
 import io.netty.handler.codec.DecoderException;
 import io.netty.handler.codec.TooLongFrameException;
 import io.netty.handler.timeout.IdleState;
 import io.netty.handler.timeout.IdleStateEvent;
 import java.io.IOException;
+import java.time.Duration;
+import java.util.concurrent.ScheduledFuture;
+import java.util.concurrent.TimeUnit;
 import org.kicnp.protocol.ErrorCode;
 import org.kicnp.protocol.Message;
 import org.kicnp.protocol.Message.ErrorReply;
+import org.kicnp.protocol.MessageCodec;
 import org.kicnp.protocol.ProtocolException;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -18,32 +22,87 @@ import org.slf4j.LoggerFactory;
 /**
  * One agent connection: enforces "authenticate first", dispatches each message over the closed set, answers
  * protocol errors and closes that connection only, keeps heartbeats, and cleans up when the connection closes.
+ * Reads decoded {@link Message}s and, for plain relays, {@link InboundRelay}s whose frame it forwards or releases.
  */
-final class GatewayHandler extends SimpleChannelInboundHandler<Message> {
+final class GatewayHandler extends ChannelInboundHandlerAdapter {
     private static final Logger LOG = LoggerFactory.getLogger(GatewayHandler.class);
 
     private final ServerAgent server;
     private final GatewayMetrics metrics;
+    private final MessageCodec codec;
+    private final long heartbeatNanos;
     private Session session;
+    private ScheduledFuture<?> heartbeats;
 
-    GatewayHandler(ServerAgent server, GatewayMetrics metrics) {
-        super(Message.class);
+    /** @param heartbeatEvery how long the server may send nothing before it sends a heartbeat */
+    GatewayHandler(ServerAgent server, GatewayMetrics metrics, MessageCodec codec, Duration heartbeatEvery) {
         this.server = server;
         this.metrics = metrics;
+        this.codec = codec;
+        this.heartbeatNanos = heartbeatEvery.toNanos();
     }
 
     @Override public void handlerAdded(ChannelHandlerContext ctx) {
-        session = new Session(ctx.channel());
+        session = new Session(ctx.channel(), codec);
         metrics.connections.incrementAndGet();
     }
 
+    /**
+     * Starts the heartbeat check. It looks at the time of the session's last write rather than wrapping every write
+     * to watch it (as a writer-idle {@code IdleStateHandler} does, at the cost of a promise and a listener for each
+     * message relayed).
+     */
+    @Override public void channelActive(ChannelHandlerContext ctx) throws Exception {
+        heartbeats = ctx.executor().scheduleAtFixedRate(this::heartbeatIfQuiet, heartbeatNanos, heartbeatNanos,
+                TimeUnit.NANOSECONDS);
+        super.channelActive(ctx);
+    }
+
+    private void heartbeatIfQuiet() {
+        if (System.nanoTime() - session.lastWriteNanos() >= heartbeatNanos) {
+            server.out().send(session, new Message.Heartbeat(System.currentTimeMillis()));
+        }
+    }
+
     @Override public void channelInactive(ChannelHandlerContext ctx) throws Exception {
+        if (heartbeats != null) {
+            heartbeats.cancel(false);
+        }
         server.connectionClosed(session);
         super.channelInactive(ctx);
     }
 
-    @Override protected void channelRead0(ChannelHandlerContext ctx, Message message) {
-        metrics.received.incrementAndGet();
+    @Override public void channelRead(ChannelHandlerContext ctx, Object msg) {
+        if (msg instanceof InboundRelay relay) {
+            try {
+                relay(relay);
+            } finally {
+                relay.frame().release();
+            }
+        } else if (msg instanceof Message message) {
+            read(message);
+        } else {
+            ctx.fireChannelRead(msg);
+        }
+    }
+
+    /**
+     * A plain relay: forwarded as it arrived when it names this connection's agent as its sender (what every
+     * well-behaved agent writes), otherwise decoded in full so the hub stamps the sender it authenticated.
+     */
+    private void relay(InboundRelay relay) {
+        if (session.state() == Session.State.AUTHENTICATED || session.state() == Session.State.REGISTERED) {
+            if (relay.route().from().equals(session.agent())) {
+                metrics.received.increment();
+                server.relayFrame(session, relay.route(), relay.frame()).ifPresent(this::reply);
+                return;
+            }
+        }
+        read(relay.decode(codec));
+    }
+
+    private void read(Message message) {
+        metrics.received.increment();
         switch (session.state()) {
             case CLOSING -> { }
             case NEW -> {
@@ -65,7 +124,7 @@ final class GatewayHandler extends SimpleChannelInboundHandler<Message> {
                     "This connection is already authenticated as " + session + "."));
             case Message.Register r -> reply(server.register(session, r));
             case Message.Heartbeat h -> { }
-            case Message.Relay r -> reply(server.relay(session, r));
+            case Message.Relay r -> server.relay(session, r).ifPresent(this::reply);
             case Message.Command c -> reply(server.commands().fromAgent(session, c));
             case Message.Feedback f -> server.commands().feedback(session, f);
             case Message.SensorSignal s -> server.sensor(session, s).ifPresent(this::reply);
@@ -92,8 +151,6 @@ final class GatewayHandler extends SimpleChannelInboundHandler<Message> {
                 LOG.info("Closing {}: no message within the heartbeat timeout.", session);
                 server.out().closeWith(session, ErrorReply.of(ErrorCode.HEARTBEAT_TIMEOUT,
                         "Nothing was heard from this connection within the heartbeat timeout."));
-            } else if (idle.state() == IdleState.WRITER_IDLE) {
-                server.out().send(session, new Message.Heartbeat(System.currentTimeMillis()));
             }
             return;
         }

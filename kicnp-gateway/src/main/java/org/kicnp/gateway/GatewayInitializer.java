@@ -7,6 +7,7 @@ import io.netty.channel.group.ChannelGroup;
 import io.netty.channel.socket.SocketChannel;
 import io.netty.handler.codec.LengthFieldBasedFrameDecoder;
 import io.netty.handler.timeout.IdleStateHandler;
+import java.time.Duration;
 import java.util.concurrent.TimeUnit;
 import org.kicnp.protocol.Framing;
 import org.kicnp.protocol.MessageCodec;
@@ -41,11 +42,13 @@ final class GatewayInitializer extends ChannelInitializer<SocketChannel> {
         config.tls().ifPresent(tls -> p.addLast("tls", tls.newHandler(ch.alloc())));
         // failFast: an oversize length is refused when read, without waiting for (or buffering) its bytes.
         p.addLast("frames", new LengthFieldBasedFrameDecoder(config.maxFrameBytes() + Framing.LENGTH_BYTES,
-                0, Framing.LENGTH_BYTES, 0, Framing.LENGTH_BYTES, true));
+                0, Framing.LENGTH_BYTES, 0, 0, true)); // the prefix stays: a forwarded relay keeps its frame
         p.addLast("decoder", new MessageDecoder(codec));
         p.addLast("encoder", new MessageEncoder(codec));
         long timeout = config.heartbeatTimeout().toMillis();
-        p.addLast("idle", new IdleStateHandler(timeout, Math.max(10, timeout / 3), 0, TimeUnit.MILLISECONDS));
-        p.addLast("agent", new GatewayHandler(server, metrics));
+        // Reader idleness only: a writer-idle check here would wrap every write in a promise with a listener.
+        // The handler sends heartbeats itself when the connection has been written nothing for a third of it.
+        p.addLast("idle", new IdleStateHandler(timeout, 0, 0, TimeUnit.MILLISECONDS));
+        p.addLast("agent", new GatewayHandler(server, metrics, codec, Duration.ofMillis(Math.max(10, timeout / 3))));
     }
 }

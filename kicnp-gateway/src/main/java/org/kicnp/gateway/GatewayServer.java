@@ -65,7 +65,7 @@ public final class GatewayServer implements AutoCloseable {
                 requireNonNull(feedback, "feedback"), metrics);
         ChannelGroup connections = new DefaultChannelGroup("kicnp-agents", GlobalEventExecutor.INSTANCE);
         EventLoopGroup boss = new MultiThreadIoEventLoopGroup(1, NioIoHandler.newFactory());
-        EventLoopGroup workers = new MultiThreadIoEventLoopGroup(NioIoHandler.newFactory());
+        EventLoopGroup workers = new MultiThreadIoEventLoopGroup(config.ioThreads(), NioIoHandler.newFactory());
         GatewayInitializer init = new GatewayInitializer(config, server, metrics, connections);
         try {
             Channel ch = new ServerBootstrap()

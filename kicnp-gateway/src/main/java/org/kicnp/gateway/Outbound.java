@@ -1,5 +1,6 @@
 package org.kicnp.gateway;
 
+import io.netty.buffer.ByteBuf;
 import io.netty.channel.Channel;
 import java.util.concurrent.TimeUnit;
 import org.kicnp.protocol.ErrorCode;
@@ -27,13 +28,36 @@ final class Outbound {
 
     /** Sends a message; says whether it was handed to the connection (false: closed or shed). */
     boolean send(Session to, Message message) {
+        return admit(to, message);
+    }
+
+    /**
+     * Sends a whole frame as it is (a forwarded relay), taking over the caller's reference to it: the frame is
+     * released here when it is not handed to the connection. The frame's indices are never moved, so one buffer
+     * may go to several connections, each with its own reference.
+     */
+    boolean sendFrame(Session to, ByteBuf frame) {
+        boolean sent = false;
+        try {
+            sent = admit(to, frame);
+            return sent;
+        } finally {
+            if (!sent) {
+                frame.release();
+            }
+        }
+    }
+
+    private boolean admit(Session to, Object message) {
         Channel ch = to.channel();
         if (!ch.isActive() || to.state() == Session.State.CLOSING) {
             return false;
         }
         if (ch.isWritable()) {
-            to.shedInARow.set(0);
-            metrics.sent.incrementAndGet();
+            if (to.shedInARow.get() != 0) {
+                to.shedInARow.set(0);
+            }
+            metrics.sent.increment();
             to.enqueue(message);
             return true;
         }
@@ -58,7 +82,7 @@ final class Outbound {
             ch.close(); // it does not read: the error would only wait behind what is queued
             return;
         }
-        metrics.sent.incrementAndGet();
+        metrics.sent.increment();
         to.enqueueLast(error); // behind what is already queued, so the order of messages is kept
         ch.eventLoop().schedule(() -> ch.close(), 2, TimeUnit.SECONDS); // in case the peer never reads it
     }

@@ -1,5 +1,6 @@
 package org.kicnp.gateway;
 
+import io.netty.buffer.ByteBuf;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
@@ -12,6 +13,7 @@ import org.kicnp.protocol.ErrorCode;
 import org.kicnp.protocol.FrameText;
 import org.kicnp.protocol.Message;
 import org.kicnp.protocol.Message.ErrorReply;
+import org.kicnp.protocol.RelayRoute;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -117,14 +119,17 @@ final class ServerAgent {
         return new Message.Ack(r.id());
     }
 
-    /** Relays to one agent or to every agent of a kind (not back to the sender). */
-    Message relay(Session from, Message.Relay r) {
+    /**
+     * Relays to one agent or to every agent of a kind (not back to the sender). Answers {@code ack}, or nothing when
+     * the relay's id is empty (fire and forget); a refusal is answered either way.
+     */
+    Optional<Message> relay(Session from, Message.Relay r) {
         Message.Relay stamped = r.from(from.agent());
         if (stamped.toAgent().isPresent()) {
             String to = stamped.toAgent().get();
             Optional<Session> target = registry.find(to);
             if (target.isEmpty()) {
-                return ErrorReply.to(r.id(), ErrorCode.UNKNOWN_AGENT, "No agent '" + to + "' is registered.");
+                return Optional.of(unknownAgent(r.id(), to));
             }
             out.send(target.get(), stamped);
         } else {
@@ -134,7 +139,41 @@ final class ServerAgent {
                 }
             }
         }
-        return new Message.Ack(r.id());
+        return acked(r.id());
+    }
+
+    /**
+     * Relays a plain relay's frame as it is, to one agent or to every agent of a kind (not back to the sender); the
+     * caller has checked that the frame names {@code from} as its sender, and keeps its own reference to it. Every
+     * receiver shares the one buffer (a reference each): the outbox copies it out without moving its indices.
+     */
+    Optional<Message> relayFrame(Session from, RelayRoute route, ByteBuf frame) {
+        if (route.toAgent().isPresent()) {
+            String to = route.toAgent().get();
+            Optional<Session> target = registry.find(to);
+            if (target.isEmpty()) {
+                return Optional.of(unknownAgent(route.id(), to));
+            }
+            out.sendFrame(target.get(), frame.retain());
+        } else {
+            for (Session target : registry.ofKind(route.toKind().orElseThrow())) {
+                if (target != from) {
+                    out.sendFrame(target, frame.retain());
+                }
+            }
+        }
+        return acked(route.id());
+    }
+
+    /** The answer to a relay that went out: an {@code ack}, or nothing for a fire-and-forget relay (empty id). */
+    private static Optional<Message> acked(String id) {
+        return id.isEmpty() ? Optional.empty() : Optional.of(new Message.Ack(id));
+    }
+
+    /** The refusal of a relay to an unknown agent; without id for a fire-and-forget relay. */
+    private static ErrorReply unknownAgent(String id, String to) {
+        String text = "No agent '" + to + "' is registered.";
+        return id.isEmpty() ? ErrorReply.of(ErrorCode.UNKNOWN_AGENT, text) : ErrorReply.to(id, ErrorCode.UNKNOWN_AGENT, text);
     }
 
     /** Records a sensor signal; an error (without id) if the knowledge base refuses it. */

@@ -2,6 +2,7 @@ package org.kicnp.gateway;
 
 import static java.util.Objects.requireNonNull;
 
+import io.netty.buffer.ByteBuf;
 import io.netty.channel.Channel;
 import io.netty.channel.ChannelFutureListener;
 import io.netty.util.internal.PlatformDependent;
@@ -13,19 +14,24 @@ import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.kicnp.protocol.AgentKind;
 import org.kicnp.protocol.Message;
+import org.kicnp.protocol.MessageCodec;
 
 /**
  * One agent connection as the server agent sees it: who it is once authenticated, whether it registered, what it
  * subscribed to, and how many messages to it were shed in a row. State changes happen on the channel's event loop.
  *
- * <p>Outgoing messages wait in an outbox that the channel's event loop drains in one task, writing them all and
- * flushing once: a burst of relays to one agent costs one task, one wake-up and one system call, not one of each
- * per message, whichever thread the messages come from.
+ * <p>Outgoing messages wait in an outbox that the channel's event loop drains in one task, writing them all as one
+ * buffer and flushing once: a burst of relays to one agent costs one task, one wake-up, one buffer and one system
+ * call, not one of each per message, whichever thread the messages come from.
  */
 final class Session {
     enum State { NEW, AUTHENTICATED, REGISTERED, CLOSING }
 
+    /** The first size of a drain's buffer; it grows as needed. */
+    private static final int BATCH_BYTES = 1024;
+
     private final Channel channel;
+    private final MessageCodec codec;
     private volatile State state = State.NEW;
     private volatile String agent = "";
     private volatile AgentKind kind = AgentKind.SERVICE;
@@ -37,13 +43,18 @@ final class Session {
 
     private final Queue<Object> outbox = PlatformDependent.newMpscQueue();
     private final AtomicBoolean drainScheduled = new AtomicBoolean();
+    /** The drain as a task, made once rather than per message. */
+    private final Runnable drainTask = this::drain;
+    /** When the outbox was last written to the connection ({@link System#nanoTime}); read on the event loop. */
+    private long lastWriteNanos = System.nanoTime();
 
     /** A last message, after which the connection closes. */
     private record Last(Message message) {
     }
 
-    Session(Channel channel) {
+    Session(Channel channel, MessageCodec codec) {
         this.channel = requireNonNull(channel, "channel");
+        this.codec = requireNonNull(codec, "codec");
     }
 
     Channel channel() {
@@ -65,8 +76,8 @@ final class Session {
         this.state = State.REGISTERED;
     }
 
-    /** Queues a message for this connection; safe from any thread. */
-    void enqueue(Message m) {
+    /** Queues a message, or a whole frame to write as it is, for this connection; safe from any thread. */
+    void enqueue(Object m) {
         outbox.offer(m);
         scheduleDrain();
     }
@@ -79,22 +90,64 @@ final class Session {
 
     private void scheduleDrain() {
         if (drainScheduled.compareAndSet(false, true)) {
-            channel.eventLoop().execute(this::drain);
+            channel.eventLoop().execute(drainTask);
         }
     }
 
-    /** Writes everything queued, in order, then flushes once. Runs on the channel's event loop. */
+    /**
+     * Writes everything queued, in order, as one buffer of frames (messages encoded, forwarded frames copied in),
+     * then flushes once: one pipeline pass and one buffer per drain instead of one per message. Runs on the
+     * channel's event loop.
+     */
     private void drain() {
         drainScheduled.set(false); // before polling: a message queued from now on schedules another drain
-        Object next;
-        while ((next = outbox.poll()) != null) {
-            if (next instanceof Last last) {
-                channel.writeAndFlush(last.message()).addListener(ChannelFutureListener.CLOSE);
-            } else {
-                channel.write(next, channel.voidPromise());
+        lastWriteNanos = System.nanoTime();
+        ByteBuf batch = null;
+        try {
+            Object next;
+            while ((next = outbox.poll()) != null) {
+                if (next instanceof Last last) {
+                    if (batch != null) {
+                        channel.write(batch, channel.voidPromise());
+                        batch = null;
+                    }
+                    channel.writeAndFlush(last.message()).addListener(ChannelFutureListener.CLOSE);
+                } else {
+                    if (batch == null) {
+                        batch = channel.alloc().ioBuffer(BATCH_BYTES);
+                    }
+                    append(batch, next);
+                }
             }
+            if (batch != null) {
+                channel.write(batch, channel.voidPromise());
+                batch = null;
+            }
+        } finally {
+            if (batch != null) {
+                batch.release();
+            }
+            channel.flush();
         }
-        channel.flush();
+    }
+
+    /** Appends one frame: a forwarded frame as it is (releasing it), or a message encoded. */
+    private void append(ByteBuf batch, Object next) {
+        if (next instanceof ByteBuf frame) {
+            try {
+                batch.writeBytes(frame, frame.readerIndex(), frame.readableBytes());
+            } finally {
+                frame.release();
+            }
+        } else {
+            byte[] payload = codec.encode((Message) next);
+            batch.writeInt(payload.length).writeBytes(payload);
+        }
+    }
+
+    /** When messages were last written to this connection ({@link System#nanoTime}); on the event loop only. */
+    long lastWriteNanos() {
+        return lastWriteNanos;
     }
 
     void closing() {

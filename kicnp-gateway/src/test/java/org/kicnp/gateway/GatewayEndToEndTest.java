@@ -87,6 +87,19 @@ class GatewayEndToEndTest {
     }
 
     @Test
+    void tell_toName_reachesThatAgent_andToUnknownAgentDoesNotThrow() {
+        UserAgent alice = user("alice");
+        UserAgent bob = user("bob");
+        alice.tellTo("aibo", "s", "nobody hears this");
+        alice.tellTo("bob", "greeting", "Hi, bob.");
+        Eventually.await("bob hears alice", () -> !bob.relays().isEmpty());
+        assertThat(bob.relays()).singleElement().satisfies(r -> {
+            assertThat(r.from()).isEqualTo("alice");
+            assertThat(r.body()).isEqualTo("Hi, bob.");
+        });
+    }
+
+    @Test
     void relay_toUnknownAgent_isRefusedWithCode() {
         UserAgent alice = user("alice");
         assertThatThrownBy(() -> alice.relayTo("aibo", "s", "b"))

@@ -19,7 +19,8 @@ import org.kicnp.protocol.ProtocolException;
 /** The Netty codec alone: frames split and joined arbitrarily still decode; the encoder writes length + JSON. */
 class MessageCodecChannelTest {
     private EmbeddedChannel codec() {
-        return new EmbeddedChannel(new LengthFieldBasedFrameDecoder(1 << 20, 0, 4, 0, 4, true),
+        // As in the gateway's pipeline: the frame decoder leaves the length prefix in front of each frame.
+        return new EmbeddedChannel(new LengthFieldBasedFrameDecoder(1 << 20, 0, 4, 0, 0, true),
                 new MessageDecoder(Wire.CODEC), new MessageEncoder(Wire.CODEC));
     }
 
@@ -33,6 +34,27 @@ class MessageCodecChannelTest {
         two.release();
         assertThat(List.<Object>of(ch.readInbound(), ch.readInbound()))
                 .containsExactly(new Message.Ack("1"), new Message.Heartbeat(7));
+        assertThat(ch.finish()).isFalse();
+    }
+
+    @Test
+    void decoder_ofPlainRelay_givesItsRouteAndWholeFrame_andAnyOtherRelayDecoded() {
+        EmbeddedChannel ch = codec();
+        Message.Relay plain = Message.Relay.toAgent("7", "alice", "bob", "say", "hi");
+        ch.writeInbound(Wire.frame(plain));
+        InboundRelay in = ch.readInbound();
+        try {
+            assertThat(in.route()).isEqualTo(new org.kicnp.protocol.RelayRoute("7", "alice", Optional.of("bob"),
+                    Optional.empty()));
+            assertThat(io.netty.buffer.ByteBufUtil.getBytes(in.frame()))
+                    .isEqualTo(io.netty.buffer.ByteBufUtil.getBytes(Wire.frame(plain)));
+            assertThat(in.decode(Wire.CODEC)).isEqualTo(plain);
+        } finally {
+            in.frame().release();
+        }
+        ch.writeInbound(Wire.frame("{\"v\":1,\"type\":\"relay\",\"id\":\"8\",\"from\":\"alice\",\"toAgent\":\"bob\","
+                + "\"subject\":\"s\",\"body\":\"b\",\"extra\":true}"));
+        assertThat((Object) ch.readInbound()).isEqualTo(Message.Relay.toAgent("8", "alice", "bob", "s", "b"));
         assertThat(ch.finish()).isFalse();
     }
 

@@ -50,17 +50,20 @@ final class Wire {
         return b;
     }
 
-    /** Every message the channel wrote so far, decoded. */
+    /** Every message the channel wrote so far, decoded (each written buffer holds whole frames, one or more). */
     static List<Message> written(EmbeddedChannel ch) {
         ch.runPendingTasks(); // the gateway writes from its event loop's tasks (a session's outbox is drained there)
         List<Message> out = new ArrayList<>();
         for (ByteBuf b = ch.readOutbound(); b != null; b = ch.readOutbound()) {
             try {
-                int length = b.readInt();
-                if (length != b.readableBytes()) {
-                    throw new AssertionError("Length prefix " + length + " but " + b.readableBytes() + " bytes follow.");
+                while (b.isReadable()) { // a buffer holds one or more whole frames (the outbox writes a batch)
+                    int length = b.readInt();
+                    if (length > b.readableBytes()) {
+                        throw new AssertionError("Length prefix " + length + " but " + b.readableBytes()
+                                + " bytes follow.");
+                    }
+                    out.add(CODEC.decode(ByteBufUtil.getBytes(b.readSlice(length))));
                 }
-                out.add(CODEC.decode(ByteBufUtil.getBytes(b)));
             } finally {
                 b.release();
             }

@@ -90,6 +90,15 @@ public final class MessageCodec {
     }
 
     private byte[] ack(Message.Ack a) {
+        String id = a.id();
+        if (printableAscii(id)) { // the usual id: the generator's bytes, without a generator
+            byte[] out = new byte[ACK_HEAD.length + id.length() + 2];
+            System.arraycopy(ACK_HEAD, 0, out, 0, ACK_HEAD.length);
+            id.getBytes(0, id.length(), out, ACK_HEAD.length);
+            out[out.length - 2] = '"';
+            out[out.length - 1] = '}';
+            return out;
+        }
         java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream(48 + a.id().length());
         try (com.fasterxml.jackson.core.JsonGenerator g = mapper.getFactory().createGenerator(out)) {
             envelope(g, MessageType.ACK);
@@ -99,6 +108,20 @@ public final class MessageCodec {
             throw new IllegalStateException("Could not encode an 'ack' message.", e);
         }
         return out.toByteArray();
+    }
+
+    private static final byte[] ACK_HEAD = ("{\"v\":" + VERSION + ",\"type\":\"ack\",\"id\":\"")
+            .getBytes(java.nio.charset.StandardCharsets.US_ASCII);
+
+    /** Whether JSON writes {@code s} as it is: printable ASCII without quote or backslash, so nothing is escaped. */
+    private static boolean printableAscii(String s) {
+        for (int i = 0; i < s.length(); i++) {
+            char c = s.charAt(i);
+            if (c < 0x20 || c > 0x7E || c == '"' || c == '\\') {
+                return false;
+            }
+        }
+        return true;
     }
 
     private static void envelope(com.fasterxml.jackson.core.JsonGenerator g, MessageType type) throws IOException {
@@ -117,6 +140,14 @@ public final class MessageCodec {
                     .getBytes(java.nio.charset.StandardCharsets.UTF_8));
         }
         return m;
+    }
+
+    /**
+     * The route of a payload that is a plain relay (see {@link RelayRoute}), read without decoding its subject and
+     * body; empty for any other payload, which {@link #decode} then handles.
+     */
+    public Optional<RelayRoute> relayRoute(byte[] payload, int offset, int length) {
+        return RelayRoute.scan(payload, offset, length);
     }
 
     /**
