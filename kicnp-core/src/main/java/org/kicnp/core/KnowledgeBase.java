@@ -3,6 +3,7 @@ package org.kicnp.core;
 import static java.util.Objects.requireNonNull;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -12,6 +13,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.concurrent.locks.ReentrantReadWriteLock;
 import java.util.function.Consumer;
+import java.util.function.Function;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -29,6 +31,12 @@ public final class KnowledgeBase {
 
     private final ReentrantReadWriteLock lock = new ReentrantReadWriteLock();
     private final Map<String, Node> nodes = new LinkedHashMap<>();
+    /**
+     * What validation has learnt of the classes (acyclic IS-A chains, inherited slot declarations), kept between
+     * batches that change no class and dropped by any batch that does: adding an instance then costs a look-up.
+     */
+    private final Map<String, ClassInfo> classes = new HashMap<>();
+    private final Function<String, Frame> lookup = this::frameOrNull;
     private final CommitLog commitLog;
     private final List<KnowledgeListener> listeners = new CopyOnWriteArrayList<>();
     private final ConcurrentLinkedQueue<ChangeSet> undelivered = new ConcurrentLinkedQueue<>();
@@ -83,7 +91,14 @@ public final class KnowledgeBase {
     public List<Frame> children(String name) {
         return read(() -> {
             Node n = node(name);
-            return n.children == null ? List.of() : n.children.stream().map(c -> c.frame).toList();
+            if (n.children == null) {
+                return List.of();
+            }
+            List<Frame> out = new ArrayList<>(n.children.size());
+            for (Node c : n.children) {
+                out.add(c.frame);
+            }
+            return out;
         });
     }
 
@@ -151,17 +166,17 @@ public final class KnowledgeBase {
 
     /** The slot as the frame sees it, looked up on the frame and then up the IS-A chain. */
     public Optional<EffectiveSlot> slot(String frame, String slotName) {
-        return read(() -> Inheritance.slot(this::frameOrNull, node(frame).frame, slotName));
+        return read(() -> Inheritance.slot(lookup, node(frame).frame, slotName));
     }
 
     /** Every slot the frame has, inherited ones included, topmost declarations first. */
     public List<EffectiveSlot> slots(String frame) {
-        return read(() -> Inheritance.slots(this::frameOrNull, node(frame).frame));
+        return read(() -> Inheritance.slots(lookup, node(frame).frame));
     }
 
     /** The slot's value after inheritance: the nearest value or default. */
     public Optional<Value> value(String frame, String slotName) {
-        return read(() -> Inheritance.value(this::frameOrNull, node(frame).frame, slotName));
+        return read(() -> Inheritance.value(lookup, node(frame).frame, slotName));
     }
 
     /** Semantic links into the frame: those it declares "from" and those other frames declare "to" it. */
@@ -181,10 +196,10 @@ public final class KnowledgeBase {
             Node n = node(name);
             List<SemanticLink> out = new ArrayList<>(own.apply(n.frame));
             if (n.referrers != null) {
-                for (String r : n.referrers) {
-                    for (SemanticLink l : mirrored.apply(nodes.get(r).frame)) {
+                for (Node r : n.referrers) {
+                    for (SemanticLink l : mirrored.apply(r.frame)) {
                         if (l.frame().equals(name)) {
-                            out.add(new SemanticLink(l.relation(), r));
+                            out.add(new SemanticLink(l.relation(), r.name()));
                         }
                     }
                 }
@@ -253,7 +268,9 @@ public final class KnowledgeBase {
 
     private ChangeSet commit(List<? extends Change> changes) {
         Batch batch = Batch.stage(changes, nodes);
-        List<Problem> problems = new Validator(batch.staged(), nodes).validate(batch.stagedChildren());
+        boolean classesUnchanged = batch.classesUnchanged();
+        Map<String, ClassInfo> known = classesUnchanged ? classes : HashMap.newHashMap(batch.staged().size());
+        List<Problem> problems = new Validator(batch.staged(), nodes, known).validate();
         if (!problems.isEmpty()) {
             throw new BatchRejectedException(problems);
         }
@@ -261,7 +278,7 @@ public final class KnowledgeBase {
         if (events.isEmpty()) {
             return new ChangeSet(version, events);
         }
-        List<FrameEvent> durable = events.stream().filter(KnowledgeBase::isDurable).toList();
+        List<FrameEvent> durable = durable(events);
         if (!durable.isEmpty()) {
             try {
                 commitLog.append(version + 1, durable);
@@ -271,14 +288,30 @@ public final class KnowledgeBase {
             }
         }
         version++;
+        if (!classesUnchanged) {
+            classes.clear();
+        }
         Indexer.apply(nodes, events, version);
         ChangeSet cs = new ChangeSet(version, events);
         undelivered.add(cs);
         return cs;
     }
 
-    private static boolean isDurable(FrameEvent e) {
-        return e.frame().provenance().durable() || e.before().map(b -> b.provenance().durable()).orElse(false);
+    /** The events the commit log must keep: those of frames kept on disk before or after the change. */
+    private static List<FrameEvent> durable(List<FrameEvent> events) {
+        List<FrameEvent> out = null;
+        for (int i = 0, n = events.size(); i < n; i++) {
+            FrameEvent e = events.get(i);
+            boolean durable = e.frame().provenance().durable()
+                    || e instanceof FrameEvent.Replaced r && r.before_().provenance().durable();
+            if (durable) {
+                if (out == null) {
+                    out = new ArrayList<>(n - i);
+                }
+                out.add(e);
+            }
+        }
+        return out == null ? List.of() : out;
     }
 
     /** Delivers committed batches in order; a change made by a listener is delivered by the outer loop. */
