@@ -13,11 +13,14 @@ final class ClassInfo {
     final Frame frame;
     /** The parent's entry, or null for a root or a frame whose parent is not defined. */
     final ClassInfo parent;
+    /** Whether the chain ends at a root, not at a parent that is not defined (yet: a staged load may add it later). */
+    final boolean complete;
     private Declarations declarations;
 
     ClassInfo(Frame frame, ClassInfo parent) {
         this.frame = frame;
         this.parent = parent;
+        this.complete = parent == null ? frame.parentOrNull() == null : parent.complete;
     }
 
     /** Whether this frame is named {@code ancestor} or lies below it. */

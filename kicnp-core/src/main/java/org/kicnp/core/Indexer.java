@@ -9,14 +9,16 @@ import java.util.Objects;
 final class Indexer {
     private final Map<String, Node> nodes;
     /** Reused for the names each frame mentions. */
-    private final List<String> refs = new ArrayList<>();
+    private final List<String> refs;
 
-    private Indexer(Map<String, Node> nodes) {
+    private Indexer(Map<String, Node> nodes, List<String> refs) {
         this.nodes = nodes;
+        this.refs = refs;
     }
 
-    static void apply(Map<String, Node> nodes, List<FrameEvent> events, long version) {
-        new Indexer(nodes).apply(events, version);
+    /** @param refs an empty list to reuse */
+    static void apply(Map<String, Node> nodes, List<FrameEvent> events, long version, List<String> refs) {
+        new Indexer(nodes, refs).apply(events, version);
     }
 
     private void apply(List<FrameEvent> events, long version) {

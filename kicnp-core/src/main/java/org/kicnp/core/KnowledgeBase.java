@@ -14,6 +14,8 @@ import java.util.concurrent.locks.ReentrantLock;
 import java.util.concurrent.locks.ReentrantReadWriteLock;
 import java.util.function.Consumer;
 import java.util.function.Function;
+import java.util.function.LongConsumer;
+import java.util.function.Supplier;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -37,6 +39,8 @@ public final class KnowledgeBase {
      */
     private final Map<String, ClassInfo> classes = new HashMap<>();
     private final Function<String, Frame> lookup = this::frameOrNull;
+    /** Scratch list for validation and indexing, used under the write lock. */
+    private final List<String> refs = new ArrayList<>();
     private final CommitLog commitLog;
     private final List<KnowledgeListener> listeners = new CopyOnWriteArrayList<>();
     private final ConcurrentLinkedQueue<ChangeSet> undelivered = new ConcurrentLinkedQueue<>();
@@ -258,6 +262,47 @@ public final class KnowledgeBase {
         return committed;
     }
 
+    /**
+     * Starts a batch of adds given in parts, as a loader reads them, and checked part by part while the caller goes on
+     * reading: see {@link StagedBatch}. Its {@link StagedBatch#commit()} is equivalent to {@link #apply} of all the adds.
+     */
+    public StagedBatch stagedBatch() {
+        return new StagedBatch(this);
+    }
+
+    /** Runs {@code part} of a staged batch under the read lock, with the version it sees. */
+    void readStaged(LongConsumer part) {
+        lock.readLock().lock();
+        try {
+            part.accept(version);
+        } finally {
+            lock.readLock().unlock();
+        }
+    }
+
+    Map<String, Node> nodes() {
+        return nodes;
+    }
+
+    /**
+     * Commits a staged batch: if the knowledge base is still at {@code stagedAt}, {@code finish} completes the
+     * checks and answers the events; otherwise (another batch came in between) the adds are applied as any batch.
+     */
+    ChangeSet commitStaged(long stagedAt, Supplier<List<FrameEvent>> finish, boolean classesUnchanged,
+            Supplier<List<Change>> adds) {
+        ChangeSet committed;
+        lock.writeLock().lock();
+        try {
+            committed = version == stagedAt ? publish(finish.get(), classesUnchanged) : commit(adds.get());
+        } finally {
+            lock.writeLock().unlock();
+        }
+        if (!committed.isEmpty()) {
+            deliver();
+        }
+        return committed;
+    }
+
     public void addListener(KnowledgeListener listener) {
         listeners.add(requireNonNull(listener, "listener"));
     }
@@ -270,11 +315,15 @@ public final class KnowledgeBase {
         Batch batch = Batch.stage(changes, nodes);
         boolean classesUnchanged = batch.classesUnchanged();
         Map<String, ClassInfo> known = classesUnchanged ? classes : HashMap.newHashMap(batch.staged().size());
-        List<Problem> problems = new Validator(batch.staged(), nodes, known).validate();
+        List<Problem> problems = new Validator(batch.staged(), nodes, known, refs).validate();
         if (!problems.isEmpty()) {
             throw new BatchRejectedException(problems);
         }
-        List<FrameEvent> events = batch.events(nodes);
+        return publish(batch.events(nodes), classesUnchanged);
+    }
+
+    /** Makes a validated batch's events durable, applies them and queues them for the listeners. */
+    private ChangeSet publish(List<FrameEvent> events, boolean classesUnchanged) {
         if (events.isEmpty()) {
             return new ChangeSet(version, events);
         }
@@ -291,7 +340,7 @@ public final class KnowledgeBase {
         if (!classesUnchanged) {
             classes.clear();
         }
-        Indexer.apply(nodes, events, version);
+        Indexer.apply(nodes, events, version, refs);
         ChangeSet cs = new ChangeSet(version, events);
         undelivered.add(cs);
         return cs;
@@ -349,7 +398,7 @@ public final class KnowledgeBase {
         return n == null ? null : n.frame;
     }
 
-    private <T> T read(java.util.function.Supplier<T> body) {
+    private <T> T read(Supplier<T> body) {
         lock.readLock().lock();
         try {
             return body.get();

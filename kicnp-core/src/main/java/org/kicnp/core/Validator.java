@@ -6,7 +6,6 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import java.util.function.Function;
 
 /**
  * Checks a staged batch against the knowledge base as it would be after the batch ({@code view}), collecting every
@@ -19,7 +18,6 @@ import java.util.function.Function;
 final class Validator {
     private static final int CYCLE_CHECK_STEPS = 10_000;
 
-    private final Function<String, Frame> view;
     private final Map<String, Frame> staged;
     private final Map<String, Node> base;
     /** Frames known to have an acyclic IS-A chain in the view, by name. */
@@ -27,30 +25,33 @@ final class Validator {
     private final List<Problem> problems = new ArrayList<>(0);
     /** Staged frames by parent name, for parents that are missing or instances in the view; null until one is. */
     private Map<String, List<String>> stagedChildren;
-    private final List<String> refs = new ArrayList<>();
+    /** In a load staged in parts: frames whose parent was, when staged, missing or an instance. */
+    private List<Frame> suspects;
+    /** Scratch list for the names a frame mentions, the knowledge base's (used under its write lock). */
+    private final List<String> refs;
 
     /**
      * @param staged touched names to their frame after the batch, or null where the batch removes the frame
      * @param base the knowledge base's nodes before the batch
      * @param classes what is known of the view's classes: the knowledge base's own when the batch changes no class
      *     (entries added here stay true), else an empty map for this batch
+     * @param refs an empty list to reuse
      */
-    Validator(Map<String, Frame> staged, Map<String, Node> base, Map<String, ClassInfo> classes) {
+    Validator(Map<String, Frame> staged, Map<String, Node> base, Map<String, ClassInfo> classes, List<String> refs) {
         this.staged = staged;
         this.base = base;
         this.classes = classes;
-        this.view = name -> {
-            Frame f = staged.get(name);
-            if (f != null || staged.containsKey(name)) {
-                return f;
-            }
-            Node n = base.get(name);
-            return n == null ? null : n.frame;
-        };
+        this.refs = refs;
     }
 
-    Function<String, Frame> view() {
-        return view;
+    /** The frame of that name after the batch, or null where there is none. */
+    private Frame view(String name) {
+        Frame f = staged.get(name);
+        if (f != null || staged.containsKey(name)) {
+            return f;
+        }
+        Node n = base.get(name);
+        return n == null ? null : n.frame;
     }
 
     List<Problem> validate() {
@@ -60,13 +61,10 @@ final class Validator {
             Frame f = e.getValue();
             String p = f == null ? null : f.parentOrNull();
             if (p != null) {
-                Frame parent = view.apply(p);
+                Frame parent = view(p);
                 parents[i] = parent;
                 if (parent == null || parent.isInstance()) {
-                    if (stagedChildren == null) {
-                        stagedChildren = new HashMap<>();
-                    }
-                    stagedChildren.computeIfAbsent(p, k -> new ArrayList<>()).add(e.getKey());
+                    childOf(p, e.getKey());
                 }
             }
             i++;
@@ -87,7 +85,7 @@ final class Validator {
         Node node = base.get(name);
         List<String> kids = childrenInView(name, node);
         if (!kids.isEmpty()) {
-            boolean instances = kids.stream().map(view).allMatch(Frame::isInstance);
+            boolean instances = kids.stream().map(this::view).allMatch(Frame::isInstance);
             problems.add(Problem.of(name, "Frame '" + name + "' cannot be removed: it still has "
                     + (instances ? "instances " : "subclasses or instances ") + quoteList(kids) + "."));
         }
@@ -101,27 +99,95 @@ final class Validator {
         }
     }
 
-    /** @param parent the frame's parent in the view, or null for a root frame or an undefined parent */
-    private void checkFrame(Frame f, Frame parent) {
+    /**
+     * Checks one frame of a load staged in parts (adds only, on an unchanged knowledge base) against the frames staged
+     * so far. True when the frame is settled: it has no problem now and its IS-A chain ends at a root, and then no
+     * later add can give it one, except sub-frames of an instance, which {@link #finish} looks for. Other frames are
+     * checked again by {@link #finish}, once every frame is staged.
+     */
+    boolean settles(Frame f) {
+        int before = problems.size();
+        String p = f.parentOrNull();
+        Frame parent = p == null ? null : view(p);
+        if (p != null && (parent == null || parent.isInstance())) {
+            if (suspects == null) {
+                suspects = new ArrayList<>();
+            }
+            suspects.add(f);
+        }
+        boolean complete = checkFrame(f, parent);
+        boolean clean = problems.size() == before;
+        problems.subList(before, problems.size()).clear();
+        return clean && complete;
+    }
+
+    /**
+     * The problems of a load staged in parts, as {@link #validate} would find them for the whole batch: the frames
+     * that did not settle are checked again in staged order, with every instance that has gained sub-frames.
+     */
+    List<Problem> finish(List<Frame> unsettled) {
+        if (suspects != null) {
+            for (Frame c : suspects) {
+                Frame parent = view(c.parentOrNull());
+                if (parent == null || parent.isInstance()) {
+                    childOf(c.parentOrNull(), c.name());
+                }
+            }
+        }
+        Set<String> recheck = new HashSet<>();
+        for (Frame f : unsettled) {
+            recheck.add(f.name());
+        }
+        if (stagedChildren != null) {
+            for (String p : stagedChildren.keySet()) {
+                Frame f = staged.get(p);
+                if (f != null && f.isInstance()) {
+                    recheck.add(p);
+                }
+            }
+        }
+        if (!recheck.isEmpty()) {
+            for (Map.Entry<String, Frame> e : staged.entrySet()) {
+                if (recheck.contains(e.getKey())) {
+                    Frame f = e.getValue();
+                    checkFrame(f, f.parentOrNull() == null ? null : view(f.parentOrNull()));
+                }
+            }
+        }
+        return problems;
+    }
+
+    private void childOf(String parent, String child) {
+        if (stagedChildren == null) {
+            stagedChildren = new HashMap<>();
+        }
+        stagedChildren.computeIfAbsent(parent, k -> new ArrayList<>()).add(child);
+    }
+
+    /**
+     * @param parent the frame's parent in the view, or null for a root frame or an undefined parent
+     * @return whether the frame's IS-A chain ends at a root (not at a parent that is not defined)
+     */
+    private boolean checkFrame(Frame f, Frame parent) {
         String name = f.name();
         String p = f.parentOrNull();
         ClassInfo above = null;
         if (p != null) {
             if (parent == null) {
                 problems.add(Problem.of(name, "Frame '" + name + "' is a kind of '" + p + "', which is not defined."));
-                return;
+                return false;
             }
             if (parent.isInstance()) {
                 problems.add(Problem.of(name, "Frame '" + name + "' is a kind of '" + p
                         + "', which is an instance; only classes can have sub-frames."));
-                return;
+                return false;
             }
             // The frame's chain is the parent's plus the frame itself: it has a cycle exactly when the parent's has.
             above = info(parent);
             if (above == null) {
                 problems.add(Problem.of(name, "Frame '" + name + "' is a kind of '" + p
                         + "', which makes an IS-A cycle: " + cycleText(f) + "."));
-                return;
+                return false;
             }
         }
         if (f.isInstance()) {
@@ -150,6 +216,7 @@ final class Validator {
         if (f.provenance().durable()) {
             checkNoRuntimeReferences(f, parent);
         }
+        return above == null || above.complete;
     }
 
     /** A durable frame must reload on its own after a restart, when runtime frames are gone. */
@@ -165,7 +232,7 @@ final class Validator {
             if (r.equals(f.name()) || refs.subList(0, i).contains(r)) {
                 continue;
             }
-            Frame target = view.apply(r);
+            Frame target = view(r);
             if (target != null && target.provenance() == Provenance.RUNTIME) {
                 problems.add(Problem.of(f.name(), "Frame '" + f.name() + "' is kept on disk but refers to '" + r
                         + "', which exists only at run time; copy the values it needs instead."));
@@ -233,7 +300,7 @@ final class Validator {
             default -> List.of();
         };
         for (Operand o : operands) {
-            if (o instanceof Operand.Path p && Inheritance.slot(view, f, p.head()).isEmpty()) {
+            if (o instanceof Operand.Path p && Inheritance.slot(this::view, f, p.head()).isEmpty()) {
                 problems.add(Problem.of(f.name(), own.name(), where(own.name(), f.name()) + " has a condition on '"
                         + p.text() + "', but frame '" + f.name() + "' has no slot '" + p.head() + "'."));
             }
@@ -244,7 +311,7 @@ final class Validator {
     private void checkRefs(String frame, String slot, Value v, String instanceOf) {
         switch (v) {
             case Value.Ref r -> {
-                Frame target = view.apply(r.frame());
+                Frame target = view(r.frame());
                 if (target == null) {
                     problems.add(Problem.of(frame, slot, where(slot, frame) + " refers to '" + r.frame()
                             + "', which is not defined."));
@@ -267,7 +334,7 @@ final class Validator {
             return true;
         }
         String p = f.parentOrNull();
-        Frame parent = p == null ? null : view.apply(p);
+        Frame parent = p == null ? null : view(p);
         if (parent == null) {
             return false;
         }
@@ -288,7 +355,7 @@ final class Validator {
     }
 
     private void requireClass(String frame, String slot, String cls) {
-        Frame c = view.apply(cls);
+        Frame c = view(cls);
         if (c == null) {
             problems.add(Problem.of(frame, slot, where(slot, frame) + " names class '" + cls
                     + "' as its ARGUMENT, which is not defined."));
@@ -299,7 +366,7 @@ final class Validator {
     }
 
     private void requireFrame(String frame, String target, String relation) {
-        if (view.apply(target) == null) {
+        if (view(target) == null) {
             problems.add(Problem.of(frame, "Frame '" + frame + "' " + relation + " '" + target
                     + "', which is not defined."));
         }
@@ -341,11 +408,14 @@ final class Validator {
             if (top != null) {
                 break;
             }
-            y = view.apply(yp);
+            y = view(yp);
         }
         for (int i = path.size() - 1; i >= 0; i--) {
             top = new ClassInfo(path.get(i), top);
-            classes.put(path.get(i).name(), top);
+            // A chain that ends at a parent not defined may be completed by a later part of a staged load.
+            if (top.complete) {
+                classes.put(path.get(i).name(), top);
+            }
         }
         return top;
     }
@@ -362,7 +432,7 @@ final class Validator {
 
     private Frame parentOf(Frame f) {
         String p = f.parentOrNull();
-        return p == null ? null : view.apply(p);
+        return p == null ? null : view(p);
     }
 
     /** Names a slot in problem messages. */
