@@ -286,14 +286,15 @@ public final class KnowledgeBase {
 
     /**
      * Commits a staged batch: if the knowledge base is still at {@code stagedAt}, {@code finish} completes the
-     * checks and answers the events; otherwise (another batch came in between) the adds are applied as any batch.
+     * checks and answers the events, and {@code prepared} (if not null) holds their nodes; otherwise (another batch
+     * came in between) the adds are applied as any batch.
      */
-    ChangeSet commitStaged(long stagedAt, Supplier<List<FrameEvent>> finish, boolean classesUnchanged,
-            Supplier<List<Change>> adds) {
+    ChangeSet commitStaged(long stagedAt, Supplier<List<FrameEvent>> finish, PreparedNodes prepared,
+            boolean classesUnchanged, Supplier<List<Change>> adds) {
         ChangeSet committed;
         lock.writeLock().lock();
         try {
-            committed = version == stagedAt ? publish(finish.get(), classesUnchanged) : commit(adds.get());
+            committed = version == stagedAt ? publish(finish.get(), classesUnchanged, prepared) : commit(adds.get());
         } finally {
             lock.writeLock().unlock();
         }
@@ -319,11 +320,15 @@ public final class KnowledgeBase {
         if (!problems.isEmpty()) {
             throw new BatchRejectedException(problems);
         }
-        return publish(batch.events(nodes), classesUnchanged);
+        return publish(batch.events(nodes), classesUnchanged, null);
     }
 
-    /** Makes a validated batch's events durable, applies them and queues them for the listeners. */
-    private ChangeSet publish(List<FrameEvent> events, boolean classesUnchanged) {
+    /**
+     * Makes a validated batch's events durable, applies them and queues them for the listeners.
+     *
+     * @param prepared the batch's nodes, built while it was staged, or null to index the events here
+     */
+    private ChangeSet publish(List<FrameEvent> events, boolean classesUnchanged, PreparedNodes prepared) {
         if (events.isEmpty()) {
             return new ChangeSet(version, events);
         }
@@ -340,7 +345,11 @@ public final class KnowledgeBase {
         if (!classesUnchanged) {
             classes.clear();
         }
-        Indexer.apply(nodes, events, version, refs);
+        if (prepared != null) {
+            prepared.attach(nodes, version);
+        } else {
+            Indexer.apply(nodes, events, version, refs);
+        }
         ChangeSet cs = new ChangeSet(version, events);
         undelivered.add(cs);
         return cs;

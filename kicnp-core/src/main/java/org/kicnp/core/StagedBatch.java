@@ -26,6 +26,8 @@ public final class StagedBatch {
     private final List<Frame> unsettled = new ArrayList<>();
     private final List<Problem> duplicates = new ArrayList<>(0);
     private Validator validator;
+    /** The nodes, built as frames come; null once a frame came before its parent or a frame it refers to. */
+    private PreparedNodes prepared;
     private long stagedAt = -1;
     private boolean stale;
     private boolean classesUnchanged = true;
@@ -45,8 +47,10 @@ public final class StagedBatch {
                 stagedAt = version;
                 // Its own class memo (never the knowledge base's): this runs under the read lock only.
                 validator = new Validator(staged, kb.nodes(), new HashMap<>(), new ArrayList<>());
+                prepared = new PreparedNodes(kb.nodes());
             } else if (version != stagedAt) {
                 stale = true;
+                prepared = null;
             }
             for (Frame f : frames) {
                 stage(f);
@@ -65,8 +69,14 @@ public final class StagedBatch {
         if (f.isClass()) {
             classesUnchanged = false;
         }
-        if (!stale && duplicates.isEmpty() && !validator.settles(f)) {
+        if (stale || !duplicates.isEmpty()) {
+            return;
+        }
+        if (!validator.settles(f)) {
             unsettled.add(f);
+        }
+        if (prepared != null && !prepared.add(f)) {
+            prepared = null;
         }
     }
 
@@ -80,7 +90,7 @@ public final class StagedBatch {
             throw new IllegalStateException("This staged batch has been committed already.");
         }
         committed = true;
-        return kb.commitStaged(stale || validator == null ? -1 : stagedAt, this::finish, classesUnchanged, () -> {
+        return kb.commitStaged(stale || validator == null ? -1 : stagedAt, this::finish, prepared, classesUnchanged, () -> {
             List<Change> adds = new ArrayList<>(given.size());
             for (Frame f : given) {
                 adds.add(new Change.Add(f));
