@@ -35,9 +35,13 @@ import picocli.CommandLine.Spec;
             "Knowledge core: XML load and save time, retained heap, instancesOf cost per result.",
             "Generates a knowledge base (IS-A tree 8 deep, 6 slots per frame, a third instances), saves it as XML,",
             "loads it back into a fresh knowledge base, and measures; times are medians of the timed rounds.",
+            "Then adds --adds small instance frames one apply each, as rule firings do, and times one add.",
             "The last line of output is one JSON object with the figures."
         })
 final class CoreBench implements Callable<Integer> {
+    /** Timed rounds of the one-apply-per-instance adds; each is long enough to be steady. */
+    private static final int ADD_ROUNDS = 3;
+
     @Spec
     CommandSpec spec;
 
@@ -53,10 +57,14 @@ final class CoreBench implements Callable<Integer> {
     @Option(names = "--seed", defaultValue = "42", description = "Seed of the generator (default: ${DEFAULT-VALUE}).")
     long seed;
 
+    @Option(names = "--adds", defaultValue = "300000",
+            description = "Instances added one apply each, as rule firings add them (default: ${DEFAULT-VALUE}).")
+    int adds;
+
     @Override public Integer call() throws IOException {
-        if (frames < 3 || warmup < 0 || rounds < 1) {
+        if (frames < 3 || warmup < 0 || rounds < 1 || adds < 1) {
             throw new ParameterException(spec.commandLine(),
-                    "Need --frames of at least 3, --warmup of 0 or more and --rounds of 1 or more.");
+                    "Need --frames of at least 3, --warmup of 0 or more, --rounds of 1 or more and --adds of 1 or more.");
         }
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
@@ -90,8 +98,7 @@ final class CoreBench implements Callable<Integer> {
         Timed saves = new Timed();
         for (int i = 0; i < rounds; i++) {
             progress(err, "Timed round %d of %d", i + 1, rounds);
-            KnowledgeBase kb = loads.time(() -> load(source));
-            saves.time(() -> save(kb, saved));
+            timedRound(loads, saves, source, saved);
         }
 
         progress(err, "Measuring the retained heap of one loaded knowledge base");
@@ -108,9 +115,22 @@ final class CoreBench implements Callable<Integer> {
         QueryTiming timing = QueryTiming.over(kb, generator, new Random(seed));
         QueryTiming.Result query = timing.measure(rounds);
 
+        progress(err, "Adding %d instances one apply each", adds);
+        AddTiming.Result added = AddTiming.measure(adds, ADD_ROUNDS);
+
         new CoreReport(frames, generator.classCount(), generator.instanceCount(), bytes, warmup, rounds,
-                loads, saves, heapMb, query).print(out);
+                loads, saves, heapMb, query, added).print(out);
         return 0;
+    }
+
+    /**
+     * One timed load and save, in a method of its own: the knowledge base is unreachable once it returns, so the next
+     * round's load does not run with the last one's still alive (a local in the loop would keep it, and every young
+     * collection during the load would copy it).
+     */
+    private void timedRound(Timed loads, Timed saves, Path source, Path saved) {
+        KnowledgeBase kb = loads.time(() -> load(source));
+        saves.time(() -> save(kb, saved));
     }
 
     /** Generates and writes the frames; they are unreachable once this returns, so they do not skew the heap. */

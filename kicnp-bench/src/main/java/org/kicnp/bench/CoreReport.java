@@ -26,9 +26,10 @@ final class CoreReport {
     private final Timed save;
     private final double heapMb;
     private final QueryTiming.Result query;
+    private final AddTiming.Result added;
 
     CoreReport(int frames, int classes, int instances, long xmlBytes, int warmup, int rounds, Timed load,
-            Timed save, double heapMb, QueryTiming.Result query) {
+            Timed save, double heapMb, QueryTiming.Result query, AddTiming.Result added) {
         this.frames = frames;
         this.classes = classes;
         this.instances = instances;
@@ -39,6 +40,7 @@ final class CoreReport {
         this.save = save;
         this.heapMb = heapMb;
         this.query = query;
+        this.added = added;
     }
 
     void print(PrintWriter out) {
@@ -57,6 +59,10 @@ final class CoreReport {
         row(out, "instancesOf per result", query.usPerResult(), "us", QUERY_TARGET_US, Double.isNaN(query.cpuUsPerResult())
                 ? "all depths together (below)"
                 : "all depths together (below); thread CPU " + number(query.cpuUsPerResult()) + " us");
+        out.printf(Locale.ROOT, "%-30s %12s %14s  %-4s  %s%n", "add instance, one apply each",
+                number(added.usPerAdd()) + " us", "(no target)", "", String.format(Locale.ROOT,
+                        "%,d adds, 2 instance slots each; thread CPU %s us, %,.0f bytes allocated per add",
+                        added.adds(), number(added.cpuUsPerAdd()), added.bytesPerAdd()));
         out.println();
         out.printf(Locale.ROOT, "%-8s %8s %16s %14s%n", "depth", "classes", "results/query", "us/result");
         for (QueryTiming.Depth d : query.depths()) {
@@ -70,8 +76,10 @@ final class CoreReport {
     /** The one-line JSON summary, the last line of the output. */
     String json() {
         return String.format(Locale.ROOT,
-                "{\"frames\": %d, \"load_s\": %s, \"save_s\": %s, \"heap_mb\": %s, \"query_us_per_result\": %s}",
-                frames, number(load.wall().median()), number(save.wall().median()), number(heapMb), number(query.usPerResult()));
+                "{\"frames\": %d, \"load_s\": %s, \"save_s\": %s, \"heap_mb\": %s, \"query_us_per_result\": %s, "
+                        + "\"add_us_per_instance\": %s}",
+                frames, number(load.wall().median()), number(save.wall().median()), number(heapMb),
+                number(query.usPerResult()), number(added.usPerAdd()));
     }
 
     private static String spread(Timed t) {

@@ -14,18 +14,19 @@ class CoreBenchTest {
 
     @Test
     void core_onSmallKnowledgeBase_endsWithJsonOfPositiveFigures() throws Exception {
-        Output run = run("core", "--frames", "2000", "--warmup", "1", "--rounds", "3");
+        Output run = run("core", "--frames", "2000", "--warmup", "1", "--rounds", "3", "--adds", "3000");
 
         assertThat(run.code()).as(run.err()).isZero();
         List<String> lines = run.out().lines().toList();
         JsonNode json = new ObjectMapper().readTree(lines.get(lines.size() - 1));
         assertThat(json.get("frames").asInt()).isEqualTo(2000);
-        for (String key : List.of("load_s", "save_s", "heap_mb", "query_us_per_result")) {
+        for (String key : List.of("load_s", "save_s", "heap_mb", "query_us_per_result", "add_us_per_instance")) {
             assertThat(json.has(key)).as(key).isTrue();
             assertThat(json.get(key).isNumber()).as(key).isTrue();
             assertThat(json.get(key).asDouble()).as(key).isPositive();
         }
-        assertThat(run.out()).contains("load (XML -> knowledge base)").containsPattern("(PASS|MISS)");
+        assertThat(run.out()).contains("load (XML -> knowledge base)", "add instance, one apply each")
+                .containsPattern("(PASS|MISS)");
     }
 
     @Test

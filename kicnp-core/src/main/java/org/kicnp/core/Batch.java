@@ -1,18 +1,18 @@
 package org.kicnp.core;
 
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
 /**
  * A batch of changes folded into the state it would leave: for each touched name, the frame after the batch or
- * null where the batch removes it, in the order names were first touched.
+ * null where the batch removes it, in the order names were first touched. Also notes whether the batch leaves every
+ * class as it was (it touches instances only), which lets validation use what the knowledge base knows of its classes.
  */
 final class Batch {
     private final Map<String, Frame> staged;
-    private final Map<String, List<String>> stagedChildren = new HashMap<>();
+    private boolean classesUnchanged = true;
 
     private Batch(int size) {
         staged = LinkedHashMap.newLinkedHashMap(size);
@@ -20,65 +20,79 @@ final class Batch {
 
     static Batch stage(List<? extends Change> changes, Map<String, Node> nodes) {
         Batch b = new Batch(changes.size());
-        List<Problem> problems = new ArrayList<>();
+        List<Problem> problems = null;
         for (Change c : changes) {
             String name = c.name();
+            Node n = nodes.get(name);
             Frame already = b.staged.get(name);
             // Staged as null means removed earlier in the batch; otherwise the knowledge base decides.
-            boolean exists = already != null || nodes.containsKey(name) && !b.staged.containsKey(name);
+            boolean exists = already != null || n != null && !b.staged.containsKey(name);
+            if (n != null && n.frame.isClass()) {
+                b.classesUnchanged = false;
+            }
+            String problem = null;
             switch (c) {
                 case Change.Add a -> {
                     if (exists) {
-                        problems.add(Problem.of(name, "A frame named '" + name + "' already exists."));
+                        problem = "A frame named '" + name + "' already exists.";
                     } else {
-                        b.staged.put(name, a.frame());
+                        b.stage(name, a.frame());
                     }
                 }
                 case Change.Replace r -> {
                     if (!exists) {
-                        problems.add(Problem.of(name, "There is no frame named '" + name + "' to replace."));
-                        continue;
+                        problem = "There is no frame named '" + name + "' to replace.";
+                    } else {
+                        if (r.expectedRevision() != Change.ANY_REVISION && n != null && n.revision != r.expectedRevision()) {
+                            throw new StaleRevisionException(name, r.expectedRevision(), n.revision);
+                        }
+                        b.stage(name, r.frame());
                     }
-                    Node n = nodes.get(name);
-                    if (r.expectedRevision() != Change.ANY_REVISION && n != null && n.revision != r.expectedRevision()) {
-                        throw new StaleRevisionException(name, r.expectedRevision(), n.revision);
-                    }
-                    b.staged.put(name, r.frame());
                 }
-                case Change.Put p -> b.staged.put(name, p.frame());
+                case Change.Put p -> b.stage(name, p.frame());
                 case Change.Remove rm -> {
                     if (!exists) {
-                        problems.add(Problem.of(name, "There is no frame named '" + name + "' to remove."));
+                        problem = "There is no frame named '" + name + "' to remove.";
                     } else {
-                        b.staged.put(name, null);
+                        b.stage(name, null);
                     }
                 }
             }
+            if (problem != null) {
+                if (problems == null) {
+                    problems = new ArrayList<>();
+                }
+                problems.add(Problem.of(name, problem));
+            }
         }
-        if (!problems.isEmpty()) {
+        if (problems != null) {
             throw new BatchRejectedException(problems);
         }
-        b.staged.forEach((name, f) -> {
-            if (f != null && f.parent().isPresent()) {
-                b.stagedChildren.computeIfAbsent(f.parent().get(), k -> new ArrayList<>()).add(name);
-            }
-        });
         return b;
+    }
+
+    private void stage(String name, Frame after) {
+        staged.put(name, after);
+        if (after != null && after.isClass()) {
+            classesUnchanged = false;
+        }
     }
 
     Map<String, Frame> staged() {
         return staged;
     }
 
-    Map<String, List<String>> stagedChildren() {
-        return stagedChildren;
+    /** Whether no frame the batch touches is a class, before or after: the IS-A hierarchy of classes stays as it is. */
+    boolean classesUnchanged() {
+        return classesUnchanged;
     }
 
     /** What the batch does, frame by frame; a put that changes nothing makes no event. */
     List<FrameEvent> events(Map<String, Node> nodes) {
         List<FrameEvent> events = new ArrayList<>(staged.size());
-        staged.forEach((name, after) -> {
-            Node n = nodes.get(name);
+        for (Map.Entry<String, Frame> e : staged.entrySet()) {
+            Frame after = e.getValue();
+            Node n = nodes.get(e.getKey());
             Frame before = n == null ? null : n.frame;
             if (before == null && after != null) {
                 events.add(new FrameEvent.Added(after));
@@ -87,7 +101,7 @@ final class Batch {
             } else if (before != null && !before.equals(after)) {
                 events.add(new FrameEvent.Replaced(before, after));
             }
-        });
+        }
         return events;
     }
 }

@@ -28,12 +28,17 @@ public final class Frame {
         this.name = b.name;
         this.kind = b.kind;
         this.parent = b.parent;
-        this.parts = List.copyOf(b.parts);
-        this.linksTo = List.copyOf(b.linksTo);
-        this.linksFrom = List.copyOf(b.linksFrom);
-        this.slots = List.copyOf(b.slots);
+        this.parts = copy(b.parts);
+        this.linksTo = copy(b.linksTo);
+        this.linksFrom = copy(b.linksFrom);
+        this.slots = copy(b.slots);
         this.provenance = b.provenance;
         this.priority = b.priority;
+    }
+
+    /** An immutable copy; most frames have no parts or links, so a builder leaves those lists null until used. */
+    private static <T> List<T> copy(List<T> items) {
+        return items == null || items.isEmpty() ? List.of() : List.copyOf(items);
     }
 
     /** Starts a class frame. */
@@ -75,6 +80,11 @@ public final class Frame {
         return Optional.ofNullable(parent);
     }
 
+    /** The parent's name or null: {@link #parent()} without an Optional, for the knowledge base's hot paths. */
+    String parentOrNull() {
+        return parent;
+    }
+
     /** The has-part item: frames this frame is made of. */
     public List<String> parts() {
         return parts;
@@ -97,12 +107,18 @@ public final class Frame {
 
     /** The slot declared on this frame with that name, not looking up the IS-A chain. */
     public Optional<Slot> ownSlot(String slotName) {
-        for (Slot s : slots) {
+        return Optional.ofNullable(ownSlotOrNull(slotName));
+    }
+
+    /** {@link #ownSlot} without an Optional, for the knowledge base's hot paths. */
+    Slot ownSlotOrNull(String slotName) {
+        for (int i = 0, n = slots.size(); i < n; i++) {
+            Slot s = slots.get(i);
             if (s.name().equals(slotName)) {
-                return Optional.of(s);
+                return s;
             }
         }
-        return Optional.empty();
+        return null;
     }
 
     public Provenance provenance() {
@@ -142,10 +158,11 @@ public final class Frame {
         private final String name;
         private FrameKind kind;
         private String parent;
-        private final List<String> parts = new ArrayList<>();
-        private final List<SemanticLink> linksTo = new ArrayList<>();
-        private final List<SemanticLink> linksFrom = new ArrayList<>();
-        private final List<Slot> slots = new ArrayList<>();
+        // Created on first use: building a frame is on the path of every load and every rule firing.
+        private List<String> parts;
+        private List<SemanticLink> linksTo;
+        private List<SemanticLink> linksFrom;
+        private final List<Slot> slots = new ArrayList<>(6);
         private Provenance provenance = Provenance.DECLARED;
         private int priority;
 
@@ -157,9 +174,9 @@ public final class Frame {
         private Builder(Frame f) {
             this(f.name, f.kind);
             parent = f.parent;
-            parts.addAll(f.parts);
-            linksTo.addAll(f.linksTo);
-            linksFrom.addAll(f.linksFrom);
+            parts = f.parts.isEmpty() ? null : new ArrayList<>(f.parts);
+            linksTo = f.linksTo.isEmpty() ? null : new ArrayList<>(f.linksTo);
+            linksFrom = f.linksFrom.isEmpty() ? null : new ArrayList<>(f.linksFrom);
             slots.addAll(f.slots);
             provenance = f.provenance;
             priority = f.priority;
@@ -181,16 +198,25 @@ public final class Frame {
         }
 
         public Builder part(String frame) {
+            if (parts == null) {
+                parts = new ArrayList<>();
+            }
             parts.add(requireNonNull(frame, "frame"));
             return this;
         }
 
         public Builder linkTo(Relation relation, String frame) {
+            if (linksTo == null) {
+                linksTo = new ArrayList<>();
+            }
             linksTo.add(new SemanticLink(relation, frame));
             return this;
         }
 
         public Builder linkFrom(Relation relation, String frame) {
+            if (linksFrom == null) {
+                linksFrom = new ArrayList<>();
+            }
             linksFrom.add(new SemanticLink(relation, frame));
             return this;
         }
@@ -243,13 +269,29 @@ public final class Frame {
             if (name.equals(parent)) {
                 throw new InvalidFrameException("Frame '" + name + "' cannot be a kind of itself.");
             }
-            Set<String> seen = new HashSet<>();
-            for (Slot s : slots) {
-                if (!seen.add(s.name())) {
-                    throw new InvalidFrameException("Frame '" + name + "' has two slots named '" + s.name() + "'.");
+            checkSlotNamesUnique();
+            return new Frame(this);
+        }
+
+        /** Frames have a handful of slots: comparing pairs beats building a hash set for each frame built. */
+        private void checkSlotNamesUnique() {
+            int n = slots.size();
+            Set<String> seen = n > 16 ? new HashSet<>() : null;
+            for (int i = 0; i < n; i++) {
+                String slotName = slots.get(i).name();
+                boolean twice;
+                if (seen != null) {
+                    twice = !seen.add(slotName);
+                } else {
+                    twice = false;
+                    for (int j = 0; j < i && !twice; j++) {
+                        twice = slots.get(j).name().equals(slotName);
+                    }
+                }
+                if (twice) {
+                    throw new InvalidFrameException("Frame '" + name + "' has two slots named '" + slotName + "'.");
                 }
             }
-            return new Frame(this);
         }
     }
 }

@@ -4,28 +4,39 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
-import java.util.Set;
 
 /** Applies a validated batch's events to the nodes and their derived indexes. Runs under the write lock. */
 final class Indexer {
-    private Indexer() {
+    private final Map<String, Node> nodes;
+    /** Reused for the names each frame mentions. */
+    private final List<String> refs;
+
+    private Indexer(Map<String, Node> nodes, List<String> refs) {
+        this.nodes = nodes;
+        this.refs = refs;
     }
 
-    static void apply(Map<String, Node> nodes, List<FrameEvent> events, long version) {
+    /** @param refs an empty list to reuse */
+    static void apply(Map<String, Node> nodes, List<FrameEvent> events, long version, List<String> refs) {
+        new Indexer(nodes, refs).apply(events, version);
+    }
+
+    private void apply(List<FrameEvent> events, long version) {
         List<Node> attach = new ArrayList<>(events.size());
         List<Node> touched = new ArrayList<>(events.size());
         for (FrameEvent e : events) {
             switch (e) {
                 case FrameEvent.Removed r -> {
                     Node n = nodes.remove(r.name());
-                    dropReferences(nodes, r.frame());
+                    dropReferences(n, r.frame());
                     detach(n);
                 }
                 case FrameEvent.Replaced r -> {
                     Node n = nodes.get(r.name());
-                    Frame before = r.before().orElseThrow();
-                    dropReferences(nodes, before);
-                    if (!Objects.equals(before.parent(), r.frame().parent()) || before.kind() != r.frame().kind()) {
+                    Frame before = r.before_();
+                    dropReferences(n, before);
+                    if (!Objects.equals(before.parentOrNull(), r.frame().parentOrNull())
+                            || before.kind() != r.frame().kind()) {
                         detach(n);
                         attach.add(n);
                     }
@@ -43,7 +54,8 @@ final class Indexer {
             }
         }
         for (Node n : attach) {
-            n.parent = n.frame.parent().map(nodes::get).orElse(null);
+            String p = n.frame.parentOrNull();
+            n.parent = p == null ? null : nodes.get(p);
             if (n.parent != null) {
                 n.parent.children().add(n);
             }
@@ -55,15 +67,20 @@ final class Indexer {
                 }
             } else if (n.instances != null && !n.instances.isEmpty()) {
                 for (Node a = n.parent; a != null; a = a.parent) {
-                    a.instances().addAll(n.instances);
+                    NodeSet above = a.instances();
+                    for (Node i : n.instances) {
+                        above.add(i);
+                    }
                 }
             }
         }
         for (Node n : touched) {
-            for (String r : References.of(n.frame)) {
-                Node target = nodes.get(r);
-                if (target != null) {
-                    target.referrers().add(n.name());
+            refs.clear();
+            References.collect(n.frame, refs);
+            for (int i = 0, count = refs.size(); i < count; i++) {
+                Node target = nodes.get(refs.get(i));
+                if (target != null && target != n) {
+                    target.referrers().add(n);
                 }
             }
         }
@@ -75,22 +92,26 @@ final class Indexer {
             return;
         }
         n.parent.children.remove(n);
-        Set<Node> below = n.frame.isInstance() ? Set.of(n) : n.instances;
-        if (below != null && !below.isEmpty()) {
-            for (Node a = n.parent; a != null; a = a.parent) {
-                if (a.instances != null) {
-                    a.instances.removeAll(below);
-                }
+        for (Node a = n.parent; a != null; a = a.parent) {
+            if (a.instances == null) {
+                continue;
+            }
+            if (n.frame.isInstance()) {
+                a.instances.remove(n);
+            } else if (n.instances != null) {
+                a.instances.removeAll(n.instances);
             }
         }
         n.parent = null;
     }
 
-    private static void dropReferences(Map<String, Node> nodes, Frame before) {
-        for (String r : References.of(before)) {
-            Node target = nodes.get(r);
+    private void dropReferences(Node n, Frame before) {
+        refs.clear();
+        References.collect(before, refs);
+        for (int i = 0, count = refs.size(); i < count; i++) {
+            Node target = nodes.get(refs.get(i));
             if (target != null && target.referrers != null) {
-                target.referrers.remove(before.name());
+                target.referrers.remove(n);
             }
         }
     }

@@ -26,7 +26,7 @@ final class Inheritance {
         Frame f = frame;
         while (f != null && chain.size() < MAX_DEPTH) {
             chain.add(f);
-            f = f.parent().map(lookup).orElse(null);
+            f = parentOf(lookup, f);
         }
         return chain;
     }
@@ -44,14 +44,19 @@ final class Inheritance {
     static Optional<Value> value(Function<String, Frame> lookup, Frame frame, String slotName) {
         Frame f = frame;
         for (int depth = 0; f != null && depth < MAX_DEPTH; depth++) {
-            Optional<Slot> own = f.ownSlot(slotName);
-            if (own.isPresent()) {
-                Optional<Value> v = own.get().effectiveValue();
-                return v.isPresent() ? v : slot(lookup, frame, slotName).flatMap(e -> e.slot().effectiveValue());
+            Slot own = f.ownSlotOrNull(slotName);
+            if (own != null) {
+                Value v = own.valueOrNull() != null ? own.valueOrNull() : own.defaultOrNull();
+                return v != null ? Optional.of(v) : slot(lookup, frame, slotName).flatMap(e -> e.slot().effectiveValue());
             }
-            f = f.parent().map(lookup).orElse(null);
+            f = parentOf(lookup, f);
         }
         return Optional.empty();
+    }
+
+    private static Frame parentOf(Function<String, Frame> lookup, Frame f) {
+        String p = f.parentOrNull();
+        return p == null ? null : lookup.apply(p);
     }
 
     static List<EffectiveSlot> slots(Function<String, Frame> lookup, Frame frame) {
@@ -75,11 +80,10 @@ final class Inheritance {
         boolean needArgument = true, needRole = true, needFrom = true, needRelated = true, needList = true;
         boolean needCondition = true, needValue = true, needNeeded = true, needAdded = true, needRemoved = true;
         for (Frame f : chain) {
-            Optional<Slot> own = f.ownSlot(slotName);
-            if (own.isEmpty()) {
+            Slot s = f.ownSlotOrNull(slotName);
+            if (s == null) {
                 continue;
             }
-            Slot s = own.get();
             if (lowest == null) {
                 lowest = s;
                 declaredBy = f.name();

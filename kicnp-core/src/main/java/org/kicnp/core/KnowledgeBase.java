@@ -3,6 +3,7 @@ package org.kicnp.core;
 import static java.util.Objects.requireNonNull;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -12,6 +13,9 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.concurrent.locks.ReentrantReadWriteLock;
 import java.util.function.Consumer;
+import java.util.function.Function;
+import java.util.function.LongConsumer;
+import java.util.function.Supplier;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -29,6 +33,14 @@ public final class KnowledgeBase {
 
     private final ReentrantReadWriteLock lock = new ReentrantReadWriteLock();
     private final Map<String, Node> nodes = new LinkedHashMap<>();
+    /**
+     * What validation has learnt of the classes (acyclic IS-A chains, inherited slot declarations), kept between
+     * batches that change no class and dropped by any batch that does: adding an instance then costs a look-up.
+     */
+    private final Map<String, ClassInfo> classes = new HashMap<>();
+    private final Function<String, Frame> lookup = this::frameOrNull;
+    /** Scratch list for validation and indexing, used under the write lock. */
+    private final List<String> refs = new ArrayList<>();
     private final CommitLog commitLog;
     private final List<KnowledgeListener> listeners = new CopyOnWriteArrayList<>();
     private final ConcurrentLinkedQueue<ChangeSet> undelivered = new ConcurrentLinkedQueue<>();
@@ -83,7 +95,14 @@ public final class KnowledgeBase {
     public List<Frame> children(String name) {
         return read(() -> {
             Node n = node(name);
-            return n.children == null ? List.of() : n.children.stream().map(c -> c.frame).toList();
+            if (n.children == null) {
+                return List.of();
+            }
+            List<Frame> out = new ArrayList<>(n.children.size());
+            for (Node c : n.children) {
+                out.add(c.frame);
+            }
+            return out;
         });
     }
 
@@ -151,17 +170,17 @@ public final class KnowledgeBase {
 
     /** The slot as the frame sees it, looked up on the frame and then up the IS-A chain. */
     public Optional<EffectiveSlot> slot(String frame, String slotName) {
-        return read(() -> Inheritance.slot(this::frameOrNull, node(frame).frame, slotName));
+        return read(() -> Inheritance.slot(lookup, node(frame).frame, slotName));
     }
 
     /** Every slot the frame has, inherited ones included, topmost declarations first. */
     public List<EffectiveSlot> slots(String frame) {
-        return read(() -> Inheritance.slots(this::frameOrNull, node(frame).frame));
+        return read(() -> Inheritance.slots(lookup, node(frame).frame));
     }
 
     /** The slot's value after inheritance: the nearest value or default. */
     public Optional<Value> value(String frame, String slotName) {
-        return read(() -> Inheritance.value(this::frameOrNull, node(frame).frame, slotName));
+        return read(() -> Inheritance.value(lookup, node(frame).frame, slotName));
     }
 
     /** Semantic links into the frame: those it declares "from" and those other frames declare "to" it. */
@@ -181,10 +200,10 @@ public final class KnowledgeBase {
             Node n = node(name);
             List<SemanticLink> out = new ArrayList<>(own.apply(n.frame));
             if (n.referrers != null) {
-                for (String r : n.referrers) {
-                    for (SemanticLink l : mirrored.apply(nodes.get(r).frame)) {
+                for (Node r : n.referrers) {
+                    for (SemanticLink l : mirrored.apply(r.frame)) {
                         if (l.frame().equals(name)) {
-                            out.add(new SemanticLink(l.relation(), r));
+                            out.add(new SemanticLink(l.relation(), r.name()));
                         }
                     }
                 }
@@ -254,6 +273,48 @@ public final class KnowledgeBase {
         return committed;
     }
 
+    /**
+     * Starts a batch of adds given in parts, as a loader reads them, and checked part by part while the caller goes on
+     * reading: see {@link StagedBatch}. Its {@link StagedBatch#commit()} is equivalent to {@link #apply} of all the adds.
+     */
+    public StagedBatch stagedBatch() {
+        return new StagedBatch(this);
+    }
+
+    /** Runs {@code part} of a staged batch under the read lock, with the version it sees. */
+    void readStaged(LongConsumer part) {
+        lock.readLock().lock();
+        try {
+            part.accept(version);
+        } finally {
+            lock.readLock().unlock();
+        }
+    }
+
+    Map<String, Node> nodes() {
+        return nodes;
+    }
+
+    /**
+     * Commits a staged batch: if the knowledge base is still at {@code stagedAt}, {@code finish} completes the
+     * checks and answers the events, and {@code prepared} (if not null) holds their nodes; otherwise (another batch
+     * came in between) the adds are applied as any batch.
+     */
+    ChangeSet commitStaged(long stagedAt, Supplier<List<FrameEvent>> finish, PreparedNodes prepared,
+            boolean classesUnchanged, Supplier<List<Change>> adds) {
+        ChangeSet committed;
+        lock.writeLock().lock();
+        try {
+            committed = version == stagedAt ? publish(finish.get(), classesUnchanged, prepared) : commit(adds.get());
+        } finally {
+            lock.writeLock().unlock();
+        }
+        if (!committed.isEmpty()) {
+            deliver();
+        }
+        return committed;
+    }
+
     public void addListener(KnowledgeListener listener) {
         listeners.add(requireNonNull(listener, "listener"));
     }
@@ -264,15 +325,25 @@ public final class KnowledgeBase {
 
     private ChangeSet commit(List<? extends Change> changes) {
         Batch batch = Batch.stage(changes, nodes);
-        List<Problem> problems = new Validator(batch.staged(), nodes).validate(batch.stagedChildren());
+        boolean classesUnchanged = batch.classesUnchanged();
+        Map<String, ClassInfo> known = classesUnchanged ? classes : HashMap.newHashMap(batch.staged().size());
+        List<Problem> problems = new Validator(batch.staged(), nodes, known, refs).validate();
         if (!problems.isEmpty()) {
             throw new BatchRejectedException(problems);
         }
-        List<FrameEvent> events = batch.events(nodes);
+        return publish(batch.events(nodes), classesUnchanged, null);
+    }
+
+    /**
+     * Makes a validated batch's events durable, applies them and queues them for the listeners.
+     *
+     * @param prepared the batch's nodes, built while it was staged, or null to index the events here
+     */
+    private ChangeSet publish(List<FrameEvent> events, boolean classesUnchanged, PreparedNodes prepared) {
         if (events.isEmpty()) {
             return new ChangeSet(version, events);
         }
-        List<FrameEvent> durable = events.stream().filter(KnowledgeBase::isDurable).toList();
+        List<FrameEvent> durable = durable(events);
         if (!durable.isEmpty()) {
             try {
                 commitLog.append(version + 1, durable);
@@ -282,14 +353,34 @@ public final class KnowledgeBase {
             }
         }
         version++;
-        Indexer.apply(nodes, events, version);
+        if (!classesUnchanged) {
+            classes.clear();
+        }
+        if (prepared != null) {
+            prepared.attach(nodes, version);
+        } else {
+            Indexer.apply(nodes, events, version, refs);
+        }
         ChangeSet cs = new ChangeSet(version, events);
         undelivered.add(cs);
         return cs;
     }
 
-    private static boolean isDurable(FrameEvent e) {
-        return e.frame().provenance().durable() || e.before().map(b -> b.provenance().durable()).orElse(false);
+    /** The events the commit log must keep: those of frames kept on disk before or after the change. */
+    private static List<FrameEvent> durable(List<FrameEvent> events) {
+        List<FrameEvent> out = null;
+        for (int i = 0, n = events.size(); i < n; i++) {
+            FrameEvent e = events.get(i);
+            boolean durable = e.frame().provenance().durable()
+                    || e instanceof FrameEvent.Replaced r && r.before_().provenance().durable();
+            if (durable) {
+                if (out == null) {
+                    out = new ArrayList<>(n - i);
+                }
+                out.add(e);
+            }
+        }
+        return out == null ? List.of() : out;
     }
 
     /** Delivers committed batches in order; a change made by a listener is delivered by the outer loop. */
@@ -327,7 +418,7 @@ public final class KnowledgeBase {
         return n == null ? null : n.frame;
     }
 
-    private <T> T read(java.util.function.Supplier<T> body) {
+    private <T> T read(Supplier<T> body) {
         lock.readLock().lock();
         try {
             return body.get();

@@ -1,48 +1,48 @@
 package org.kicnp.core;
 
-import java.util.LinkedHashSet;
-import java.util.Set;
-
 /**
  * The knowledge base's bookkeeping for one frame: the frame itself, its revision, and the derived indexes
- * (children, every instance below a class, the frames that refer to it). Mutated only under the write lock.
+ * (children, every instance below a class, the frames that refer to it). Mutated only under the write lock. A
+ * replace keeps the node, so the name (and its hash) never changes.
  */
 final class Node {
+    final int hash;
     Frame frame;
     long revision;
     Node parent;
     /** Direct children: subclasses and instances whose A-kind-of is this frame. Derived; never stored. */
-    Set<Node> children;
+    NodeSet children;
     /** For a class: every instance of it or of any descendant class, in insertion order. */
-    Set<Node> instances;
-    /** Names of frames whose slots, parts or links mention this frame (A-kind-of is tracked by children). */
-    Set<String> referrers;
+    NodeSet instances;
+    /** Frames whose slots, parts or links mention this frame (A-kind-of is tracked by children). */
+    NodeSet referrers;
 
     Node(Frame frame) {
         this.frame = frame;
+        this.hash = frame.name().hashCode();
     }
 
     String name() {
         return frame.name();
     }
 
-    Set<Node> children() {
+    NodeSet children() {
         if (children == null) {
-            children = new LinkedHashSet<>(4);
+            children = new NodeSet(4);
         }
         return children;
     }
 
-    Set<Node> instances() {
+    NodeSet instances() {
         if (instances == null) {
-            instances = new LinkedHashSet<>(4);
+            instances = new NodeSet(4);
         }
         return instances;
     }
 
-    Set<String> referrers() {
+    NodeSet referrers() {
         if (referrers == null) {
-            referrers = new LinkedHashSet<>(2);
+            referrers = new NodeSet(2);
         }
         return referrers;
     }

@@ -1,6 +1,8 @@
 package org.kicnp.core;
 
+import java.util.ArrayList;
 import java.util.LinkedHashSet;
+import java.util.List;
 import java.util.Set;
 
 /** The names of the frames a frame mentions, other than its parent: slot arguments and values, parts, links. */
@@ -8,26 +10,48 @@ final class References {
     private References() {
     }
 
+    /** Each name the frame mentions once, in order, its own name left out. */
     static Set<String> of(Frame f) {
         if (!mentionsAny(f)) {
             return Set.of();
         }
-        Set<String> out = new LinkedHashSet<>();
-        for (Slot s : f.slots()) {
-            if (s.type() == DataType.INSTANCE || s.type() == DataType.FRAME
-                    || s.type() == DataType.LIST && s.argument().filter(References::isClassArgument).isPresent()) {
-                s.argument().ifPresent(out::add);
+        List<String> all = new ArrayList<>();
+        collect(f, all);
+        Set<String> out = new LinkedHashSet<>(all);
+        out.remove(f.name());
+        return out;
+    }
+
+    /**
+     * Adds the names the frame mentions to {@code out}, in order, possibly more than once and possibly its own name:
+     * the allocation-free form for callers that keep sets anyway (the indexes) or check each name (validation).
+     */
+    static void collect(Frame f, List<String> out) {
+        if (!mentionsAny(f)) {
+            return;
+        }
+        List<Slot> slots = f.slots();
+        for (int i = 0, n = slots.size(); i < n; i++) {
+            Slot s = slots.get(i);
+            String argument = s.argumentOrNull();
+            if (argument != null && (s.type() == DataType.INSTANCE || s.type() == DataType.FRAME
+                    || s.type() == DataType.LIST && isClassArgument(argument))) {
+                out.add(argument);
             }
-            s.value().ifPresent(v -> addRefs(v, out));
-            s.defaultValue().ifPresent(v -> addRefs(v, out));
-            s.frameRelated().ifPresent(out::add);
+            addRefs(s.valueOrNull(), out);
+            addRefs(s.defaultOrNull(), out);
+            if (s.frameRelatedOrNull() != null) {
+                out.add(s.frameRelatedOrNull());
+            }
             out.addAll(s.frameListRelated());
         }
         out.addAll(f.parts());
-        f.linksTo().forEach(l -> out.add(l.frame()));
-        f.linksFrom().forEach(l -> out.add(l.frame()));
-        out.remove(f.name());
-        return out;
+        for (SemanticLink l : f.linksTo()) {
+            out.add(l.frame());
+        }
+        for (SemanticLink l : f.linksFrom()) {
+            out.add(l.frame());
+        }
     }
 
     /** Whether the frame may mention another frame at all; most frames of a large knowledge base do not. */
@@ -35,10 +59,11 @@ final class References {
         if (!f.parts().isEmpty() || !f.linksTo().isEmpty() || !f.linksFrom().isEmpty()) {
             return true;
         }
-        for (Slot s : f.slots()) {
-            if (s.argument().isPresent() || s.frameRelated().isPresent() || !s.frameListRelated().isEmpty()
-                    || s.value().filter(References::mayRefer).isPresent()
-                    || s.defaultValue().filter(References::mayRefer).isPresent()) {
+        List<Slot> slots = f.slots();
+        for (int i = 0, n = slots.size(); i < n; i++) {
+            Slot s = slots.get(i);
+            if (s.argumentOrNull() != null || s.frameRelatedOrNull() != null || !s.frameListRelated().isEmpty()
+                    || mayRefer(s.valueOrNull()) || mayRefer(s.defaultOrNull())) {
                 return true;
             }
         }
@@ -54,11 +79,15 @@ final class References {
         return DataType.parse(argument).isEmpty();
     }
 
-    private static void addRefs(Value v, Set<String> out) {
+    private static void addRefs(Value v, List<String> out) {
         switch (v) {
             case Value.Ref r -> out.add(r.frame());
-            case Value.Lst l -> l.items().forEach(i -> addRefs(i, out));
-            default -> { }
+            case Value.Lst l -> {
+                for (Value i : l.items()) {
+                    addRefs(i, out);
+                }
+            }
+            case null, default -> { }
         }
     }
 }

@@ -123,6 +123,25 @@ public final class Slot {
         return (flags & REACTIVE) != 0;
     }
 
+    // Null-returning twins of the accessors above, for the knowledge base's hot paths (validation, indexing,
+    // inheritance), where an Optional per call is measurable garbage.
+
+    Value valueOrNull() {
+        return value;
+    }
+
+    Value defaultOrNull() {
+        return defaultValue;
+    }
+
+    String argumentOrNull() {
+        return argument;
+    }
+
+    String frameRelatedOrNull() {
+        return frameRelated;
+    }
+
     public Optional<String> onNeeded() {
         return Optional.ofNullable(demons == null ? null : demons.onNeeded);
     }

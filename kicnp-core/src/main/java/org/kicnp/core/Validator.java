@@ -5,96 +5,193 @@ import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
 import java.util.Set;
-import java.util.function.Function;
 
 /**
  * Checks a staged batch against the knowledge base as it would be after the batch ({@code view}), collecting every
  * problem rather than stopping at the first. Reads only; the knowledge base applies the batch if nothing is found.
+ *
+ * <p>Runs for every change, from a load of a hundred thousand frames to one instance per rule firing, so the common
+ * path allocates little: IS-A chains and inherited slot declarations come from {@link ClassInfo}s (per batch, or the
+ * knowledge base's own between batches that change no class), and messages are only built for problems found.
  */
 final class Validator {
-    private final Function<String, Frame> view;
+    private static final int CYCLE_CHECK_STEPS = 10_000;
+
     private final Map<String, Frame> staged;
     private final Map<String, Node> base;
-    private final List<Problem> problems = new ArrayList<>();
-    /** Per class name: the slot declarations it inherits and makes (see {@link #declarations}). */
-    private final Map<String, Map<String, Declaration>> declared = new HashMap<>();
-    /** Frames whose IS-A chain has been walked to its root without a cycle. */
-    private final Set<String> acyclic = new HashSet<>();
+    /** Frames known to have an acyclic IS-A chain in the view, by name. */
+    private final Map<String, ClassInfo> classes;
+    private final List<Problem> problems = new ArrayList<>(0);
+    /** Staged frames by parent name, for parents that are missing or instances in the view; null until one is. */
+    private Map<String, List<String>> stagedChildren;
+    /** In a load staged in parts: frames whose parent was, when staged, missing or an instance. */
+    private List<Frame> suspects;
+    /** Scratch list for the names a frame mentions, the knowledge base's (used under its write lock). */
+    private final List<String> refs;
 
     /**
      * @param staged touched names to their frame after the batch, or null where the batch removes the frame
      * @param base the knowledge base's nodes before the batch
+     * @param classes what is known of the view's classes: the knowledge base's own when the batch changes no class
+     *     (entries added here stay true), else an empty map for this batch
+     * @param refs an empty list to reuse
      */
-    Validator(Map<String, Frame> staged, Map<String, Node> base) {
+    Validator(Map<String, Frame> staged, Map<String, Node> base, Map<String, ClassInfo> classes, List<String> refs) {
         this.staged = staged;
         this.base = base;
-        this.view = name -> {
-            Frame f = staged.get(name);
-            if (f != null || staged.containsKey(name)) {
-                return f;
+        this.classes = classes;
+        this.refs = refs;
+    }
+
+    /** The frame of that name after the batch, or null where there is none. */
+    private Frame view(String name) {
+        Frame f = staged.get(name);
+        if (f != null || staged.containsKey(name)) {
+            return f;
+        }
+        Node n = base.get(name);
+        return n == null ? null : n.frame;
+    }
+
+    List<Problem> validate() {
+        Frame[] parents = new Frame[staged.size()];
+        int i = 0;
+        for (Map.Entry<String, Frame> e : staged.entrySet()) {
+            Frame f = e.getValue();
+            String p = f == null ? null : f.parentOrNull();
+            if (p != null) {
+                Frame parent = view(p);
+                parents[i] = parent;
+                if (parent == null || parent.isInstance()) {
+                    childOf(p, e.getKey());
+                }
             }
-            Node n = base.get(name);
-            return n == null ? null : n.frame;
-        };
-    }
-
-    Function<String, Frame> view() {
-        return view;
-    }
-
-    List<Problem> validate(Map<String, List<String>> stagedChildren) {
+            i++;
+        }
+        i = 0;
         for (Map.Entry<String, Frame> e : staged.entrySet()) {
             if (e.getValue() == null) {
-                checkRemoval(e.getKey(), stagedChildren);
+                checkRemoval(e.getKey());
             } else {
-                checkFrame(e.getValue(), stagedChildren);
+                checkFrame(e.getValue(), parents[i]);
             }
+            i++;
         }
         return problems;
     }
 
-    private void checkRemoval(String name, Map<String, List<String>> stagedChildren) {
+    private void checkRemoval(String name) {
         Node node = base.get(name);
-        List<String> kids = childrenInView(name, node, stagedChildren);
+        List<String> kids = childrenInView(name, node);
         if (!kids.isEmpty()) {
-            boolean instances = kids.stream().map(view).allMatch(Frame::isInstance);
+            boolean instances = kids.stream().map(this::view).allMatch(Frame::isInstance);
             problems.add(Problem.of(name, "Frame '" + name + "' cannot be removed: it still has "
                     + (instances ? "instances " : "subclasses or instances ") + quoteList(kids) + "."));
         }
         if (node != null && node.referrers != null) {
-            for (String r : node.referrers) {
-                if (!staged.containsKey(r)) {
-                    problems.add(Problem.of(name, "Frame '" + name + "' cannot be removed: frame '" + r
+            for (Node r : node.referrers) {
+                if (!staged.containsKey(r.name())) {
+                    problems.add(Problem.of(name, "Frame '" + name + "' cannot be removed: frame '" + r.name()
                             + "' refers to it."));
                 }
             }
         }
     }
 
-    private void checkFrame(Frame f, Map<String, List<String>> stagedChildren) {
+    /**
+     * Checks one frame of a load staged in parts (adds only, on an unchanged knowledge base) against the frames staged
+     * so far. True when the frame is settled: it has no problem now and its IS-A chain ends at a root, and then no
+     * later add can give it one, except sub-frames of an instance, which {@link #finish} looks for. Other frames are
+     * checked again by {@link #finish}, once every frame is staged.
+     */
+    boolean settles(Frame f) {
+        int before = problems.size();
+        String p = f.parentOrNull();
+        Frame parent = p == null ? null : view(p);
+        if (p != null && (parent == null || parent.isInstance())) {
+            if (suspects == null) {
+                suspects = new ArrayList<>();
+            }
+            suspects.add(f);
+        }
+        boolean complete = checkFrame(f, parent);
+        boolean clean = problems.size() == before;
+        problems.subList(before, problems.size()).clear();
+        return clean && complete;
+    }
+
+    /**
+     * The problems of a load staged in parts, as {@link #validate} would find them for the whole batch: the frames
+     * that did not settle are checked again in staged order, with every instance that has gained sub-frames.
+     */
+    List<Problem> finish(List<Frame> unsettled) {
+        if (suspects != null) {
+            for (Frame c : suspects) {
+                Frame parent = view(c.parentOrNull());
+                if (parent == null || parent.isInstance()) {
+                    childOf(c.parentOrNull(), c.name());
+                }
+            }
+        }
+        Set<String> recheck = new HashSet<>();
+        for (Frame f : unsettled) {
+            recheck.add(f.name());
+        }
+        if (stagedChildren != null) {
+            for (String p : stagedChildren.keySet()) {
+                Frame f = staged.get(p);
+                if (f != null && f.isInstance()) {
+                    recheck.add(p);
+                }
+            }
+        }
+        if (!recheck.isEmpty()) {
+            for (Map.Entry<String, Frame> e : staged.entrySet()) {
+                if (recheck.contains(e.getKey())) {
+                    Frame f = e.getValue();
+                    checkFrame(f, f.parentOrNull() == null ? null : view(f.parentOrNull()));
+                }
+            }
+        }
+        return problems;
+    }
+
+    private void childOf(String parent, String child) {
+        if (stagedChildren == null) {
+            stagedChildren = new HashMap<>();
+        }
+        stagedChildren.computeIfAbsent(parent, k -> new ArrayList<>()).add(child);
+    }
+
+    /**
+     * @param parent the frame's parent in the view, or null for a root frame or an undefined parent
+     * @return whether the frame's IS-A chain ends at a root (not at a parent that is not defined)
+     */
+    private boolean checkFrame(Frame f, Frame parent) {
         String name = f.name();
-        if (f.parent().isPresent()) {
-            String p = f.parent().get();
-            Frame parent = view.apply(p);
+        String p = f.parentOrNull();
+        ClassInfo above = null;
+        if (p != null) {
             if (parent == null) {
                 problems.add(Problem.of(name, "Frame '" + name + "' is a kind of '" + p + "', which is not defined."));
-                return;
+                return false;
             }
             if (parent.isInstance()) {
                 problems.add(Problem.of(name, "Frame '" + name + "' is a kind of '" + p
                         + "', which is an instance; only classes can have sub-frames."));
-                return;
+                return false;
             }
-            if (hasCycle(f)) {
+            // The frame's chain is the parent's plus the frame itself: it has a cycle exactly when the parent's has.
+            above = info(parent);
+            if (above == null) {
                 problems.add(Problem.of(name, "Frame '" + name + "' is a kind of '" + p
                         + "', which makes an IS-A cycle: " + cycleText(f) + "."));
-                return;
+                return false;
             }
         }
         if (f.isInstance()) {
-            List<String> kids = childrenInView(name, base.get(name), stagedChildren);
+            List<String> kids = childrenInView(name, base.get(name));
             if (!kids.isEmpty()) {
                 problems.add(Problem.of(name, "Frame '" + name + "' cannot be an instance: it has sub-frames "
                         + quoteList(kids) + "."));
@@ -109,23 +206,33 @@ final class Validator {
         for (SemanticLink l : f.linksFrom()) {
             requireFrame(name, l.frame(), "has a " + l.relation().name().toLowerCase() + " link from");
         }
-        Map<String, Declaration> inheritedSlots = f.parent().isPresent() && !f.slots().isEmpty()
-                ? declarations(f.parent().get()) : Map.of();
-        for (Slot s : f.slots()) {
-            checkSlot(f, s, inheritedSlots);
+        List<Slot> slots = f.slots();
+        if (!slots.isEmpty()) {
+            Declarations inherited = above == null ? Declarations.NONE : above.declarations();
+            for (int i = 0, n = slots.size(); i < n; i++) {
+                checkSlot(f, slots.get(i), inherited);
+            }
         }
         if (f.provenance().durable()) {
-            checkNoRuntimeReferences(f);
+            checkNoRuntimeReferences(f, parent);
         }
+        return above == null || above.complete;
     }
 
     /** A durable frame must reload on its own after a restart, when runtime frames are gone. */
-    private void checkNoRuntimeReferences(Frame f) {
-        f.parent().map(view).filter(p -> p.provenance() == Provenance.RUNTIME).ifPresent(p ->
-                problems.add(Problem.of(f.name(), "Frame '" + f.name() + "' is kept on disk but is a kind of '"
-                        + p.name() + "', which exists only at run time.")));
-        for (String r : References.of(f)) {
-            Frame target = view.apply(r);
+    private void checkNoRuntimeReferences(Frame f, Frame parent) {
+        if (parent != null && parent.provenance() == Provenance.RUNTIME) {
+            problems.add(Problem.of(f.name(), "Frame '" + f.name() + "' is kept on disk but is a kind of '"
+                    + parent.name() + "', which exists only at run time."));
+        }
+        refs.clear();
+        References.collect(f, refs);
+        for (int i = 0; i < refs.size(); i++) {
+            String r = refs.get(i);
+            if (r.equals(f.name()) || refs.subList(0, i).contains(r)) {
+                continue;
+            }
+            Frame target = view(r);
             if (target != null && target.provenance() == Provenance.RUNTIME) {
                 problems.add(Problem.of(f.name(), "Frame '" + f.name() + "' is kept on disk but refers to '" + r
                         + "', which exists only at run time; copy the values it needs instead."));
@@ -133,44 +240,59 @@ final class Validator {
         }
     }
 
-    private void checkSlot(Frame f, Slot own, Map<String, Declaration> inheritedSlots) {
+    private void checkSlot(Frame f, Slot own, Declarations inheritedSlots) {
         String name = f.name();
-        SlotRef where = new SlotRef(own.name(), name);
-        Declaration inherited = inheritedSlots.get(own.name());
-        Frame declaring = inherited == null ? null : inherited.declaredBy();
-        Slot above = inherited == null ? null : inherited.slot();
-        String inheritedArgument = inherited == null ? null : inherited.argument();
-        if (above != null && above.type() != own.type()) {
-            problems.add(Problem.of(name, own.name(), where + " is " + own.type().xmlName() + " but '"
-                    + declaring.name() + "' declares it " + above.type().xmlName() + "."));
+        String slot = own.name();
+        Declarations.Declaration inherited = inheritedSlots.find(slot);
+        if (inherited != null && inherited.slot().type() != own.type()) {
+            problems.add(Problem.of(name, slot, where(slot, name) + " is " + own.type().xmlName() + " but '"
+                    + inherited.declaredBy().name() + "' declares it " + inherited.slot().type().xmlName() + "."));
             return;
         }
-        Optional<String> argument = own.argument().isPresent() ? own.argument() : Optional.ofNullable(inheritedArgument);
+        String argument = own.argumentOrNull() != null ? own.argumentOrNull()
+                : inherited == null ? null : inherited.argument();
+        String instanceOf = null;
         switch (own.type()) {
             case INSTANCE -> {
-                if (argument.isEmpty()) {
-                    problems.add(Problem.of(name, own.name(), where
+                if (argument == null) {
+                    problems.add(Problem.of(name, slot, where(slot, name)
                             + " holds an instance but has no ARGUMENT naming the class it must hold."));
                     return;
                 }
-                requireClass(name, own.name(), where, argument.get());
+                requireClass(name, slot, argument);
+                instanceOf = argument;
             }
-            case FRAME -> argument.ifPresent(a -> requireClass(name, own.name(), where, a));
-            case LIST -> argument.filter(References::isClassArgument)
-                    .ifPresent(a -> requireClass(name, own.name(), where, a));
+            case FRAME -> {
+                if (argument != null) {
+                    requireClass(name, slot, argument);
+                }
+            }
+            case LIST -> {
+                if (argument != null && References.isClassArgument(argument)) {
+                    requireClass(name, slot, argument);
+                    instanceOf = argument;
+                }
+            }
             default -> { }
         }
-        Optional<String> instanceOf = own.type() == DataType.INSTANCE ? argument
-                : own.type() == DataType.LIST ? argument.filter(References::isClassArgument) : Optional.empty();
-        own.value().ifPresent(v -> checkRefs(name, own.name(), where, v, instanceOf));
-        own.defaultValue().ifPresent(v -> checkRefs(name, own.name(), where, v, instanceOf));
-        own.frameRelated().ifPresent(r -> requireFrame(name, r, "names as frame-related in slot '" + own.name() + "'"));
-        own.frameListRelated().forEach(r -> requireFrame(name, r,
-                "names as frame-list-related in slot '" + own.name() + "'"));
-        checkPaths(f, own, where);
+        if (own.valueOrNull() != null) {
+            checkRefs(name, slot, own.valueOrNull(), instanceOf);
+        }
+        if (own.defaultOrNull() != null) {
+            checkRefs(name, slot, own.defaultOrNull(), instanceOf);
+        }
+        if (own.frameRelatedOrNull() != null) {
+            requireFrame(name, own.frameRelatedOrNull(), "names as frame-related in slot '" + slot + "'");
+        }
+        for (String r : own.frameListRelated()) {
+            requireFrame(name, r, "names as frame-list-related in slot '" + slot + "'");
+        }
+        if (!(own.condition() instanceof Condition.Any)) {
+            checkPaths(f, own);
+        }
     }
 
-    private void checkPaths(Frame f, Slot own, SlotRef where) {
+    private void checkPaths(Frame f, Slot own) {
         List<Operand> operands = switch (own.condition()) {
             case Condition.Compare c -> List.of(c.right());
             case Condition.Between b -> List.of(b.low(), b.high());
@@ -178,33 +300,53 @@ final class Validator {
             default -> List.of();
         };
         for (Operand o : operands) {
-            if (o instanceof Operand.Path p && Inheritance.slot(view, f, p.head()).isEmpty()) {
-                problems.add(Problem.of(f.name(), own.name(), where + " has a condition on '" + p.text()
-                        + "', but frame '" + f.name() + "' has no slot '" + p.head() + "'."));
+            if (o instanceof Operand.Path p && Inheritance.slot(this::view, f, p.head()).isEmpty()) {
+                problems.add(Problem.of(f.name(), own.name(), where(own.name(), f.name()) + " has a condition on '"
+                        + p.text() + "', but frame '" + f.name() + "' has no slot '" + p.head() + "'."));
             }
         }
     }
 
-    private void checkRefs(String frame, String slot, SlotRef where, Value v, Optional<String> instanceOf) {
+    /** @param instanceOf the class a referred frame must be an instance of, or null */
+    private void checkRefs(String frame, String slot, Value v, String instanceOf) {
         switch (v) {
             case Value.Ref r -> {
-                Frame target = view.apply(r.frame());
+                Frame target = view(r.frame());
                 if (target == null) {
-                    problems.add(Problem.of(frame, slot, where + " refers to '" + r.frame()
+                    problems.add(Problem.of(frame, slot, where(slot, frame) + " refers to '" + r.frame()
                             + "', which is not defined."));
-                } else if (instanceOf.isPresent() && !isA(target, instanceOf.get())) {
-                    problems.add(Problem.of(frame, slot, where + " must hold an instance of '" + instanceOf.get()
-                            + "', but '" + r.frame() + "' is not one."));
+                } else if (instanceOf != null && !isA(target, instanceOf)) {
+                    problems.add(Problem.of(frame, slot, where(slot, frame) + " must hold an instance of '"
+                            + instanceOf + "', but '" + r.frame() + "' is not one."));
                 }
             }
-            case Value.Lst l -> l.items().forEach(i -> checkRefs(frame, slot, where, i, instanceOf));
+            case Value.Lst l -> {
+                for (Value i : l.items()) {
+                    checkRefs(frame, slot, i, instanceOf);
+                }
+            }
             default -> { }
         }
     }
 
     private boolean isA(Frame f, String ancestor) {
+        if (f.name().equals(ancestor)) {
+            return true;
+        }
+        String p = f.parentOrNull();
+        Frame parent = p == null ? null : view(p);
+        if (parent == null) {
+            return false;
+        }
+        if (parent.isClass()) {
+            ClassInfo c = info(parent);
+            if (c != null) {
+                return c.isA(ancestor);
+            }
+        }
+        // A parent that is an instance or a chain with a cycle: reported elsewhere; walk, bounded.
         int steps = 0;
-        for (Frame x = f; x != null && steps++ < 100_000; x = parentOf(x)) {
+        for (Frame x = parent; x != null && steps++ < 100_000; x = parentOf(x)) {
             if (x.name().equals(ancestor)) {
                 return true;
             }
@@ -212,99 +354,90 @@ final class Validator {
         return false;
     }
 
-    private void requireClass(String frame, String slot, SlotRef where, String cls) {
-        Frame c = view.apply(cls);
+    private void requireClass(String frame, String slot, String cls) {
+        Frame c = view(cls);
         if (c == null) {
-            problems.add(Problem.of(frame, slot, where + " names class '" + cls + "' as its ARGUMENT, which is not defined."));
+            problems.add(Problem.of(frame, slot, where(slot, frame) + " names class '" + cls
+                    + "' as its ARGUMENT, which is not defined."));
         } else if (!c.isClass()) {
-            problems.add(Problem.of(frame, slot, where + " names '" + cls + "' as its ARGUMENT, which is an instance, not a class."));
+            problems.add(Problem.of(frame, slot, where(slot, frame) + " names '" + cls
+                    + "' as its ARGUMENT, which is an instance, not a class."));
         }
     }
 
     private void requireFrame(String frame, String target, String relation) {
-        if (view.apply(target) == null) {
+        if (view(target) == null) {
             problems.add(Problem.of(frame, "Frame '" + frame + "' " + relation + " '" + target
                     + "', which is not defined."));
         }
     }
 
-    private boolean hasCycle(Frame f) {
-        // Real hierarchies are shallow: walk without allocating, and only track names on a suspiciously long chain.
-        // A chain that reaches a frame already walked without a cycle has none either.
-        int steps = 0;
-        for (Frame x = f; x != null; x = parentOf(x)) {
-            if (acyclic.contains(x.name())) {
+    /**
+     * What is known of frame {@code x}'s IS-A chain, or null when the chain has a cycle. Walks up only to the first
+     * frame already known, so a load walks each chain once, and remembers every frame on the way.
+     */
+    private ClassInfo info(Frame x) {
+        ClassInfo known = classes.get(x.name());
+        if (known != null) {
+            return known;
+        }
+        String p = x.parentOrNull();
+        ClassInfo up = p == null ? null : classes.get(p);
+        if (p == null || up != null) {
+            // The common case in a load: parents come before their children.
+            ClassInfo c = new ClassInfo(x, up);
+            classes.put(x.name(), c);
+            return c;
+        }
+        List<Frame> path = new ArrayList<>(8);
+        int nextCheck = CYCLE_CHECK_STEPS;
+        ClassInfo top = null;
+        for (Frame y = x; y != null; ) {
+            path.add(y);
+            if (path.size() > nextCheck) {
+                if (repeats(path)) {
+                    return null;
+                }
+                nextCheck *= 2;
+            }
+            String yp = y.parentOrNull();
+            if (yp == null) {
                 break;
             }
-            if (++steps > 10_000) {
-                Set<String> seen = new HashSet<>();
-                for (Frame y = f; y != null; y = parentOf(y)) {
-                    if (!seen.add(y.name())) {
-                        return true;
-                    }
-                }
-                return false;
+            top = classes.get(yp);
+            if (top != null) {
+                break;
+            }
+            y = view(yp);
+        }
+        for (int i = path.size() - 1; i >= 0; i--) {
+            top = new ClassInfo(path.get(i), top);
+            // A chain that ends at a parent not defined may be completed by a later part of a staged load.
+            if (top.complete) {
+                classes.put(path.get(i).name(), top);
             }
         }
-        acyclic.add(f.name());
+        return top;
+    }
+
+    private static boolean repeats(List<Frame> path) {
+        Set<String> seen = new HashSet<>();
+        for (Frame f : path) {
+            if (!seen.add(f.name())) {
+                return true;
+            }
+        }
         return false;
     }
 
     private Frame parentOf(Frame f) {
-        return f.parent().isPresent() ? view.apply(f.parent().get()) : null;
+        String p = f.parentOrNull();
+        return p == null ? null : view(p);
     }
 
-    /**
-     * The slots declared on class {@code name} or above it, each with the nearest frame declaring it and the nearest
-     * ARGUMENT given for it on the way up. Computed once per class and batch: the frames of a large load share few
-     * parents, so this replaces a walk up the IS-A chain per slot with one lookup. The chain is known to be acyclic,
-     * because a frame with a cycle above it is reported before its slots are checked.
-     */
-    private Map<String, Declaration> declarations(String name) {
-        Map<String, Declaration> known = declared.get(name);
-        if (known != null) {
-            return known;
-        }
-        List<Frame> chain = new ArrayList<>();
-        Map<String, Declaration> above = Map.of();
-        for (Frame x = view.apply(name); x != null; x = parentOf(x)) {
-            Map<String, Declaration> memo = declared.get(x.name());
-            if (memo != null) {
-                above = memo;
-                break;
-            }
-            chain.add(x);
-        }
-        for (int i = chain.size() - 1; i >= 0; i--) {
-            Frame x = chain.get(i);
-            Map<String, Declaration> here;
-            if (x.slots().isEmpty()) {
-                here = above;
-            } else {
-                here = new HashMap<>(Math.max(16, (above.size() + x.slots().size()) * 2));
-                here.putAll(above);
-                for (Slot s : x.slots()) {
-                    Declaration up = above.get(s.name());
-                    String argument = s.argument().isPresent() ? s.argument().get()
-                            : up == null ? null : up.argument();
-                    here.put(s.name(), new Declaration(s, x, argument));
-                }
-            }
-            declared.put(x.name(), here);
-            above = here;
-        }
-        return above;
-    }
-
-    /** Names a slot in problem messages; the text is only built when a problem is reported. */
-    private record SlotRef(String slot, String frame) {
-        @Override public String toString() {
-            return "Slot '" + slot + "' of frame '" + frame + "'";
-        }
-    }
-
-    /** A slot as declared up the IS-A chain: the nearest declaration, and the nearest ARGUMENT at or above it. */
-    private record Declaration(Slot slot, Frame declaredBy, String argument) {
+    /** Names a slot in problem messages. */
+    private static String where(String slot, String frame) {
+        return "Slot '" + slot + "' of frame '" + frame + "'";
     }
 
     private String cycleText(Frame f) {
@@ -313,7 +446,7 @@ final class Validator {
         Frame x = f;
         while (x != null && seen.add(x.name())) {
             path.add(x.name());
-            x = x.parent().map(view).orElse(null);
+            x = parentOf(x);
         }
         if (x != null) {
             path.add(x.name());
@@ -321,16 +454,21 @@ final class Validator {
         return String.join(" -> ", path);
     }
 
-    private List<String> childrenInView(String name, Node node, Map<String, List<String>> stagedChildren) {
-        List<String> kids = new ArrayList<>();
-        if (node != null && node.children != null) {
+    private List<String> childrenInView(String name, Node node) {
+        List<String> kids = List.of();
+        if (node != null && node.children != null && !node.children.isEmpty()) {
+            kids = new ArrayList<>();
             for (Node c : node.children) {
                 if (!staged.containsKey(c.name())) {
                     kids.add(c.name());
                 }
             }
         }
-        kids.addAll(stagedChildren.getOrDefault(name, List.of()));
+        List<String> more = stagedChildren == null ? null : stagedChildren.get(name);
+        if (more != null) {
+            kids = new ArrayList<>(kids);
+            kids.addAll(more);
+        }
         return kids;
     }
 

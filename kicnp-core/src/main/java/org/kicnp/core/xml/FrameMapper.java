@@ -1,11 +1,9 @@
 package org.kicnp.core.xml;
 
 import java.util.ArrayList;
-import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
-import java.util.Set;
 import org.kicnp.core.Condition;
 import org.kicnp.core.ConditionParser;
 import org.kicnp.core.ConditionSyntaxException;
@@ -78,16 +76,22 @@ final class FrameMapper {
         for (LinkElement l : e.linksFrom()) {
             link(name, l, "SEMANTICLINKFROM").ifPresent(lk -> b.linkFrom(lk.relation(), lk.frame()));
         }
-        Set<String> slotNames = new HashSet<>();
-        for (SlotElement s : e.slots()) {
-            slot(name, e, s).ifPresent(slot -> {
-                if (slotNames.add(slot.name())) {
-                    b.slot(slot);
-                } else {
-                    error(slotAt(s), "Frame '" + name + "' has a second slot named '" + slot.name()
-                            + "'; slot names must be unique within a frame.");
-                }
-            });
+        // Loops and nulls rather than Optionals, lambdas and a set per frame: this runs for every slot of a load.
+        List<SlotElement> slotElements = e.slots();
+        String[] slotNames = new String[slotElements.size()];
+        int named = 0;
+        for (SlotElement s : slotElements) {
+            Slot slot = slot(name, e, s);
+            if (slot == null) {
+                continue;
+            }
+            if (indexOf(slotNames, named, slot.name()) < 0) {
+                slotNames[named++] = slot.name();
+                b.slot(slot);
+            } else {
+                error(slotAt(s), "Frame '" + name + "' has a second slot named '" + slot.name()
+                        + "'; slot names must be unique within a frame.");
+            }
         }
         if (errors.size() > before) {
             return Optional.empty();
@@ -98,6 +102,15 @@ final class FrameMapper {
             error(nameItem.get().at(source), x.getMessage());
             return Optional.empty();
         }
+    }
+
+    private static int indexOf(String[] names, int count, String name) {
+        for (int i = 0; i < count; i++) {
+            if (names[i].equals(name)) {
+                return i;
+            }
+        }
+        return -1;
     }
 
     private Optional<SemanticLink> link(String frame, LinkElement l, String list) {
@@ -115,19 +128,19 @@ final class FrameMapper {
         return Optional.of(new SemanticLink(r, interner.intern(l.target().get().stripped())));
     }
 
-    private Optional<Slot> slot(String frame, FrameElement fe, SlotElement s) {
-        SourceLocation at = slotAt(s);
+    /** The slot, or null after adding what is wrong to the errors. */
+    private Slot slot(String frame, FrameElement fe, SlotElement s) {
         Optional<Located> nameItem = s.present(SlotTag.NAME);
         if (nameItem.isEmpty()) {
-            error(at, "A SLOT of frame '" + frame + "' needs a NAME.");
-            return Optional.empty();
+            error(slotAt(s), "A SLOT of frame '" + frame + "' needs a NAME.");
+            return null;
         }
         String name = interner.intern(nameItem.get().stripped());
         Owner where = new Owner(frame, name);
         int before = errors.size();
         DataType type = type(fe, s, name, where);
         if (type == null) {
-            return Optional.empty();
+            return null;
         }
         // Plain null checks rather than Optional chains: this runs for every slot of a load, and each capturing
         // lambda is an allocation.
@@ -158,10 +171,10 @@ final class FrameMapper {
                 b.defaultValue(v);
             }
         }
-        b.required(flag(s.facets().get(SlotTag.REQUIRED), where, "REQUIRED", false));
-        b.shared(flag(s.facets().get(SlotTag.SHARED), where, "SHARED", true));
-        b.unique(flag(s.facets().get(SlotTag.UNIQUE), where, "UNIQUE", false));
-        b.reactive(flag(s.facets().get(SlotTag.REACTIVE), where, "REACTIVE", true));
+        b.required(flag(s.get(SlotTag.REQUIRED), where, "REQUIRED", false));
+        b.shared(flag(s.get(SlotTag.SHARED), where, "SHARED", true));
+        b.unique(flag(s.get(SlotTag.UNIQUE), where, "UNIQUE", false));
+        b.reactive(flag(s.get(SlotTag.REACTIVE), where, "REACTIVE", true));
         Located l;
         if ((l = given(s, SlotTag.ROLE)) != null) {
             b.role(interner.intern(l.stripped()));
@@ -185,19 +198,19 @@ final class FrameMapper {
             b.onRemoved(l.text());
         }
         if (errors.size() > before) {
-            return Optional.empty();
+            return null;
         }
         try {
-            return Optional.of(b.build());
+            return b.build();
         } catch (InvalidFrameException x) {
-            error(at, x.getMessage());
-            return Optional.empty();
+            error(slotAt(s), x.getMessage());
+            return null;
         }
     }
 
     /** A VALUE or DEFAULT that says something, or null; for a list, {@code []} says "the empty list". */
     private static Located present(SlotElement s, SlotTag tag, DataType type) {
-        Located l = s.facets().get(tag);
+        Located l = s.get(tag);
         if (l == null) {
             return null;
         }
@@ -209,7 +222,7 @@ final class FrameMapper {
 
     /** The facet if it is given and not empty or NULL, else null. */
     private static Located given(SlotElement s, SlotTag tag) {
-        Located l = s.facets().get(tag);
+        Located l = s.get(tag);
         return l == null || l.absent() ? null : l;
     }
 

@@ -154,7 +154,7 @@ final class FrameReader {
 
     private SlotElement slot() throws XMLStreamException {
         Location start = r.getLocation();
-        EnumMap<SlotTag, Located> facets = new EnumMap<>(SlotTag.class);
+        Located[] facets = new Located[SlotTag.COUNT];
         while (nextChild("SLOT")) {
             String tag = r.getLocalName();
             noAttributes();
@@ -162,10 +162,10 @@ final class FrameReader {
             if (t == null) {
                 unknown("SLOT", "NAME, TYPE, CONDITION, ARGUMENT, VALUE, DEFAULT, REQUIRED, SHARED, UNIQUE, ROLE, "
                         + "FROM, FRAMERELATED, FRAMELISTRELATED, ONNEEDED, ONADDED, ONREMOVED or REACTIVE");
-            } else if (facets.containsKey(t)) {
+            } else if (facets[t.ordinal()] != null) {
                 repeated("SLOT", tag);
             } else {
-                facets.put(t, leaf(tag, t.childTags()));
+                facets[t.ordinal()] = leaf(tag, t.childTags());
             }
         }
         return new SlotElement(start.getLineNumber(), start.getColumnNumber(), facets);

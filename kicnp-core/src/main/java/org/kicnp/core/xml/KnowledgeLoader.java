@@ -15,14 +15,15 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.kicnp.core.BatchRejectedException;
-import org.kicnp.core.Change;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Problem;
+import org.kicnp.core.StagedBatch;
 
 /**
  * Reads knowledge files in the paper's XML format (Table 4) and loads them into a {@link KnowledgeBase}. All files of
- * one call are read and mapped together, so a frame may name a parent defined in another file; then they are added
- * in one batch, so a load either adds every frame or changes nothing. Every error is reported with its file, line and
+ * one call are read and mapped together, so a frame may name a parent defined in another file; they are added in one
+ * {@link StagedBatch}, which checks the frames part by part while reading goes on and applies them all at the end, so
+ * a load either adds every frame or changes nothing. Every error is reported with its file, line and
  * column in one {@link KnowledgeXmlException}.
  */
 public final class KnowledgeLoader {
@@ -71,7 +72,7 @@ public final class KnowledgeLoader {
      * @throws KnowledgeXmlException listing every error found
      */
     public static List<SourcedFrame> parse(List<Path> filesOrDirs, KnowledgeBase context) {
-        return sourced(parseFiles(filesOrDirs, context));
+        return sourced(parseFiles(filesOrDirs, context, null));
     }
 
     /**
@@ -84,7 +85,7 @@ public final class KnowledgeLoader {
         requireNonNull(xml, "xml");
         requireNonNull(sourceName, "sourceName");
         requireNonNull(context, "context");
-        LoadSession session = new LoadSession(context, xml.length() > PIPELINE_CHARS);
+        LoadSession session = new LoadSession(context, xml.length() > PIPELINE_CHARS, null);
         try {
             session.readText(xml, sourceName);
             return sourced(session.finish());
@@ -102,20 +103,18 @@ public final class KnowledgeLoader {
      */
     public static List<SourcedFrame> load(KnowledgeBase kb, List<Path> filesOrDirs) {
         requireNonNull(kb, "kb");
-        List<ParsedFrame> parsed = parseFiles(filesOrDirs, kb);
-        List<Change> adds = new ArrayList<>(parsed.size());
-        for (ParsedFrame p : parsed) {
-            adds.add(new Change.Add(p.sourced().frame()));
-        }
+        // Frames go to the batch as they are mapped, so the knowledge base checks them while the files are read.
+        StagedBatch batch = kb.stagedBatch();
+        List<ParsedFrame> parsed = parseFiles(filesOrDirs, kb, batch);
         try {
-            kb.apply(adds);
+            batch.commit();
         } catch (BatchRejectedException e) {
             throw locate(e, parsed);
         }
         return sourced(parsed);
     }
 
-    private static List<ParsedFrame> parseFiles(List<Path> filesOrDirs, KnowledgeBase context) {
+    private static List<ParsedFrame> parseFiles(List<Path> filesOrDirs, KnowledgeBase context, StagedBatch target) {
         requireNonNull(context, "context");
         List<Path> files = expand(filesOrDirs);
         long bytes = 0;
@@ -126,7 +125,7 @@ public final class KnowledgeLoader {
                 // Reported with its location when the file is read.
             }
         }
-        LoadSession session = new LoadSession(context, bytes > PIPELINE_CHARS);
+        LoadSession session = new LoadSession(context, bytes > PIPELINE_CHARS, target);
         try {
             for (Path f : files) {
                 session.readFile(f);

@@ -1,5 +1,6 @@
 package org.kicnp.core.xml;
 
+import java.io.BufferedInputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.StringReader;
@@ -22,6 +23,7 @@ import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Slot;
+import org.kicnp.core.StagedBatch;
 
 /**
  * The state of one load: documents are read one after another and each frame is mapped as soon as it is read, unless
@@ -29,6 +31,9 @@ import org.kicnp.core.Slot;
  * inherit the type from may come later. Frame names are checked for duplicates across all documents.
  */
 final class LoadSession {
+    /** Frames handed to a load's staged batch at a time. */
+    private static final int STREAM_CHUNK = 512;
+
     private final KnowledgeBase context;
     private final XMLInputFactory factory = SecureXml.inputFactory();
     private final long maxBytes = SecureXml.maxFileBytes();
@@ -48,12 +53,19 @@ final class LoadSession {
     private final Map<String, FrameElement> unmapped = new HashMap<>();
     private final Map<String, SourceLocation> seen = new HashMap<>(1 << 12);
     private final Map<String, Located> descendants = new HashMap<>();
+    /** Where mapped frames go as soon as they are mapped, for a load; null when only parsing. */
+    private final StagedBatch target;
+    /** Frames of {@code parsed} before this index have been given to {@code target}. */
+    private int streamed;
 
     /**
      * @param pipelined whether to map frames on a second thread while reading, worth it for large inputs only
+     * @param target the batch of a load, which gets the mapped frames in file order as they are mapped (so the
+     *     knowledge base checks them while reading goes on), or null
      */
-    LoadSession(KnowledgeBase context, boolean pipelined) {
+    LoadSession(KnowledgeBase context, boolean pipelined, StagedBatch target) {
         this.context = context;
+        this.target = target;
         this.pipeline = pipelined ? new MappingPipeline(this::accept) : null;
         this.sink = pipelined ? pipeline : this::accept;
     }
@@ -75,7 +87,8 @@ final class LoadSession {
                         + maxBytes + " bytes (system property " + SecureXml.MAX_BYTES_PROPERTY + ")."));
                 return;
             }
-            try (InputStream in = Files.newInputStream(file)) {
+            // 64 K reads instead of the parser's 4 K ones: fewer trips through the channel's temporary buffers.
+            try (InputStream in = new BufferedInputStream(Files.newInputStream(file), 1 << 16)) {
                 read(factory.createXMLStreamReader(source, in), source);
             }
         } catch (IOException e) {
@@ -126,6 +139,28 @@ final class LoadSession {
 
     private void add(Frame f, FrameElement e) {
         parsed.add(located(f, e));
+        if (target != null && pending.isEmpty() && parsed.size() - streamed >= STREAM_CHUNK) {
+            stream();
+        }
+    }
+
+    /**
+     * Gives the target the frames mapped since the last time. Stops for good at a frame that waits for its slot
+     * types (mapped only at the end), so the target sees the frames in file order.
+     */
+    private void stream() {
+        List<Frame> frames = new ArrayList<>(parsed.size() - streamed);
+        for (int i = streamed; i < parsed.size(); i++) {
+            ParsedFrame p = parsed.get(i);
+            if (p == null) {
+                break;
+            }
+            frames.add(p.sourced().frame());
+        }
+        streamed += frames.size();
+        if (!frames.isEmpty()) {
+            target.add(frames);
+        }
     }
 
     /** Maps the frames that waited for their slot types, checks DESCENDANTS, and answers every frame in file order. */
@@ -151,6 +186,9 @@ final class LoadSession {
         descendants.forEach(this::checkDescendants);
         if (!errors.isEmpty() || !readErrors.isEmpty()) {
             throw new KnowledgeXmlException(inDocumentOrder());
+        }
+        if (target != null) {
+            stream();
         }
         return parsed;
     }

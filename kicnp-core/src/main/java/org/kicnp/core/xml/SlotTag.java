@@ -7,6 +7,9 @@ enum SlotTag {
     NAME, ROLE, FROM, TYPE, CONDITION, ARGUMENT, VALUE("ITEM"), DEFAULT("ITEM"), REQUIRED, SHARED, UNIQUE,
     FRAMERELATED, FRAMELISTRELATED("ITEM"), ONNEEDED, ONADDED, ONREMOVED, REACTIVE;
 
+    /** How many tags there are. */
+    static final int COUNT = values().length;
+
     private final List<String> childTags;
 
     SlotTag(String... childTags) {
