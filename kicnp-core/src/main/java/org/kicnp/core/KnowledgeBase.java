@@ -219,7 +219,14 @@ public final class KnowledgeBase {
     public List<String> referrers(String name) {
         return read(() -> {
             Node n = nodes.get(name);
-            return n == null || n.referrers == null ? List.of() : List.copyOf(n.referrers);
+            if (n == null || n.referrers == null) {
+                return List.<String>of();
+            }
+            List<String> out = new ArrayList<>(n.referrers.size());
+            for (Node r : n.referrers) {
+                out.add(r.name());
+            }
+            return out;
         });
     }
 
