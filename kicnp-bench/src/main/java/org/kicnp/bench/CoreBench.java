@@ -126,9 +126,12 @@ final class CoreBench implements Callable<Integer> {
     /**
      * One timed load and save, in a method of its own: the knowledge base is unreachable once it returns, so the next
      * round's load does not run with the last one's still alive (a local in the loop would keep it, and every young
-     * collection during the load would copy it).
+     * collection during the load would copy it). A {@code System.gc()} first, as the inference bench does before
+     * each run, so a round does not pay for collecting the garbage of the one before; collections the load's own
+     * allocation makes are timed.
      */
     private void timedRound(Timed loads, Timed saves, Path source, Path saved) {
+        System.gc();
         KnowledgeBase kb = loads.time(() -> load(source));
         saves.time(() -> save(kb, saved));
     }
