@@ -54,8 +54,9 @@ final class InferenceBenchCommand implements Callable<Integer> {
             description = "Measured stimuli for the script cost and latency (default: ${DEFAULT-VALUE}).")
     int latencySamples;
 
-    @Option(names = "--latency-warmup", defaultValue = "20000",
-            description = "Untimed stimuli before those (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--latency-warmup", defaultValue = "100000",
+            description = "Untimed stimuli before those (default: ${DEFAULT-VALUE}; the Graal compiler is still "
+                    + "compiling the script path after 20,000).")
     int latencyWarmUp;
 
     @Override public Integer call() throws Exception {
