@@ -59,10 +59,21 @@ public final class GatewayServer implements AutoCloseable {
      */
     public static GatewayServer start(GatewayConfig config, AgentDirectory agents, KnowledgeBase kb,
                                       FeedbackListener feedback) {
+        return start(config, agents, kb, feedback, Retraction.removeFrom(requireNonNull(kb, "kb")));
+    }
+
+    /**
+     * Starts a gateway over a knowledge base that takes an agent's runtime frames away through {@code retraction}
+     * when the agent leaves (the platform retracts them through its inference engine).
+     *
+     * @throws GatewayException when the address cannot be bound
+     */
+    public static GatewayServer start(GatewayConfig config, AgentDirectory agents, KnowledgeBase kb,
+                                      FeedbackListener feedback, Retraction retraction) {
         requireNonNull(config, "config");
         GatewayMetrics metrics = new GatewayMetrics();
         ServerAgent server = ServerAgent.create(config, requireNonNull(agents, "agents"), requireNonNull(kb, "kb"),
-                requireNonNull(feedback, "feedback"), metrics);
+                requireNonNull(feedback, "feedback"), requireNonNull(retraction, "retraction"), metrics);
         ChannelGroup connections = new DefaultChannelGroup("kicnp-agents", GlobalEventExecutor.INSTANCE);
         EventLoopGroup boss = new MultiThreadIoEventLoopGroup(1, NioIoHandler.newFactory());
         EventLoopGroup workers = new MultiThreadIoEventLoopGroup(config.ioThreads(), NioIoHandler.newFactory());

@@ -33,10 +33,12 @@ final class RuntimeFrames {
     private static final Logger LOG = LoggerFactory.getLogger(RuntimeFrames.class);
 
     private final KnowledgeBase kb;
+    private final Retraction retraction;
     private final Map<String, Set<String>> framesByAgent = new ConcurrentHashMap<>();
 
-    RuntimeFrames(KnowledgeBase kb) {
+    RuntimeFrames(KnowledgeBase kb, Retraction retraction) {
         this.kb = kb;
+        this.retraction = retraction;
     }
 
     static String presenceName(String agent) {
@@ -95,9 +97,9 @@ final class RuntimeFrames {
         for (String name : names) {
             try {
                 if (kb.contains(name)) {
-                    kb.remove(name);
+                    retraction.retract(name);
                 }
-            } catch (KnowledgeException e) {
+            } catch (RuntimeException e) {
                 LOG.warn("Could not retract '{}' of agent '{}': {}", name, agent, e.getMessage());
             }
         }

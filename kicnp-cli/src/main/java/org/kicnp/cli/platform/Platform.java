@@ -119,9 +119,12 @@ public final class Platform implements AutoCloseable {
             engineThread = Executors.newSingleThreadExecutor(r -> daemon(r, "kicnp-engine"));
             CommandBridge bridge = new CommandBridge(kb, log);
             TraceLog traceLog = new TraceLog(log);
-            gateway = GatewayServer.start(GatewayConfig.defaults().withPort(config.gatewayPort()), directory, kb, bridge);
+            EngineRetraction retraction = new EngineRetraction(kb, engineThread);
+            gateway = GatewayServer.start(GatewayConfig.defaults().withPort(config.gatewayPort()), directory, kb, bridge,
+                    retraction);
             engine = InferenceEngine.builder(kb).scripts(new GraalScriptHost(scripts)).actionSink(bridge)
                     .runOn(engineThread).build();
+            retraction.attach(engine);
             engine.addTraceListener(traceLog);
             kb.addListener(traceLog);
             bridge.connect(gateway.actionSink(), engine);

@@ -87,4 +87,35 @@ class PlatformTest {
             assertThat(log).anyMatch(l -> l.contains("\"event\":\"feedback\"") && l.contains("\"stage\":\"ended\""));
         }
     }
+
+    @Test
+    void serve_whenARobotLeaves_itsSignalGoesWithEverythingDerivedFromIt() throws Exception {
+        Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
+        try (Platform platform = Platform.start(PlatformConfig.of(kb).withEphemeralPorts())) {
+            RecordingRobot robovie = new RecordingRobot(AgentOptions.of("127.0.0.1", platform.gatewayPort(),
+                    "robovie", AgentKind.ROBOT, platform.token("robovie")));
+            robovie.startAndAwait(Duration.ofSeconds(10));
+            robovie.sensor("face_seen", Value.of("unknown"),
+                    new Value.Lst(List.of(Value.of(0.1), Value.of(0.2), Value.of(0.3))));
+            await("FaceDetection fires on the signal", () -> !platform.kb().instancesOf("FaceDetection").isEmpty()
+                    && !platform.kb().instancesOf("NewUser").isEmpty());
+
+            robovie.close();
+
+            await("the signal and what rests on it are retracted", () -> !platform.kb()
+                    .contains("signal_robovie_face_seen") && platform.kb().instancesOf("FaceDetection").isEmpty()
+                    && platform.kb().instancesOf("NewUser").isEmpty());
+            assertThat(platform.kb().contains("agent_robovie")).as("its presence is gone too").isFalse();
+        }
+    }
+
+    private static void await(String what, java.util.function.BooleanSupplier done) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+        while (!done.getAsBoolean()) {
+            if (System.nanoTime() > deadline) {
+                throw new AssertionError("Timed out waiting until " + what + ".");
+            }
+            Thread.sleep(20);
+        }
+    }
 }
