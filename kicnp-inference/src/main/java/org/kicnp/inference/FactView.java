@@ -83,23 +83,23 @@ final class FactView implements Conditions.Reader {
         }
 
         void activation(Activation a) {
-            if (activations == null) {
-                activations = new ArrayList<>(2);
-            } else if (activations.size() == SMALL && activations instanceof ArrayList) {
-                activations = new HashSet<>(activations);
-            }
+            activations = grown(activations);
             activations.add(a);
         }
 
         void fired(BindingKey k) {
-            if (fired == null) {
-                fired = new ArrayList<>(2);
-            } else if (fired.size() == SMALL && fired instanceof ArrayList) {
-                fired = new HashSet<>(fired);
-            }
+            fired = grown(fired);
             if (!fired.contains(k)) {
                 fired.add(k);
             }
+        }
+
+        /** A collection ready for one more element: a short list, or a hash set once the list has {@value #SMALL}. */
+        private static <T> Collection<T> grown(Collection<T> c) {
+            if (c == null) {
+                return new ArrayList<>(2);
+            }
+            return c.size() == SMALL && c instanceof ArrayList ? new HashSet<>(c) : c;
         }
 
         boolean hasFired(BindingKey k) {

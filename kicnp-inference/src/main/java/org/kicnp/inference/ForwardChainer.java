@@ -2,8 +2,6 @@ package org.kicnp.inference;
 
 import java.util.ArrayList;
 import java.util.Collection;
-import java.util.Comparator;
-import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -42,8 +40,6 @@ final class ForwardChainer {
     private final ScriptCalls scripts;
     private final Consumer<TraceEvent> tracer;
     private final BooleanSupplier tracing;
-    /** Canonical condition texts for explanations, made once per condition object. */
-    private final Map<org.kicnp.core.Condition, String> conditionTexts = new java.util.IdentityHashMap<>();
     private final FactView facts;
     private final Map<String, Rule> rules = new LinkedHashMap<>();
     private long stampCounter;
@@ -215,7 +211,8 @@ final class ForwardChainer {
         List<String> todo = new ArrayList<>(kb.referrers(name));
         for (int i = 0; i < todo.size(); i++) {
             String r = todo.get(i);
-            if (!seen.add(r) || facts.get(r) == null || facts.get(r).frame == null) {
+            FactView.Fact f = facts.get(r);
+            if (!seen.add(r) || f == null || f.frame == null) {
                 continue;
             }
             rematchOne(r, why + " (read through '" + r + "')");
@@ -289,7 +286,6 @@ final class ForwardChainer {
     }
 
     private void uninstall(String frame) {
-        conditionTexts.clear();
         if (rules.remove(frame) != null) {
             network.removeRule(frame);
             agenda.withdrawRule(frame);
@@ -356,7 +352,7 @@ final class ForwardChainer {
                 trigger = f;
             }
         }
-        Derivation d = new Derivation(name, r.frame(), full, checked(r, full), ++firings, trigger, Optional.empty());
+        Derivation d = new Derivation(name, r.frame(), full, CheckedConditions.of(r, full, conditions), ++firings, trigger, Optional.empty());
         supports.markFired(a.key(), a.refs());
         supports.record(d, Optional.of(r), a.refs());
         Frame.Builder b = Frame.instance(name, r.frame()).provenance(Provenance.RUNTIME);
@@ -400,38 +396,6 @@ final class ForwardChainer {
                 full.put(p.slot(), best);
             }
         }
-    }
-
-    private List<Derivation.CheckedCondition> checked(Rule r, Map<String, String> full) {
-        List<Derivation.CheckedCondition> out = new ArrayList<>(r.patterns().size());
-        for (SlotPattern p : r.patterns()) {
-            String fact = full.get(p.slot());
-            if (fact == null) {
-                continue;
-            }
-            String value = switch (p.condition()) {
-                case org.kicnp.core.Condition.Compare c -> conditions.follow(Value.ref(fact), c.left()).map(Value::text)
-                        .orElse(fact);
-                case org.kicnp.core.Condition.Between c -> conditions.follow(Value.ref(fact), c.left())
-                        .map(Value::text).orElse(fact);
-                case org.kicnp.core.Condition.OneOf c -> conditions.follow(Value.ref(fact), c.left()).map(Value::text)
-                        .orElse(fact);
-                case org.kicnp.core.Condition.Matches c -> conditions.follow(Value.ref(fact), c.left())
-                        .map(Value::text).orElse(fact);
-                default -> fact;
-            };
-            out.add(new Derivation.CheckedCondition(p.slot(), conditionText(p.condition()), value));
-        }
-        return out;
-    }
-
-    private String conditionText(org.kicnp.core.Condition c) {
-        String t = conditionTexts.get(c);
-        if (t == null) {
-            t = c.text();
-            conditionTexts.put(c, t);
-        }
-        return t;
     }
 
     /** The first slot of a derived instance whose class or condition no longer holds, if any. */

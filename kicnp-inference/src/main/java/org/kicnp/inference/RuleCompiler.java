@@ -75,8 +75,8 @@ final class RuleCompiler {
             eq = Optional.of(new SlotPattern.EqualityJoin(cmp.left(), p.head(), p.steps().subList(1, p.steps().size())));
         }
         boolean alpha = joins.isEmpty() && !(c instanceof Condition.Script);
-        return new SlotPattern(index, s.name(), s.argument().orElseThrow(), c, s.required(), s.shared(), s.unique(),
-                alpha, joins, eq);
+        return new SlotPattern(index, s.name(), s.argument().orElseThrow(), c, c.text(), s.required(), s.shared(),
+                s.unique(), alpha, joins, eq);
     }
 
     static List<Operand> operands(Condition c) {

@@ -9,9 +9,11 @@ import org.kicnp.core.Condition;
  * One instance slot of a behavior frame as the match network sees it: the class it must hold, its condition, its
  * facets, whether the condition can be tested on the candidate alone ({@code alpha}), the other instance slots its
  * condition refers to ({@code joins}), and the equality join that a hash index can answer, if there is one.
+ * {@code conditionText} is the condition's canonical text, made once for the explanations of every firing.
  */
-record SlotPattern(int index, String slot, String argument, Condition condition, boolean required, boolean shared,
-                   boolean unique, boolean alpha, Set<String> joins, Optional<EqualityJoin> equality) {
+record SlotPattern(int index, String slot, String argument, Condition condition, String conditionText,
+                   boolean required, boolean shared, boolean unique, boolean alpha, Set<String> joins,
+                   Optional<EqualityJoin> equality) {
     SlotPattern {
         joins = Set.copyOf(joins);
     }

@@ -18,12 +18,12 @@ import org.slf4j.LoggerFactory;
 final class EngineRetraction implements Retraction {
     private static final Logger LOG = LoggerFactory.getLogger(EngineRetraction.class);
 
-    private final KnowledgeBase kb;
+    private final Retraction beforeEngine;
     private final Executor engineThread;
     private final AtomicReference<InferenceEngine> engine = new AtomicReference<>();
 
     EngineRetraction(KnowledgeBase kb, Executor engineThread) {
-        this.kb = kb;
+        this.beforeEngine = Retraction.removeFrom(kb);
         this.engineThread = engineThread;
     }
 
@@ -34,7 +34,7 @@ final class EngineRetraction implements Retraction {
     @Override public void retract(String frame) {
         InferenceEngine e = engine.get();
         if (e == null) {
-            kb.remove(frame);
+            beforeEngine.retract(frame);
             return;
         }
         engineThread.execute(() -> {
