@@ -102,10 +102,10 @@ class PlatformTest {
 
             robovie.close();
 
-            await("the signal and what rests on it are retracted", () -> !platform.kb()
+            // The gateway hands each frame to the engine thread separately, so they go one after the other.
+            await("the signal and what rests on it are retracted, and the presence too", () -> !platform.kb()
                     .contains("signal_robovie_face_seen") && platform.kb().instancesOf("FaceDetection").isEmpty()
-                    && platform.kb().instancesOf("NewUser").isEmpty());
-            assertThat(platform.kb().contains("agent_robovie")).as("its presence is gone too").isFalse();
+                    && platform.kb().instancesOf("NewUser").isEmpty() && !platform.kb().contains("agent_robovie"));
         }
     }
 
