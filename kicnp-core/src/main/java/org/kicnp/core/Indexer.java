@@ -1,9 +1,12 @@
 package org.kicnp.core;
 
 import java.util.ArrayList;
+import java.util.Collections;
+import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import java.util.Set;
 
 /** Applies a validated batch's events to the nodes and their derived indexes. Runs under the write lock. */
 final class Indexer {
@@ -24,6 +27,8 @@ final class Indexer {
     private void apply(List<FrameEvent> events, long version) {
         List<Node> attach = new ArrayList<>(events.size());
         List<Node> touched = new ArrayList<>(events.size());
+        /* Nodes made by this batch cannot be members of any set yet: they are added without a membership probe. */
+        Set<Node> reattached = null;
         for (FrameEvent e : events) {
             switch (e) {
                 case FrameEvent.Removed r -> {
@@ -39,6 +44,10 @@ final class Indexer {
                             || before.kind() != r.frame().kind()) {
                         detach(n);
                         attach.add(n);
+                        if (reattached == null) {
+                            reattached = Collections.newSetFromMap(new IdentityHashMap<>());
+                        }
+                        reattached.add(n);
                     }
                     n.frame = r.frame();
                     n.revision = version;
@@ -57,13 +66,13 @@ final class Indexer {
             String p = n.frame.parentOrNull();
             n.parent = p == null ? null : nodes.get(p);
             if (n.parent != null) {
-                n.parent.children().add(n);
+                add(n.parent.children(), n, reattached);
             }
         }
         for (Node n : attach) {
             if (n.frame.isInstance()) {
                 for (Node a = n.parent; a != null; a = a.parent) {
-                    a.instances().add(n);
+                    add(a.instances(), n, reattached);
                 }
             } else if (n.instances != null && !n.instances.isEmpty()) {
                 for (Node a = n.parent; a != null; a = a.parent) {
@@ -83,6 +92,14 @@ final class Indexer {
                     target.referrers().add(n);
                 }
             }
+        }
+    }
+
+    private static void add(NodeSet set, Node n, Set<Node> reattached) {
+        if (reattached == null || !reattached.contains(n)) {
+            set.addNew(n);
+        } else {
+            set.add(n);
         }
     }
 

@@ -8,7 +8,7 @@ import java.util.NoSuchElementException;
  * An insertion-ordered set of nodes, for the knowledge base's derived indexes: a class's children, every instance
  * below a class, the frames that refer to a frame. An instance sits in the set of each of its ancestors, and a class
  * high up holds hundreds of thousands, so members are kept in one array (plus, past a few members, an
- * open-addressing table of their positions) instead of a {@link java.util.LinkedHashSet}'s entry objects: about a
+ * open-addressing table of their positions, made on first use) instead of a {@link java.util.LinkedHashSet}'s entry objects: about a
  * third of the memory and no allocation per member, with O(1) add, remove and contains. A removed member leaves a hole
  * that iteration skips; the array is compacted once holes outnumber members. Members are compared by identity.
  * Changed only under the knowledge base's write lock.
@@ -21,7 +21,11 @@ final class NodeSet implements Iterable<Node> {
     /** Slots of {@code items} in use, holes included. */
     private int end;
     private int size;
-    /** Position + 1 of each member, by hash, linear probing; 0 is empty. Null while {@code end <= LINEAR}. */
+    /**
+     * Position + 1 of each member, by hash, linear probing; 0 is empty. Null while {@code end <= LINEAR}, and built
+     * only when a membership question is first asked: a set that is only added to (a class's instances while they
+     * are asserted) never pays for it.
+     */
     private int[] table;
     private int shift;
 
@@ -46,6 +50,19 @@ final class NodeSet implements Iterable<Node> {
         if (indexOf(n) >= 0) {
             return false;
         }
+        append(n);
+        return true;
+    }
+
+    /**
+     * Adds a node the caller knows is not a member (a node made by this very batch), without the membership probe
+     * that {@link #add} pays.
+     */
+    void addNew(Node n) {
+        append(n);
+    }
+
+    private void append(Node n) {
         if (end == items.length) {
             makeRoom();
         }
@@ -55,10 +72,9 @@ final class NodeSet implements Iterable<Node> {
         }
         end++;
         size++;
-        if (table == null ? end > LINEAR : end * 2 > table.length) {
+        if (table != null && end * 2 > table.length) {
             rebuildTable();
         }
-        return true;
     }
 
     boolean remove(Node n) {
@@ -114,6 +130,9 @@ final class NodeSet implements Iterable<Node> {
     }
 
     private int indexOf(Node n) {
+        if (table == null && end > LINEAR) {
+            rebuildTable();
+        }
         if (table == null) {
             for (int i = 0; i < end; i++) {
                 if (items[i] == n) {
@@ -170,7 +189,7 @@ final class NodeSet implements Iterable<Node> {
         if (items.length > 64 && items.length > end * 3) {
             items = Arrays.copyOf(items, end + (end >> 1) + 2);
         }
-        rebuildTable();
+        table = null; // positions moved: made again when next asked
     }
 
     /** A table at most a quarter full, so it is rebuilt only after the members have doubled. */

@@ -87,6 +87,30 @@ class NodeSetTest {
         assertThat(set).containsExactly(nodes.get(7));
     }
 
+    @Test
+    void addNew_ofManyNodes_thenMembershipQuestions_areAnsweredAsWithAdd() {
+        List<Node> nodes = nodes(3_000);
+        NodeSet set = new NodeSet(2);
+        nodes.subList(0, 2_000).forEach(set::addNew);
+
+        assertThat(set.contains(nodes.get(1_999))).isTrue();
+        assertThat(set.contains(nodes.get(2_000))).isFalse();
+        assertThat(set.add(nodes.get(5))).isFalse();
+        nodes.subList(2_000, 3_000).forEach(set::addNew);
+        for (int i = 0; i < 3_000; i += 2) {
+            assertThat(set.remove(nodes.get(i))).isTrue();
+        }
+
+        List<Node> odd = new ArrayList<>();
+        for (int i = 1; i < 3_000; i += 2) {
+            odd.add(nodes.get(i));
+        }
+        assertThat(set).containsExactlyElementsOf(odd);
+        assertThat(set.size()).isEqualTo(1_500);
+        assertThat(set.contains(nodes.get(2_999))).isTrue();
+        assertThat(set.contains(nodes.get(2_998))).isFalse();
+    }
+
     private static List<Node> nodes(int count) {
         List<Node> out = new ArrayList<>(count);
         for (int i = 0; i < count; i++) {

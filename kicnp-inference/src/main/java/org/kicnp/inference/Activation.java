@@ -15,6 +15,8 @@ final class Activation {
     private final long recency;
     private final long seq;
     private final BindingKey key;
+    /** Where the activation sits in the agenda's heap; -1 when it is not queued. */
+    int heapIndex = -1;
 
     Activation(Rule rule, String[] facts, FactView.Fact[] refs, long recency, long seq) {
         this.rule = rule;

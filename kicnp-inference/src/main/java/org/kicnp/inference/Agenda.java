@@ -2,11 +2,8 @@ package org.kicnp.inference;
 
 import java.util.Collection;
 import java.util.Comparator;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.Optional;
-import java.util.TreeSet;
 
 /**
  * The conflict set, in conflict-resolution order: explicit priority (higher first), then specificity (the deeper
@@ -30,8 +27,7 @@ final class Agenda {
         return c != 0 ? c : Long.compare(a.seq(), b.seq());
     };
 
-    private final TreeSet<Activation> queue = new TreeSet<>(ORDER);
-    private final Map<BindingKey, Activation> byKey = new HashMap<>();
+    private final ActivationHeap queue = new ActivationHeap();
     /** Where each fact's activations are kept (its {@link FactView.Fact}), so a fact leaving withdraws them. */
     private final FactView facts;
 
@@ -39,14 +35,33 @@ final class Agenda {
         this.facts = facts;
     }
 
-    boolean contains(BindingKey key) {
-        return byKey.containsKey(key);
+    /**
+     * Whether a binding is waiting already, read from the activations of the bound fact that takes part in the
+     * fewest. Only bindings matched again (after a claim was freed) can repeat one on the agenda; a new fact's
+     * bindings are new, so the engine asks only then.
+     */
+    boolean contains(BindingKey key, FactView.Fact[] refs) {
+        Collection<Activation> fewest = null;
+        for (FactView.Fact f : refs) {
+            if (f.activations == null) {
+                return false;
+            }
+            if (fewest == null || f.activations.size() < fewest.size()) {
+                fewest = f.activations;
+            }
+        }
+        if (fewest != null) {
+            for (Activation a : fewest) {
+                if (a.key().equals(key)) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
+    /** Puts an activation on the agenda; the caller has made sure its binding is not waiting already. */
     void add(Activation a) {
-        if (byKey.putIfAbsent(a.key(), a) != null) {
-            return;
-        }
         queue.add(a);
         for (FactView.Fact f : a.refs()) {
             f.activation(a);
@@ -54,7 +69,7 @@ final class Agenda {
     }
 
     Optional<Activation> poll() {
-        Activation a = queue.pollFirst();
+        Activation a = queue.poll();
         if (a != null) {
             forget(a);
         }
@@ -76,7 +91,7 @@ final class Agenda {
 
     /** Withdraws every activation of the frame. */
     void withdrawRule(String frame) {
-        for (Activation a : List.copyOf(queue)) {
+        for (Activation a : queue.snapshot()) {
             if (a.rule().frame().equals(frame)) {
                 queue.remove(a);
                 forget(a);
@@ -86,7 +101,6 @@ final class Agenda {
 
     void clear() {
         queue.clear();
-        byKey.clear();
         for (FactView.Fact f : facts.all()) {
             f.activations = null;
         }
@@ -98,11 +112,10 @@ final class Agenda {
 
     /** The waiting activations in the order they would fire, copied. */
     List<Activation> inOrder() {
-        return List.copyOf(queue);
+        return queue.inOrder();
     }
 
     private void forget(Activation a) {
-        byKey.remove(a.key());
         for (FactView.Fact f : a.refs()) {
             if (f.activations != null) {
                 f.activations.remove(a);

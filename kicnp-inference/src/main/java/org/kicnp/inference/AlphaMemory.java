@@ -1,26 +1,56 @@
 package org.kicnp.inference;
 
+import java.util.AbstractCollection;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collection;
 import java.util.HashMap;
+import java.util.Iterator;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.NoSuchElementException;
 import java.util.Optional;
-import java.util.Set;
 import java.util.function.BiFunction;
 import org.kicnp.core.Value;
 
 /**
  * The instances that can fill one slot of one behavior frame (right class, constant conditions hold), with hash
  * indexes on the slot paths that equality joins look up, so a join reads only the partners that can match.
+ *
+ * <p>The members are the engine's {@link FactView.Fact} records, kept in insertion order in one array: a member's
+ * {@link Entry} (held by its fact) knows its position, so adding and removing cost no hashing, and matching meets the
+ * facts themselves rather than names to look up. A removed member leaves a hole that iteration skips; the array is
+ * compacted once holes outnumber members. Index buckets keep insertion order too, so matching is deterministic.
+ * Owned by the engine thread.
  */
 final class AlphaMemory {
+    /** Index buckets are short lists (in insertion order) up to this size, then linked hash sets. */
+    private static final int SMALL = 16;
     private final Rule rule;
     private final SlotPattern pattern;
-    private final LinkedHashSet<String> facts = new LinkedHashSet<>();
+    private FactView.Fact[] items = new FactView.Fact[8];
+    /** Slots of {@code items} in use, holes included. */
+    private int end;
+    private int size;
     private final List<List<String>> paths = new ArrayList<>(2);
-    private final List<Map<Value, Set<String>>> indexes = new ArrayList<>(2);
+    private final List<Map<Value, Collection<FactView.Fact>>> indexes = new ArrayList<>(2);
+    /** The join plan of the rule, and this memory's position among its required slots (-1: an optional slot). */
+    JoinPlan plan;
+    int position = -1;
+
+    /** One fact's membership: where it sits, and the index keys it is filed under (null where a path reached nothing). */
+    static final class Entry {
+        final AlphaMemory memory;
+        final Value[] keys;
+        int at;
+
+        private Entry(AlphaMemory memory, Value[] keys, int at) {
+            this.memory = memory;
+            this.keys = keys;
+            this.at = at;
+        }
+    }
 
     AlphaMemory(Rule rule, SlotPattern pattern) {
         this.rule = rule;
@@ -35,32 +65,42 @@ final class AlphaMemory {
         return pattern;
     }
 
-    void addIndex(List<String> path) {
-        if (!paths.contains(path)) {
-            paths.add(List.copyOf(path));
-            indexes.add(new HashMap<>());
+    /**
+     * Indexes the facts by the value each reaches along {@code path} (call before facts are added); returns the
+     * index's number for {@link #lookup(int, Value)}. Asking twice for one path gives one index.
+     */
+    int addIndex(List<String> path) {
+        int i = paths.indexOf(path);
+        if (i >= 0) {
+            return i;
         }
+        if (size > 0) {
+            throw new IllegalStateException("Indexes are added before facts, not after " + size + " facts.");
+        }
+        paths.add(List.copyOf(path));
+        indexes.add(new HashMap<>());
+        return paths.size() - 1;
     }
 
-    boolean contains(String fact) {
-        return facts.contains(fact);
+    boolean contains(FactView.Fact fact) {
+        return fact.entryIn(this) != null;
     }
 
-    Collection<String> facts() {
-        return facts;
+    /** The members in insertion order: a live view, not to be held while the memory changes. */
+    Collection<FactView.Fact> facts() {
+        return new Members();
     }
 
     int size() {
-        return facts.size();
+        return size;
     }
 
     /**
-     * Adds a fact, indexing it under the value each indexed path reaches from it; returns those keys, one per index
-     * (null where the path reaches nothing), for the caller to keep and give back to {@link #remove}; null when there
-     * are no indexes or the fact was there already.
+     * Adds a fact, indexing it under the value each indexed path reaches from it; returns its membership, for the
+     * fact to keep and give back to {@link #remove}; null when the fact was a member already.
      */
-    Value[] add(String fact, BiFunction<String, List<String>, Optional<Value>> pathValue) {
-        if (!facts.add(fact) || paths.isEmpty()) {
+    Entry add(FactView.Fact fact, BiFunction<FactView.Fact, List<String>, Optional<Value>> pathValue) {
+        if (fact.entryIn(this) != null) {
             return null;
         }
         Value[] keys = null;
@@ -68,10 +108,14 @@ final class AlphaMemory {
             Optional<Value> key = pathValue.apply(fact, paths.get(i));
             if (key.isPresent()) {
                 Value k = Values.key(key.get());
-                Set<String> bucket = indexes.get(i).get(k);
+                Map<Value, Collection<FactView.Fact>> index = indexes.get(i);
+                Collection<FactView.Fact> bucket = index.get(k);
                 if (bucket == null) {
-                    bucket = new LinkedHashSet<>(4);
-                    indexes.get(i).put(k, bucket);
+                    bucket = new ArrayList<>(2);
+                    index.put(k, bucket);
+                } else if (bucket.size() == SMALL && bucket instanceof ArrayList) {
+                    bucket = new LinkedHashSet<>(bucket);
+                    index.put(k, bucket);
                 }
                 bucket.add(fact);
                 if (keys == null) {
@@ -80,38 +124,107 @@ final class AlphaMemory {
                 keys[i] = k;
             }
         }
-        return keys;
+        if (end == items.length) {
+            makeRoom();
+        }
+        items[end] = fact;
+        size++;
+        return new Entry(this, keys, end++);
     }
 
-    /** Removes a fact filed under the keys {@link #add} returned for it. */
-    void remove(String fact, Value[] keys) {
-        if (!facts.remove(fact)) {
+    /** Removes a member, given its membership. */
+    void remove(Entry e) {
+        FactView.Fact fact = items[e.at];
+        if (fact == null) {
             return;
         }
-        if (keys == null) {
-            return;
-        }
-        for (int i = 0; i < keys.length; i++) {
-            if (keys[i] == null) {
-                continue;
-            }
-            Map<Value, Set<String>> index = indexes.get(i);
-            Set<String> bucket = index.get(keys[i]);
-            if (bucket != null) {
-                bucket.remove(fact);
-                if (bucket.isEmpty()) {
-                    index.remove(keys[i]);
+        items[e.at] = null;
+        size--;
+        if (e.keys != null) {
+            for (int i = 0; i < e.keys.length; i++) {
+                if (e.keys[i] == null) {
+                    continue;
+                }
+                Map<Value, Collection<FactView.Fact>> index = indexes.get(i);
+                Collection<FactView.Fact> bucket = index.get(e.keys[i]);
+                if (bucket != null) {
+                    bucket.remove(fact);
+                    if (bucket.isEmpty()) {
+                        index.remove(e.keys[i]);
+                    }
                 }
             }
         }
+        if (size == 0) {
+            Arrays.fill(items, 0, end, null);
+            end = 0;
+        } else if (end > 32 && size < end / 2) {
+            compact();
+        }
     }
 
-    /** The facts whose value along {@code path} equals {@code key}; the path must have been indexed. */
-    Collection<String> lookup(List<String> path, Value key) {
-        int i = paths.indexOf(path);
-        if (i < 0) {
-            throw new IllegalStateException("No index on " + path + " for slot '" + pattern.slot() + "'.");
+    /** The facts whose value along index {@code index}'s path has the key {@code key} (see {@link Values#key}). */
+    Collection<FactView.Fact> lookup(int index, Value key) {
+        Collection<FactView.Fact> bucket = indexes.get(index).get(key);
+        return bucket == null ? List.of() : bucket;
+    }
+
+    private void makeRoom() {
+        if (end - size >= end / 4 && end > size) {
+            compact();
         }
-        return indexes.get(i).getOrDefault(Values.key(key), Set.of());
+        if (end == items.length) {
+            items = Arrays.copyOf(items, items.length + (items.length >> 1) + 2);
+        }
+    }
+
+    /** Closes the holes, telling each moved member its new position. */
+    private void compact() {
+        int to = 0;
+        for (int i = 0; i < end; i++) {
+            FactView.Fact f = items[i];
+            if (f != null) {
+                if (to != i) {
+                    items[to] = f;
+                    f.entryIn(this).at = to;
+                }
+                to++;
+            }
+        }
+        Arrays.fill(items, to, end, null);
+        end = to;
+    }
+
+    /** The members, skipping holes. */
+    private final class Members extends AbstractCollection<FactView.Fact> {
+        @Override public Iterator<FactView.Fact> iterator() {
+            return new Iterator<>() {
+                private int next = skip(0);
+
+                private int skip(int i) {
+                    while (i < end && items[i] == null) {
+                        i++;
+                    }
+                    return i;
+                }
+
+                @Override public boolean hasNext() {
+                    return next < end;
+                }
+
+                @Override public FactView.Fact next() {
+                    if (next >= end) {
+                        throw new NoSuchElementException();
+                    }
+                    FactView.Fact f = items[next];
+                    next = skip(next + 1);
+                    return f;
+                }
+            };
+        }
+
+        @Override public int size() {
+            return size;
+        }
     }
 }

@@ -29,8 +29,13 @@ final class Conditions {
 
     /** Follows slot names from a value; each step needs a frame reference to continue. */
     Optional<Value> follow(Value start, List<String> path) {
+        return follow(start, path, 0);
+    }
+
+    /** Follows {@code path} from its step {@code from} on, starting at {@code start}. */
+    Optional<Value> follow(Value start, List<String> path, int from) {
         Value cur = start;
-        for (int i = 0; i < path.size() && i < MAX_PATH; i++) {
+        for (int i = from; i < path.size() && i < MAX_PATH; i++) {
             if (!(cur instanceof Value.Ref r)) {
                 return Optional.empty();
             }

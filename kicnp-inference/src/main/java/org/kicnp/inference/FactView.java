@@ -3,7 +3,7 @@ package org.kicnp.inference;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.HashMap;
-import java.util.HashSet;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -32,59 +32,69 @@ final class FactView implements Conditions.Reader {
         /** The frame as last seen; null when the network met the instance in the knowledge base before its event. */
         Frame frame;
         long stamp;
-        /** The memories the fact is in, and beside each the index keys it is filed under there (may be null). */
-        List<AlphaMemory> memories;
-        List<Value[]> memoryKeys;
+        /** The fact's memberships of alpha memories (null: none). */
+        List<AlphaMemory.Entry> entries;
         /** A short list, turned into a hash set when it grows past {@value #SMALL} (removal must stay cheap). */
         Collection<Activation> activations;
         /** The bindings with this fact that have fired (refraction); a short list or, past {@value #SMALL}, a set. */
         Collection<BindingKey> fired;
         /** How the engine derived this instance, if it did. */
         Derivation derivation;
-        /** The derived instances that rest on this one. */
-        Set<String> dependents;
+        /** The derived instances that rest on this one, in the order they were made; a short list or a set. */
+        Collection<String> dependents;
 
         private Fact(String name) {
             this.name = name;
         }
 
-        void enter(AlphaMemory m, Value[] keys) {
-            if (memories == null) {
-                memories = new ArrayList<>(2);
-                memoryKeys = new ArrayList<>(2);
+        /** The fact's membership of memory {@code m}, or null. */
+        AlphaMemory.Entry entryIn(AlphaMemory m) {
+            if (entries != null) {
+                for (int i = 0; i < entries.size(); i++) {
+                    if (entries.get(i).memory == m) {
+                        return entries.get(i);
+                    }
+                }
             }
-            if (!memories.contains(m)) {
-                memories.add(m);
-                memoryKeys.add(keys);
+            return null;
+        }
+
+        void enter(AlphaMemory.Entry e) {
+            if (entries == null) {
+                entries = new ArrayList<>(2);
             }
+            entries.add(e);
         }
 
         /** Forgets one memory (a rule was removed); the memory itself is dropped by the caller. */
         void leave(AlphaMemory m) {
-            int i = memories == null ? -1 : memories.indexOf(m);
-            if (i >= 0) {
-                memories.remove(i);
-                memoryKeys.remove(i);
+            if (entries != null) {
+                entries.removeIf(e -> e.memory == m);
             }
         }
 
         /** Takes the fact out of every memory it is in. */
         void leaveAll() {
-            if (memories == null) {
+            if (entries == null) {
                 return;
             }
-            List<AlphaMemory> in = memories;
-            List<Value[]> keys = memoryKeys;
-            memories = null;
-            memoryKeys = null;
+            List<AlphaMemory.Entry> in = entries;
+            entries = null;
             for (int i = 0; i < in.size(); i++) {
-                in.get(i).remove(name, keys.get(i));
+                in.get(i).memory.remove(in.get(i));
             }
         }
 
         void activation(Activation a) {
             activations = grown(activations);
             activations.add(a);
+        }
+
+        void dependent(String instance) {
+            dependents = grown(dependents);
+            if (!dependents.contains(instance)) {
+                dependents.add(instance);
+            }
         }
 
         void fired(BindingKey k) {
@@ -94,12 +104,15 @@ final class FactView implements Conditions.Reader {
             }
         }
 
-        /** A collection ready for one more element: a short list, or a hash set once the list has {@value #SMALL}. */
+        /**
+         * A collection ready for one more element: a short list, or a linked hash set (same order) once the list has
+         * {@value #SMALL}.
+         */
         private static <T> Collection<T> grown(Collection<T> c) {
             if (c == null) {
                 return new ArrayList<>(2);
             }
-            return c.size() == SMALL && c instanceof ArrayList ? new HashSet<>(c) : c;
+            return c.size() == SMALL && c instanceof ArrayList ? new LinkedHashSet<>(c) : c;
         }
 
         boolean hasFired(BindingKey k) {
@@ -155,7 +168,11 @@ final class FactView implements Conditions.Reader {
     }
 
     @Override public Optional<Value> value(String frame, String slot) {
-        Fact f = facts.get(frame);
+        return value(facts.get(frame), frame, slot);
+    }
+
+    /** As {@link #value(String, String)}, with the instance's record (may be null) at hand. */
+    Optional<Value> value(Fact f, String frame, String slot) {
         if (f != null && f.frame != null) {
             List<Slot> slots = f.frame.slots();
             for (int i = 0; i < slots.size(); i++) {

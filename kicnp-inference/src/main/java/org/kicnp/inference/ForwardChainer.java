@@ -143,11 +143,12 @@ final class ForwardChainer {
     private void factAdded(Frame f) {
         long stamp = ++stampCounter;
         String cls = f.parent().orElseThrow();
-        facts.put(f).stamp = stamp;
+        FactView.Fact fact = facts.put(f);
+        fact.stamp = stamp;
         if (tracing.getAsBoolean()) {
             trace(new TraceEvent.FactAsserted(f.name(), cls, stamp));
         }
-        List<MatchNetwork.Match> matches = network.insert(f.name(), cls);
+        List<MatchNetwork.Match> matches = network.insert(fact, cls);
         for (int i = 0; i < matches.size(); i++) {
             consider(matches.get(i));
         }
@@ -170,7 +171,7 @@ final class ForwardChainer {
             }
             Rule r = rules.get(d.get().frame());
             if (r != null) {
-                d.get().binding().forEach((slot, fact) -> network.rematch(r.frame(), slot, fact).forEach(this::consider));
+                d.get().binding().forEach((slot, fact) -> network.rematch(r.frame(), slot, fact).forEach(this::reconsider));
             }
         }
         retract(orphans, "it rests on '" + name + "', which was removed");
@@ -294,22 +295,32 @@ final class ForwardChainer {
 
     // ---- matching and firing ----
 
+    /** Considers a binding made by a new fact: new, so it cannot be waiting on the agenda already. */
     private void consider(MatchNetwork.Match m) {
+        consider(m, false);
+    }
+
+    /** Considers a binding matched again (after a claim on it was freed): it may be waiting already. */
+    private void reconsider(MatchNetwork.Match m) {
+        consider(m, true);
+    }
+
+    private void consider(MatchNetwork.Match m, boolean mayRepeat) {
         Rule r = m.rule();
-        String[] bound = m.facts();
+        FactView.Fact[] refs = m.refs();
+        String[] bound = new String[refs.length];
+        long recency = 0;
+        for (int i = 0; i < refs.length; i++) {
+            bound[i] = refs[i].name;
+            recency = Math.max(recency, refs[i].stamp);
+        }
         BindingKey key = new BindingKey(r.frame(), bound);
-        if (agenda.contains(key)) {
+        if (mayRepeat && agenda.contains(key, refs)) {
             return;
         }
         boolean tracing = this.tracing.getAsBoolean();
         if (tracing) {
             trace(new TraceEvent.Matched(r.frame(), m.binding()));
-        }
-        FactView.Fact[] refs = new FactView.Fact[bound.length];
-        long recency = 0;
-        for (int i = 0; i < bound.length; i++) {
-            refs[i] = facts.touch(bound[i]);
-            recency = Math.max(recency, refs[i].stamp);
         }
         Optional<String> blocked = supports.blocked(r, bound, refs[0], key);
         if (blocked.isEmpty() && r.scripted()) {
@@ -342,27 +353,45 @@ final class ForwardChainer {
         if (!r.optional().isEmpty()) {
             fillOptional(r, full);
         }
-        String name = newName(r.frame());
         String trigger = null;
         long newest = -1;
-        for (String f : full.values()) {
-            long st = stamp(f);
-            if (st > newest) {
-                newest = st;
-                trigger = f;
+        FactView.Fact[] refs = a.refs();
+        for (FactView.Fact f : refs) {
+            if (f.stamp > newest) {
+                newest = f.stamp;
+                trigger = f.name;
             }
         }
-        Derivation d = new Derivation(name, r.frame(), full, CheckedConditions.of(r, full, conditions), ++firings, trigger, Optional.empty());
-        supports.markFired(a.key(), a.refs());
-        supports.record(d, Optional.of(r), a.refs());
-        Frame.Builder b = Frame.instance(name, r.frame()).provenance(Provenance.RUNTIME);
-        full.forEach((slot, fact) -> b.slot(Slot.builder(slot, DataType.INSTANCE).value(Value.ref(fact)).build()));
-        try {
-            kb.add(b.build());
-        } catch (KnowledgeException e) {
-            supports.release(name);
-            trace(new TraceEvent.Blocked(r.frame(), full, "the instance could not be created: " + e.getMessage()));
-            return;
+        if (full.size() > refs.length) {
+            for (String f : full.values()) {
+                long st = stamp(f);
+                if (st > newest) {
+                    newest = st;
+                    trigger = f;
+                }
+            }
+        }
+        List<Derivation.CheckedCondition> checked = CheckedConditions.of(r, full, conditions);
+        long firing = ++firings;
+        String name;
+        while (true) {
+            name = newName(r.frame());
+            Derivation d = new Derivation(name, r.frame(), full, checked, firing, trigger, Optional.empty());
+            supports.markFired(a.key(), refs);
+            supports.record(d, Optional.of(r), refs);
+            Frame.Builder b = Frame.instance(name, r.frame()).provenance(Provenance.RUNTIME);
+            full.forEach((slot, fact) -> b.slot(Slot.builder(slot, DataType.INSTANCE).value(Value.ref(fact)).build()));
+            try {
+                kb.add(b.build());
+                break;
+            } catch (KnowledgeException e) {
+                supports.release(name);
+                if (kb.contains(name)) {
+                    continue; // a frame the engine did not make has this name: take the next one
+                }
+                trace(new TraceEvent.Blocked(r.frame(), full, "the instance could not be created: " + e.getMessage()));
+                return;
+            }
         }
         if (tracing.getAsBoolean()) {
             trace(new TraceEvent.Fired(r.frame(), name, full, firings));
@@ -462,10 +491,20 @@ final class ForwardChainer {
         }
     }
 
-    String newName(String prefix) {
+    /**
+     * The next name for an instance of {@code prefix}: {@code Prefix-N} with the engine's counter. Whether a frame
+     * of that name exists already is found by the knowledge base when the instance is added ({@link #fire} then takes
+     * the next name), so the usual case costs no look-up.
+     */
+    private String newName(String prefix) {
+        return prefix + "-" + (++names);
+    }
+
+    /** The next {@code Prefix-N} name that no frame has now (for instances that scripts create). */
+    String freshName(String prefix) {
         String n;
         do {
-            n = prefix + "-" + (++names);
+            n = newName(prefix);
         } while (kb.contains(n));
         return n;
     }

@@ -68,7 +68,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
         this.actions = new ActionCoordinator(kb, sink, clock, options.actionTimeout(), this::trace, this::assertFeedback);
         ScriptApi api = new ScriptApi(kb, new ScriptApi.Services() {
             @Override public String newName(String prefix) {
-                return forward.newName(prefix);
+                return forward.freshName(prefix);
             }
 
             @Override public String newActionId() {

@@ -7,7 +7,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import java.util.Set;
+import java.util.function.BiFunction;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Value;
 
@@ -26,8 +26,8 @@ final class MatchNetwork {
     private final FactView facts;
     /** Per class, the memories an instance of it enters (its own and its ancestors'); dropped on any class change. */
     private final Map<String, List<AlphaMemory>> entryCache = new HashMap<>();
-    /** Per rule, per required pattern (by position): the other required patterns, and the required slots it joins. */
-    private final Map<Rule, Plan> plans = new HashMap<>();
+    /** Reads the value an index path reaches from a fact. */
+    private final BiFunction<FactView.Fact, List<String>, Optional<Value>> pathValue;
 
     MatchNetwork(KnowledgeBase kb, Conditions conditions) {
         this(kb, conditions, new FactView(kb));
@@ -37,6 +37,7 @@ final class MatchNetwork {
         this.kb = kb;
         this.conditions = conditions;
         this.facts = facts;
+        this.pathValue = this::follow;
     }
 
     /** Installs a rule and fills its memories from the instances there are now; returns every complete binding. */
@@ -45,25 +46,25 @@ final class MatchNetwork {
         for (SlotPattern p : rule.patterns()) {
             mems.put(p.slot(), new AlphaMemory(rule, p));
         }
-        for (SlotPattern p : rule.patterns()) {
-            p.equality().ifPresent(eq -> {
-                mems.get(p.slot()).addIndex(eq.left());
-                mems.get(eq.head()).addIndex(eq.rest());
-            });
+        List<SlotPattern> required = rule.required();
+        AlphaMemory[] byPosition = new AlphaMemory[required.size()];
+        for (int i = 0; i < byPosition.length; i++) {
+            byPosition[i] = mems.get(required.get(i).slot());
+            byPosition[i].position = i;
         }
+        JoinPlan plan = JoinPlan.of(rule, byPosition);
+        mems.values().forEach(m -> m.plan = plan);
         memoriesByRule.put(rule.frame(), mems);
-        plans.put(rule, Plan.of(rule));
         entryCache.clear();
         for (AlphaMemory m : mems.values()) {
             byClass.computeIfAbsent(m.pattern().argument(), k -> new ArrayList<>()).add(m);
             for (var f : kb.instancesOf(m.pattern().argument())) {
-                offer(m, f.name());
+                offer(m, facts.touch(f.name()));
             }
         }
         List<Match> out = new ArrayList<>();
-        SlotPattern first = rule.required().getFirst();
-        for (String fact : List.copyOf(mems.get(first.slot()).facts())) {
-            complete(rule, first, fact, out);
+        for (FactView.Fact fact : List.copyOf(byPosition[0].facts())) {
+            complete(byPosition[0], fact, out);
         }
         return out;
     }
@@ -74,14 +75,10 @@ final class MatchNetwork {
             return;
         }
         entryCache.clear();
-        plans.keySet().removeIf(r -> r.frame().equals(frame));
         for (AlphaMemory m : mems.values()) {
             byClass.getOrDefault(m.pattern().argument(), new ArrayList<>()).remove(m);
-            for (String f : m.facts()) {
-                FactView.Fact fact = facts.get(f);
-                if (fact != null) {
-                    fact.leave(m);
-                }
+            for (FactView.Fact fact : m.facts()) {
+                fact.leave(m);
             }
         }
     }
@@ -92,6 +89,11 @@ final class MatchNetwork {
 
     /** Enters an instance of {@code className} into every memory it fits; returns the bindings it completes. */
     List<Match> insert(String fact, String className) {
+        return insert(facts.touch(fact), className);
+    }
+
+    /** As {@link #insert(String, String)}, with the fact's record at hand. */
+    List<Match> insert(FactView.Fact fact, String className) {
         List<AlphaMemory> candidates = entryCache.get(className);
         if (candidates == null) {
             candidates = new ArrayList<>();
@@ -114,8 +116,8 @@ final class MatchNetwork {
         }
         List<Match> out = new ArrayList<>();
         for (AlphaMemory m : entered) {
-            if (m.pattern().required()) {
-                complete(m.rule(), m.pattern(), fact, out);
+            if (m.position >= 0) {
+                complete(m, fact, out);
             }
         }
         return out;
@@ -129,20 +131,30 @@ final class MatchNetwork {
     /** Matches again one fact in one slot of one rule: after a claim or key on it was freed. */
     List<Match> rematch(String rule, String slot, String fact) {
         Map<String, AlphaMemory> mems = memoriesByRule.get(rule);
-        if (mems == null || !mems.containsKey(slot) || !mems.get(slot).contains(fact)
-                || !mems.get(slot).pattern().required()) {
+        AlphaMemory m = mems == null ? null : mems.get(slot);
+        FactView.Fact f = facts.get(fact);
+        if (m == null || m.position < 0 || f == null || !m.contains(f)) {
             return List.of();
         }
         List<Match> out = new ArrayList<>();
-        complete(mems.get(slot).rule(), mems.get(slot).pattern(), fact, out);
+        complete(m, f, out);
         return out;
     }
 
-    /** A complete binding of a rule's required slots: the instances in the order of {@link Rule#required()}. */
-    record Match(Rule rule, String[] facts) {
+    /** A complete binding of a rule's required slots: the instances' records in the order of {@link Rule#required()}. */
+    record Match(Rule rule, FactView.Fact[] refs) {
+        /** The instances' names, in slot order (a new array). */
+        String[] facts() {
+            String[] out = new String[refs.length];
+            for (int i = 0; i < refs.length; i++) {
+                out[i] = refs[i].name;
+            }
+            return out;
+        }
+
         /** The binding as slot → instance, in slot order (a new map). */
         Map<String, String> binding() {
-            return Activation.bindingOf(rule, facts);
+            return Activation.bindingOf(rule, facts());
         }
     }
 
@@ -155,142 +167,131 @@ final class MatchNetwork {
     }
 
     /** The instances that could fill a slot of a rule now (right class, constant conditions hold). */
-    Collection<String> candidates(String rule, String slot) {
+    List<String> candidates(String rule, String slot) {
         Map<String, AlphaMemory> mems = memoriesByRule.get(rule);
-        return mems == null || !mems.containsKey(slot) ? List.of() : mems.get(slot).facts();
+        if (mems == null || !mems.containsKey(slot)) {
+            return List.of();
+        }
+        List<String> out = new ArrayList<>(mems.get(slot).size());
+        mems.get(slot).facts().forEach(f -> out.add(f.name));
+        return out;
     }
 
     int memorySize(String rule, String slot) {
-        return candidates(rule, slot).size();
+        Map<String, AlphaMemory> mems = memoriesByRule.get(rule);
+        return mems == null || !mems.containsKey(slot) ? 0 : mems.get(slot).size();
     }
 
-    private boolean offer(AlphaMemory m, String fact) {
+    /** The value {@code path} reaches from a fact: the first step read from the fact's own frame, without a look-up. */
+    private Optional<Value> follow(FactView.Fact fact, List<String> path) {
+        if (path.isEmpty()) {
+            return Optional.of(Value.ref(fact.name));
+        }
+        Optional<Value> first = facts.value(fact, fact.name, path.getFirst());
+        return path.size() == 1 || first.isEmpty() ? first : conditions.follow(first.get(), path, 1);
+    }
+
+    /** Enters the fact into the memory when its constant conditions hold; false when not, or when it is in already. */
+    private boolean offer(AlphaMemory m, FactView.Fact fact) {
         SlotPattern p = m.pattern();
-        if (p.alpha() && !conditions.holds(p.condition(), Value.ref(fact), m.rule().frame(), Map.of())) {
+        if (p.alpha() && !conditions.holds(p.condition(), Value.ref(fact.name), m.rule().frame(), Map.of())) {
             return false;
         }
-        Value[] keys = m.add(fact, (f, path) -> conditions.follow(Value.ref(f), path));
-        facts.touch(fact).enter(m, keys);
+        AlphaMemory.Entry e = m.add(fact, pathValue);
+        if (e == null) {
+            return false;
+        }
+        fact.enter(e);
         return true;
     }
 
-    /** Every complete binding of the rule's required slots with {@code fact} in {@code start}. */
-    private void complete(Rule rule, SlotPattern start, String fact, List<Match> out) {
-        Plan plan = plan(rule);
-        Map<String, String> b = new SlotBinding(rule.required().size());
-        b.put(start.slot(), fact);
-        if (!joinsHold(rule, plan, start, b)) {
+    /** Every complete binding of the rule's required slots with {@code fact} in the slot of memory {@code start}. */
+    private void complete(AlphaMemory start, FactView.Fact fact, List<Match> out) {
+        JoinPlan plan = start.plan;
+        JoinBinding b = new JoinBinding(plan.slots);
+        int at = start.position;
+        b.refs[at] = fact;
+        if (joinsHold(plan, at, -1, b)) {
+            extend(plan, b, plan.order[at], 0, out);
+        }
+    }
+
+    private void extend(JoinPlan plan, JoinBinding b, int[] todo, int k, List<Match> out) {
+        if (k == todo.length) {
+            out.add(new Match(plan.rule, b.refs.clone()));
             return;
         }
-        extend(rule, plan, b, plan.others(start), 0, out);
-    }
-
-    private Plan plan(Rule rule) {
-        Plan p = plans.get(rule);
-        if (p == null) {
-            p = Plan.of(rule);
-            plans.put(rule, p);
-        }
-        return p;
-    }
-
-    private void extend(Rule rule, Plan plan, Map<String, String> b, List<SlotPattern> todo, int k, List<Match> out) {
-        if (k == todo.size()) {
-            List<SlotPattern> req = rule.required();
-            String[] facts = new String[req.size()];
-            for (int i = 0; i < facts.length; i++) {
-                facts[i] = b.get(req.get(i).slot());
+        int at = todo[k];
+        AlphaMemory mem = plan.memories[at];
+        Collection<FactView.Fact> partners = null;
+        int decided = -1;
+        for (JoinPlan.Lookup l : plan.lookups[at]) {
+            FactView.Fact from = b.refs[l.from()];
+            if (from == null) {
+                continue;
             }
-            out.add(new Match(rule, facts));
+            Optional<Value> key = follow(from, l.path());
+            if (key.isEmpty()) {
+                return;
+            }
+            Value k0 = Values.key(key.get());
+            partners = mem.lookup(l.index(), k0);
+            decided = Values.exactKey(k0) ? l.answers() : -1;
+            break;
+        }
+        if (partners == null) {
+            partners = mem.facts();
+        }
+        if (partners.isEmpty()) {
             return;
         }
-        SlotPattern p = todo.get(k);
-        for (String c : partners(rule, p, b)) {
-            if (b.containsValue(c)) {
+        for (FactView.Fact c : partners) {
+            if (b.holds(c)) {
                 continue;
             }
-            b.put(p.slot(), c);
-            if (joinsHold(rule, plan, p, b)) {
-                extend(rule, plan, b, todo, k + 1, out);
-            }
-            b.remove(p.slot());
-        }
-    }
-
-    /** The partners for slot {@code p}: an index look-up when an equality join ties it to a bound slot. */
-    private Collection<String> partners(Rule rule, SlotPattern p, Map<String, String> b) {
-        Map<String, AlphaMemory> mems = memoriesByRule.get(rule.frame());
-        AlphaMemory mem = mems.get(p.slot());
-        if (p.equality().isPresent() && b.containsKey(p.equality().get().head())) {
-            var eq = p.equality().get();
-            Optional<Value> key = conditions.follow(Value.ref(b.get(eq.head())), eq.rest());
-            return key.isEmpty() ? List.of() : mem.lookup(eq.left(), key.get());
-        }
-        for (SlotPattern q : rule.required()) {
-            if (q.equality().isPresent() && q.equality().get().head().equals(p.slot()) && b.containsKey(q.slot())) {
-                var eq = q.equality().get();
-                Optional<Value> key = conditions.follow(Value.ref(b.get(q.slot())), eq.left());
-                return key.isEmpty() ? List.of() : mem.lookup(eq.rest(), key.get());
+            b.refs[at] = c;
+            if (joinsHold(plan, at, decided, b)) {
+                extend(plan, b, todo, k + 1, out);
             }
         }
-        return mem.facts();
-    }
-
-    /** Join conditions that the assignment of {@code p} made decidable. */
-    boolean joinsHold(Rule rule, SlotPattern p, Map<String, String> b) {
-        return joinsHold(rule, plan(rule), p, b);
-    }
-
-    private boolean joinsHold(Rule rule, Plan plan, SlotPattern p, Map<String, String> b) {
-        List<SlotPattern> required = rule.required();
-        for (int i = 0; i < required.size(); i++) {
-            SlotPattern q = required.get(i);
-            if (q.joins().isEmpty() || !b.containsKey(q.slot()) || (q != p && !q.joins().contains(p.slot()))) {
-                continue;
-            }
-            if (!allBound(plan.requiredJoins(i), b)) {
-                continue;
-            }
-            if (!conditions.holds(q.condition(), Value.ref(b.get(q.slot())), rule.frame(), b)) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    private static boolean allBound(List<String> slots, Map<String, String> b) {
-        for (int i = 0; i < slots.size(); i++) {
-            if (!b.containsKey(slots.get(i))) {
-                return false;
-            }
-        }
-        return true;
+        b.refs[at] = null;
     }
 
     /**
-     * What joining a rule needs, worked out once per rule: for each required pattern (by position), the other
-     * required patterns in order, and the slots among its joins that are required (the ones a binding must hold
-     * before its condition can be tested).
+     * Whether the join conditions that binding position {@code at} made decidable hold: the condition of each bound
+     * slot that refers to {@code at} (or is {@code at}'s own), once every slot it refers to is bound.
+     * {@code decided}: a position whose condition the index look-up has answered already (-1: none).
      */
-    private record Plan(Map<SlotPattern, List<SlotPattern>> others, List<List<String>> requiredJoins) {
-        static Plan of(Rule rule) {
-            Map<SlotPattern, List<SlotPattern>> others = new java.util.IdentityHashMap<>();
-            List<List<String>> joins = new ArrayList<>();
-            Set<String> requiredSlots = new java.util.HashSet<>();
-            rule.required().forEach(p -> requiredSlots.add(p.slot()));
-            for (SlotPattern p : rule.required()) {
-                others.put(p, rule.required().stream().filter(q -> q != p).toList());
-                joins.add(p.joins().stream().filter(requiredSlots::contains).toList());
+    private boolean joinsHold(JoinPlan plan, int at, int decided, JoinBinding b) {
+        List<SlotPattern> required = plan.rule.required();
+        for (int i = 0; i < required.size(); i++) {
+            int[] js = plan.joins[i];
+            if (js.length == 0 || i == decided || b.refs[i] == null || (i != at && !contains(js, at))
+                    || !allBound(js, b)) {
+                continue;
             }
-            return new Plan(others, joins);
+            if (!conditions.holds(required.get(i).condition(), Value.ref(b.refs[i].name), plan.rule.frame(), b)) {
+                return false;
+            }
         }
+        return true;
+    }
 
-        List<SlotPattern> others(SlotPattern start) {
-            return others.get(start);
+    private static boolean contains(int[] xs, int x) {
+        for (int v : xs) {
+            if (v == x) {
+                return true;
+            }
         }
+        return false;
+    }
 
-        List<String> requiredJoins(int index) {
-            return requiredJoins.get(index);
+    private static boolean allBound(int[] positions, JoinBinding b) {
+        for (int p : positions) {
+            if (b.refs[p] == null) {
+                return false;
+            }
         }
+        return true;
     }
 }

@@ -53,9 +53,10 @@ final class Supports {
         return out;
     }
 
-    Set<String> dependentsOf(String fact) {
+    /** The derived instances resting directly on a fact, in the order they were made (a copy). */
+    List<String> dependentsOf(String fact) {
         FactView.Fact f = facts.get(fact);
-        return f == null || f.dependents == null ? Set.of() : Set.copyOf(f.dependents);
+        return f == null || f.dependents == null ? List.of() : List.copyOf(f.dependents);
     }
 
     /** Records a new derived instance and, for a firing, what its unshared and unique slots now hold. */
@@ -65,18 +66,14 @@ final class Supports {
 
     /**
      * As {@link #record(Derivation, Optional)}, with the records of (some of) the supporting instances already at
-     * hand: {@code known} are the first supports in order; the others are looked up.
+     * hand in {@code known}; the others are looked up.
      */
     void record(Derivation d, Optional<Rule> rule, FactView.Fact[] known) {
         facts.touch(d.instance()).derivation = d;
         List<String> supports = d.supports();
         for (int i = 0; i < supports.size(); i++) {
-            FactView.Fact f = i < known.length && known[i].name.equals(supports.get(i)) ? known[i]
-                    : facts.touch(supports.get(i));
-            if (f.dependents == null) {
-                f.dependents = new LinkedHashSet<>(4);
-            }
-            f.dependents.add(d.instance());
+            FactView.Fact f = recordOf(supports.get(i), known);
+            f.dependent(d.instance());
         }
         rule.filter(r -> r.claims()).ifPresent(r -> {
             List<String> held = new ArrayList<>();
@@ -94,6 +91,16 @@ final class Supports {
             });
             heldBy.put(d.instance(), held);
         });
+    }
+
+    /** The record of a fact: one of {@code known} when it is there (a few, compared by name), else looked up. */
+    private FactView.Fact recordOf(String name, FactView.Fact[] known) {
+        for (FactView.Fact k : known) {
+            if (k.name.equals(name)) {
+                return k;
+            }
+        }
+        return facts.touch(name);
     }
 
     /** Forgets a derived instance; returns its derivation. Its claims and keys are freed. */

@@ -3,7 +3,10 @@ package org.kicnp.inference;
 import org.kicnp.core.Condition;
 import org.kicnp.core.Value;
 
-/** Comparison of slot values: numbers compare across integer and float, text with text, the rest by equality. */
+/**
+ * Comparison of slot values: numbers compare across integer and float (numerically: {@code -0.0 == 0}), text with
+ * text, the rest by equality.
+ */
 final class Values {
     private Values() {
     }
@@ -26,7 +29,9 @@ final class Values {
             if (a instanceof Value.Int x && b instanceof Value.Int y) {
                 return Long.compare(x.value(), y.value());
             }
-            return Double.compare(number(a), number(b));
+            double x = number(a);
+            double y = number(b);
+            return x < y ? -1 : x > y ? 1 : x == y ? 0 : Double.compare(x, y);
         }
         if (a instanceof Value.Str x && b instanceof Value.Str y) {
             return x.value().compareTo(y.value());
@@ -40,6 +45,18 @@ final class Values {
             return Value.of((long) r.value());
         }
         return v;
+    }
+
+    /** The largest integer a double holds exactly: above it, an integer and a float may meet under one key unequal. */
+    private static final long EXACT = 1L << 53;
+
+    /**
+     * Whether values meeting under this index key (see {@link #key}) are certainly equal by {@link #test} with
+     * {@code EQ}, so that a hash look-up decides an equality condition by itself: every key but a large integer,
+     * which a float beyond 2^53 may round to.
+     */
+    static boolean exactKey(Value key) {
+        return !(key instanceof Value.Int i) || (i.value() <= EXACT && i.value() >= -EXACT);
     }
 
     private static boolean isNumber(Value v) {

@@ -1,0 +1,88 @@
+package org.kicnp.inference;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import org.junit.jupiter.api.Test;
+import org.kicnp.core.DataType;
+import org.kicnp.core.Frame;
+import org.kicnp.core.Provenance;
+import org.kicnp.core.Slot;
+import org.kicnp.core.Value;
+
+/**
+ * Joins answered from a hash index: the look-up decides an equality condition by itself only where the index key
+ * compares exactly, and numbers compare numerically ({@code -0.0 == 0}).
+ */
+class JoinIndexTest {
+
+    /** {@code Same(mA: A, mB: B .v == mA.v)} over a float slot {@code v} in both classes. */
+    private static Fixture floats() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("A").slot(Slot.builder("v", DataType.FLOAT).build()).build());
+        f.kb.add(Frame.classFrame("B").slot(Slot.builder("v", DataType.FLOAT).build()).build());
+        f.kb.add(Frame.classFrame("Same").slot(Fixture.inst("mA", "A")).slot(Fixture.inst("mB", "B", ".v == mA.v"))
+                .build());
+        return f;
+    }
+
+    private static void reading(Fixture f, String name, String cls, double v) {
+        f.kb.add(Frame.instance(name, cls).provenance(Provenance.RUNTIME)
+                .slot(Slot.ofValue("v", DataType.FLOAT, Value.of(v))).build());
+    }
+
+    @Test
+    void join_whenHugeFloatsShareAnIndexKey_testsTheConditionAndBindsOnlyTheEqualOne() {
+        Fixture f = floats();
+        InferenceEngine e = f.engine();
+        reading(f, "a1", "A", 1e300);
+        reading(f, "b1", "B", 1e301); // beyond a long: both fall under one index key
+        assertThat(e.runToQuiescence()).isZero();
+
+        reading(f, "b2", "B", 1e300);
+        assertThat(e.runToQuiescence()).isEqualTo(1);
+        assertThat(f.instancesOf("Same")).singleElement()
+                .satisfies(i -> assertThat(f.kb.value(i, "mB")).contains(Value.ref("b2")));
+    }
+
+    @Test
+    void join_whenNegativeZeroMeetsZero_holds_fromEitherSide() {
+        Fixture f = floats();
+        InferenceEngine e = f.engine();
+        reading(f, "a1", "A", -0.0);
+        reading(f, "b1", "B", 0.0);
+        assertThat(e.runToQuiescence()).isEqualTo(1);
+
+        reading(f, "b2", "B", -0.0);
+        reading(f, "a2", "A", 0.0);
+        assertThat(e.runToQuiescence()).isEqualTo(3);
+        assertThat(f.instancesOf("Same")).hasSize(4);
+    }
+
+    @Test
+    void join_whenFractionsAreEqualOrNot_bindsByValue() {
+        Fixture f = floats();
+        InferenceEngine e = f.engine();
+        reading(f, "a1", "A", 0.25);
+        reading(f, "b1", "B", 0.5);
+        reading(f, "b2", "B", 0.25);
+        assertThat(e.runToQuiescence()).isEqualTo(1);
+        assertThat(f.kb.value(f.instancesOf("Same").getFirst(), "mB")).contains(Value.ref("b2"));
+    }
+
+    @Test
+    void fire_whenAFrameAlreadyHasTheNextDerivedName_takesTheNextNameAndFires() {
+        Fixture f = new Fixture();
+        f.cls("Stimulus", null).cls("Thing", null);
+        f.kb.add(Frame.classFrame("Echo").slot(Fixture.inst("mIn", "Stimulus")).build());
+        f.assertFact("Echo-1", "Thing");
+        InferenceEngine e = f.engine();
+        f.assertFact("s1", "Stimulus");
+
+        assertThat(e.runToQuiescence()).isEqualTo(1);
+
+        assertThat(f.instancesOf("Echo")).singleElement().isNotEqualTo("Echo-1")
+                .satisfies(i -> assertThat(f.kb.value(i, "mIn")).contains(Value.ref("s1")));
+        assertThat(f.kb.require("Echo-1").parent()).contains("Thing");
+        assertThat(f.trace).noneMatch(t -> t instanceof TraceEvent.Blocked);
+    }
+}
