@@ -26,9 +26,14 @@ final class DroolsInferenceRun {
         }
     }
 
-    /** Compiles the workload's DRL with the executable model; takes a few seconds. */
+    /** Compiles the workload's DRL (plain {@code insert}) with the executable model; takes a few seconds. */
     static DroolsInferenceRun compile() {
-        KieBase kb = new KieHelper().addContent(InferenceWorkload.drl(), ResourceType.DRL)
+        return compile(false);
+    }
+
+    /** As {@link #compile()}; with {@code logical}, the rules insert derived facts with {@code insertLogical}. */
+    static DroolsInferenceRun compile(boolean logical) {
+        KieBase kb = new KieHelper().addContent(InferenceWorkload.drl(logical), ResourceType.DRL)
                 .build(ExecutableModelProject.class);
         return new DroolsInferenceRun(kb);
     }

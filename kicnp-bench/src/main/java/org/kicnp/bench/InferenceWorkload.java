@@ -122,13 +122,21 @@ record InferenceWorkload(int n) {
         return new Change.Add(f);
     }
 
+    /** The DRL with derived facts inserted plainly ({@code insert}): they stay when what they were made from goes. */
+    static String drl() {
+        return drl(false);
+    }
+
     /**
-     * The same hierarchy and rules in DRL: declared types, salience = the K-ICNP priority, derived facts inserted. Each
+     * The same hierarchy and rules in DRL: declared types, salience = the K-ICNP priority, derived facts inserted
+     * ({@code insert}) or, with {@code logical}, inserted logically ({@code insertLogical}: Drools' truth maintenance,
+     * the derived fact is retracted when the match that justified it no longer holds, as K-ICNP retracts a derived
+     * instance when an instance it rests on goes). Each
      * join binds the key first ({@code $k : mP.mA.key}) and compares the other fact's field to it, the form Drools
      * answers from a hash index (comparing to a path such as {@code $t.mP.mA.key} it would not index, and every join
      * would scan the other side: that would be unfair to Drools).
      */
-    static String drl() {
+    static String drl(boolean logical) {
         return """
                 package %1$s;
 
@@ -157,22 +165,23 @@ record InferenceWorkload(int n) {
                     $a : StimA( $k : key )
                     $b : StimB( key == $k )
                 then
-                    insert( new Pair( $a, $b ) );
+                    %5$s( new Pair( $a, $b ) );
                 end
 
                 rule "Triple" salience %3$d when
                     $p : Pair( $k : mA.key )
                     $c : StimC( key == $k )
                 then
-                    insert( new Triple( $p, $c ) );
+                    %5$s( new Triple( $p, $c ) );
                 end
 
                 rule "Alert" salience %4$d when
                     $t : Triple( $k : mP.mA.key )
                     $a : StimA( key == $k )
                 then
-                    insert( new Alert( $t, $a ) );
+                    %5$s( new Alert( $t, $a ) );
                 end
-                """.formatted(DRL_PACKAGE, priority("Pair"), priority("Triple"), priority("Alert"));
+                """.formatted(DRL_PACKAGE, priority("Pair"), priority("Triple"), priority("Alert"),
+                logical ? "insertLogical" : "insert");
     }
 }

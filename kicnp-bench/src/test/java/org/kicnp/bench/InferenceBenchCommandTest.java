@@ -33,6 +33,17 @@ class InferenceBenchCommandTest {
     }
 
     @Test
+    void droolsWithInsertLogical_firesAsOften_andItsDrlUsesTruthMaintenance() {
+        InferenceWorkload w = new InferenceWorkload(203);
+
+        EngineResult logical = DroolsInferenceRun.compile(true).run(w);
+
+        assertThat(logical.firings()).isEqualTo(w.expectedFirings());
+        assertThat(InferenceWorkload.drl(true)).contains("insertLogical( new Pair").doesNotContain("  insert(");
+        assertThat(InferenceWorkload.drl(false)).contains("insert( new Alert").doesNotContain("insertLogical");
+    }
+
+    @Test
     void check_whenTheEnginesFireDifferently_failsNamingBothCounts() {
         InferenceWorkload w = new InferenceWorkload(8);
 
@@ -58,13 +69,17 @@ class InferenceBenchCommandTest {
         assertThat(json.fieldNames()).toIterable()
                 .containsExactly("runs", "script_us_median", "stimulus_to_action_us_p99");
         JsonNode run = json.get("runs").get(0);
-        assertThat(run.fieldNames()).toIterable().containsExactly("n", "firings", "kicnp_s", "drools_s", "ratio");
+        assertThat(run.fieldNames()).toIterable().containsExactly("n", "firings", "kicnp_s", "drools_s", "ratio",
+                "drools_logical_s", "ratio_logical");
         assertThat(run.get("n").asInt()).isEqualTo(200);
         assertThat(run.get("firings").asLong()).isEqualTo(new InferenceWorkload(200).expectedFirings()).isEqualTo(400);
         assertThat(run.get("kicnp_s").asDouble()).isPositive();
         assertThat(run.get("drools_s").asDouble()).isPositive();
         assertThat(run.get("ratio").asDouble())
                 .isCloseTo(run.get("kicnp_s").asDouble() / run.get("drools_s").asDouble(), org.assertj.core.data.Percentage.withPercentage(1));
+        assertThat(run.get("ratio_logical").asDouble()).isCloseTo(
+                run.get("kicnp_s").asDouble() / run.get("drools_logical_s").asDouble(),
+                org.assertj.core.data.Percentage.withPercentage(1));
         assertThat(json.get("script_us_median").asDouble()).isPositive();
         assertThat(json.get("stimulus_to_action_us_p99").asDouble()).isPositive();
     }

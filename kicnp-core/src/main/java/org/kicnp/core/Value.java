@@ -46,6 +46,15 @@ public sealed interface Value permits Value.Str, Value.Int, Value.Real, Value.Bo
         @Override public String text() {
             return value;
         }
+
+        /* Written out: values are hash keys on the hot paths of matching, where the generated methods cost more. */
+        @Override public boolean equals(Object o) {
+            return o instanceof Str t && t.value.equals(value);
+        }
+
+        @Override public int hashCode() {
+            return value.hashCode();
+        }
     }
 
     /** A 64-bit integer value. */
@@ -57,6 +66,15 @@ public sealed interface Value permits Value.Str, Value.Int, Value.Real, Value.Bo
         @Override public String text() {
             return Long.toString(value);
         }
+
+        /* Written out: values are hash keys on the hot paths of matching, where the generated methods cost more. */
+        @Override public boolean equals(Object o) {
+            return o instanceof Int i && i.value == value;
+        }
+
+        @Override public int hashCode() {
+            return Long.hashCode(value);
+        }
     }
 
     /** A floating-point value. */
@@ -67,6 +85,15 @@ public sealed interface Value permits Value.Str, Value.Int, Value.Real, Value.Bo
 
         @Override public String text() {
             return Double.toString(value);
+        }
+
+        /* Written out: values are hash keys on the hot paths of matching, where the generated methods cost more. */
+        @Override public boolean equals(Object o) {
+            return o instanceof Real r && Double.compare(r.value, value) == 0;
+        }
+
+        @Override public int hashCode() {
+            return Double.hashCode(value);
         }
     }
 
@@ -99,6 +126,15 @@ public sealed interface Value permits Value.Str, Value.Int, Value.Real, Value.Bo
 
         @Override public String text() {
             return frame;
+        }
+
+        /* Written out: values are hash keys on the hot paths of matching, where the generated methods cost more. */
+        @Override public boolean equals(Object o) {
+            return o instanceof Ref r && r.frame.equals(frame);
+        }
+
+        @Override public int hashCode() {
+            return frame.hashCode();
         }
     }
 

@@ -139,12 +139,7 @@ final class FactView implements Conditions.Reader {
 
     /** The fact of that name, made (without a frame) when there is none yet. */
     Fact touch(String name) {
-        Fact f = facts.get(name);
-        if (f == null) {
-            f = new Fact(name);
-            facts.put(name, f);
-        }
-        return f;
+        return facts.computeIfAbsent(name, Fact::new);
     }
 
     /** The fact of that name, or null. */
