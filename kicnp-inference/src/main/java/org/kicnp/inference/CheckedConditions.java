@@ -16,29 +16,51 @@ final class CheckedConditions {
     private CheckedConditions() {
     }
 
-    static List<Derivation.CheckedCondition> of(Rule r, Map<String, String> binding, Conditions conditions) {
+    /**
+     * The checked conditions of a firing of {@code r} with {@code binding} (slot → instance); {@code refs} are the
+     * records of the facts bound to the required slots, in the rule's order, so their values are read without a
+     * look-up by name.
+     */
+    static List<Derivation.CheckedCondition> of(Rule r, Map<String, String> binding, FactView.Fact[] refs,
+            FactView facts, Conditions conditions) {
         List<Derivation.CheckedCondition> out = new ArrayList<>(r.patterns().size());
+        List<SlotPattern> required = r.required();
         for (SlotPattern p : r.patterns()) {
             String fact = binding.get(p.slot());
             if (fact == null) {
                 continue;
             }
-            String value = left(p.condition()).flatMap(path -> conditions.follow(Value.ref(fact), path))
-                    .map(Value::text).orElse(fact);
+            List<String> path = left(p.condition());
+            String value = fact;
+            if (path != null) {
+                int at = positionOf(required, p);
+                Optional<Value> v = at >= 0 && at < refs.length && refs[at].name.equals(fact)
+                        ? facts.follow(refs[at], path, conditions) : conditions.follow(Value.ref(fact), path);
+                value = v.map(Value::text).orElse(fact);
+            }
             out.add(new Derivation.CheckedCondition(p.slot(), p.conditionText(), value));
         }
         return out;
     }
 
-    /** The path a condition tests from the candidate, for the conditions that have one. */
-    private static Optional<List<String>> left(Condition c) {
+    private static int positionOf(List<SlotPattern> required, SlotPattern p) {
+        for (int i = 0; i < required.size(); i++) {
+            if (required.get(i) == p) {
+                return i;
+            }
+        }
+        return -1;
+    }
+
+    /** The path a condition tests from the candidate, for the conditions that have one; null for the others. */
+    private static List<String> left(Condition c) {
         return switch (c) {
-            case Condition.Compare x -> Optional.of(x.left());
-            case Condition.Between x -> Optional.of(x.left());
-            case Condition.OneOf x -> Optional.of(x.left());
-            case Condition.Matches x -> Optional.of(x.left());
-            case Condition.Any x -> Optional.empty();
-            case Condition.Script x -> Optional.empty();
+            case Condition.Compare x -> x.left();
+            case Condition.Between x -> x.left();
+            case Condition.OneOf x -> x.left();
+            case Condition.Matches x -> x.left();
+            case Condition.Any x -> null;
+            case Condition.Script x -> null;
         };
     }
 }

@@ -166,6 +166,18 @@ final class FactView implements Conditions.Reader {
         return value(facts.get(frame), frame, slot);
     }
 
+    /**
+     * The value {@code path} reaches from a fact, the first step read from the fact's own frame without a look-up
+     * and the rest followed by {@code conditions}.
+     */
+    Optional<Value> follow(Fact fact, List<String> path, Conditions conditions) {
+        if (path.isEmpty()) {
+            return Optional.of(Value.ref(fact.name));
+        }
+        Optional<Value> first = value(fact, fact.name, path.getFirst());
+        return path.size() == 1 || first.isEmpty() ? first : conditions.follow(first.get(), path, 1);
+    }
+
     /** As {@link #value(String, String)}, with the instance's record (may be null) at hand. */
     Optional<Value> value(Fact f, String frame, String slot) {
         if (f != null && f.frame != null) {

@@ -1,5 +1,6 @@
 package org.kicnp.inference;
 
+import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.LinkedHashMap;
@@ -42,6 +43,12 @@ final class ForwardChainer {
     private final BooleanSupplier tracing;
     private final FactView facts;
     private final Map<String, Rule> rules = new LinkedHashMap<>();
+    /**
+     * The records of instances this engine fired, in the order added, until their events arrive: an instance's event
+     * then finds its record here instead of by name (the events come in the order of the additions).
+     */
+    private final ArrayDeque<FactView.Fact> madeAwaitingEvent = new ArrayDeque<>();
+    private static final int MADE_AWAITING_MAX = 4_096;
     private long stampCounter;
     private long seq;
     private long firings;
@@ -143,7 +150,9 @@ final class ForwardChainer {
     private void factAdded(Frame f) {
         long stamp = ++stampCounter;
         String cls = f.parent().orElseThrow();
-        FactView.Fact fact = facts.put(f);
+        FactView.Fact fact = madeAwaitingEvent.isEmpty() || !madeAwaitingEvent.peekFirst().name.equals(f.name())
+                ? facts.put(f) : madeAwaitingEvent.pollFirst();
+        fact.frame = f;
         fact.stamp = stamp;
         if (tracing.getAsBoolean()) {
             trace(new TraceEvent.FactAsserted(f.name(), cls, stamp));
@@ -371,18 +380,22 @@ final class ForwardChainer {
                 }
             }
         }
-        List<Derivation.CheckedCondition> checked = CheckedConditions.of(r, full, conditions);
+        List<Derivation.CheckedCondition> checked = CheckedConditions.of(r, full, refs, facts, conditions);
         long firing = ++firings;
         String name;
         while (true) {
             name = newName(r.frame());
             Derivation d = new Derivation(name, r.frame(), full, checked, firing, trigger, Optional.empty());
             supports.markFired(a.key(), refs);
-            supports.record(d, Optional.of(r), refs);
+            FactView.Fact made = supports.record(d, Optional.of(r), refs);
             Frame.Builder b = Frame.instance(name, r.frame()).provenance(Provenance.RUNTIME);
             full.forEach((slot, fact) -> b.slot(Slot.builder(slot, DataType.INSTANCE).value(Value.ref(fact)).build()));
             try {
                 kb.add(b.build());
+                if (madeAwaitingEvent.size() >= MADE_AWAITING_MAX) {
+                    madeAwaitingEvent.clear(); // only a short cut: a record not found here is looked up by name
+                }
+                madeAwaitingEvent.add(made);
                 break;
             } catch (KnowledgeException e) {
                 supports.release(name);

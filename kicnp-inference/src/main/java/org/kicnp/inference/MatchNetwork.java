@@ -182,13 +182,9 @@ final class MatchNetwork {
         return mems == null || !mems.containsKey(slot) ? 0 : mems.get(slot).size();
     }
 
-    /** The value {@code path} reaches from a fact: the first step read from the fact's own frame, without a look-up. */
+    /** The value {@code path} reaches from a fact (see {@link FactView#follow}). */
     private Optional<Value> follow(FactView.Fact fact, List<String> path) {
-        if (path.isEmpty()) {
-            return Optional.of(Value.ref(fact.name));
-        }
-        Optional<Value> first = facts.value(fact, fact.name, path.getFirst());
-        return path.size() == 1 || first.isEmpty() ? first : conditions.follow(first.get(), path, 1);
+        return facts.follow(fact, path, conditions);
     }
 
     /** Enters the fact into the memory when its constant conditions hold; false when not, or when it is in already. */

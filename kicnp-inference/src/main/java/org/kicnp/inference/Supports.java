@@ -66,10 +66,11 @@ final class Supports {
 
     /**
      * As {@link #record(Derivation, Optional)}, with the records of (some of) the supporting instances already at
-     * hand in {@code known}; the others are looked up.
+     * hand in {@code known}; the others are looked up. Returns the new instance's record.
      */
-    void record(Derivation d, Optional<Rule> rule, FactView.Fact[] known) {
-        facts.touch(d.instance()).derivation = d;
+    FactView.Fact record(Derivation d, Optional<Rule> rule, FactView.Fact[] known) {
+        FactView.Fact self = facts.touch(d.instance());
+        self.derivation = d;
         List<String> supports = d.supports();
         for (int i = 0; i < supports.size(); i++) {
             FactView.Fact f = recordOf(supports.get(i), known);
@@ -91,6 +92,7 @@ final class Supports {
             });
             heldBy.put(d.instance(), held);
         });
+        return self;
     }
 
     /** The record of a fact: one of {@code known} when it is there (a few, compared by name), else looked up. */
