@@ -22,7 +22,7 @@ final class MatchNetwork {
     private final Conditions conditions;
     private final Map<String, Map<String, AlphaMemory>> memoriesByRule = new HashMap<>();
     private final Map<String, List<AlphaMemory>> byClass = new HashMap<>();
-    /** Where each fact's memories are listed (its {@link FactView.Fact}). */
+    /** The engine's records of the facts; each holds its memberships of the memories. */
     private final FactView facts;
     /** Per class, the memories an instance of it enters (its own and its ancestors'); dropped on any class change. */
     private final Map<String, List<AlphaMemory>> entryCache = new HashMap<>();
