@@ -15,6 +15,7 @@ final class Activation {
     private final long recency;
     private final long seq;
     private final BindingKey key;
+    private final long rank;
     /** Where the activation sits in the agenda's heap; -1 when it is not queued. */
     int heapIndex = -1;
 
@@ -25,6 +26,12 @@ final class Activation {
         this.recency = recency;
         this.seq = seq;
         this.key = new BindingKey(rule.frame(), facts);
+        this.rank = Agenda.rank(rule);
+    }
+
+    /** The rule's place in the conflict-resolution order ({@link Agenda#rank}). */
+    long rank() {
+        return rank;
     }
 
     Rule rule() {

@@ -12,20 +12,21 @@ import java.util.Optional;
  */
 final class Agenda {
     static final Comparator<Activation> ORDER = (a, b) -> {
-        Rule ra = a.rule();
-        Rule rb = b.rule();
-        int c = Integer.compare(rb.priority(), ra.priority());
-        if (c == 0) {
-            c = Integer.compare(rb.depth(), ra.depth());
-        }
-        if (c == 0) {
-            c = Integer.compare(rb.conditionCount(), ra.conditionCount());
-        }
+        int c = Long.compare(b.rank(), a.rank());
         if (c == 0) {
             c = Long.compare(b.recency(), a.recency());
         }
         return c != 0 ? c : Long.compare(a.seq(), b.seq());
     };
+
+    /**
+     * The rule's part of the order in one number, higher first: priority, then depth, then number of conditions
+     * (depth and conditions above 65,535 count as 65,535), so that ordering activations reads no rule.
+     */
+    static long rank(Rule r) {
+        return ((long) r.priority() << 32) | ((long) Math.min(r.depth(), 0xFFFF) << 16)
+                | Math.min(r.conditionCount(), 0xFFFF);
+    }
 
     private final ActivationHeap queue = new ActivationHeap();
     /** Where each fact's activations are kept (its {@link FactView.Fact}), so a fact leaving withdraws them. */

@@ -2,10 +2,8 @@ package org.kicnp.inference;
 
 import java.util.ArrayList;
 import java.util.Collection;
-import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
-import java.util.Map;
 import java.util.Optional;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
@@ -22,7 +20,7 @@ import org.kicnp.core.Value;
  */
 final class FactView implements Conditions.Reader {
     private final KnowledgeBase kb;
-    private final Map<String, Fact> facts = new HashMap<>();
+    private final NameTable<Fact> facts = new NameTable<>();
 
     /** What the engine knows of one instance. Fields are null until needed. */
     static final class Fact {
@@ -158,7 +156,7 @@ final class FactView implements Conditions.Reader {
 
     /** Every fact (for the rare whole-engine operations). */
     Iterable<Fact> all() {
-        return facts.values();
+        return facts;
     }
 
     @Override public Optional<Value> value(String frame, String slot) {

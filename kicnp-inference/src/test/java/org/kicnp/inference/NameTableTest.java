@@ -1,0 +1,62 @@
+package org.kicnp.inference;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+
+class NameTableTest {
+
+    @Test
+    void putGetAndRemove_inRandomOrder_behaveLikeAHashMap() {
+        Random random = new Random(3);
+        NameTable<String> table = new NameTable<>();
+        Map<String, String> reference = new HashMap<>();
+        List<String> names = new ArrayList<>();
+        for (int i = 0; i < 3_000; i++) {
+            names.add((i % 3 == 0 ? "Pair-" : i % 3 == 1 ? "s" : "Alert-") + i);
+        }
+
+        for (int step = 0; step < 60_000; step++) {
+            String name = names.get(random.nextInt(names.size()));
+            switch (random.nextInt(3)) {
+                case 0 -> assertThat(table.remove(name)).isEqualTo(reference.remove(name));
+                case 1 -> assertThat(table.get(name)).isEqualTo(reference.get(name));
+                default -> {
+                    String v = "v" + step;
+                    String expected = reference.computeIfAbsent(name, k -> v);
+                    assertThat(table.computeIfAbsent(name, k -> v)).isEqualTo(expected);
+                }
+            }
+            assertThat(table.size()).isEqualTo(reference.size());
+        }
+
+        for (String name : names) {
+            assertThat(table.get(name)).isEqualTo(reference.get(name));
+        }
+        List<String> values = new ArrayList<>();
+        table.forEach(values::add);
+        assertThat(values).containsExactlyInAnyOrderElementsOf(reference.values());
+    }
+
+    @Test
+    void grow_thenRemoveEverything_leavesAnEmptyTableThatTakesNamesAgain() {
+        NameTable<Integer> table = new NameTable<>();
+        for (int i = 0; i < 100_000; i++) {
+            table.computeIfAbsent("Triple-" + i, k -> k.length());
+        }
+        assertThat(table.size()).isEqualTo(100_000);
+        assertThat(table.get("Triple-99999")).isEqualTo(12);
+        for (int i = 0; i < 100_000; i++) {
+            assertThat(table.remove("Triple-" + i)).isNotNull();
+        }
+        assertThat(table.size()).isZero();
+        assertThat(table.iterator().hasNext()).isFalse();
+        assertThat(table.get("Triple-5")).isNull();
+        assertThat(table.computeIfAbsent("Triple-5", k -> 1)).isEqualTo(1);
+    }
+}
