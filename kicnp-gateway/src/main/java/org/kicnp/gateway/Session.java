@@ -90,8 +90,16 @@ final class Session {
 
     private void scheduleDrain() {
         if (drainScheduled.compareAndSet(false, true)) {
-            channel.eventLoop().execute(drainTask);
+            io.netty.channel.EventLoop loop = channel.eventLoop();
+            if (!(loop.inEventLoop() && ReadBatch.current().add(this, loop))) {
+                loop.execute(drainTask);
+            }
         }
+    }
+
+    /** Drains the outbox now, at the end of the read batch that wrote to it; on the channel's event loop only. */
+    void drainNow() {
+        drain();
     }
 
     /**
