@@ -170,7 +170,7 @@ final class RelayDriver implements AutoCloseable {
         long expected;
         while (true) {
             List<Histogram> parts = onLoops(loop -> loop.latencies.copy());
-            expected = onLoops(loop -> loop.scheduledInWindow).stream().mapToLong(Long::longValue).sum();
+            expected = onLoops(RelayLoop::scheduledInWindow).stream().mapToLong(Long::longValue).sum();
             all = new Histogram(3);
             parts.forEach(all::add);
             if (all.getTotalCount() >= expected || System.nanoTime() > deadline) {

@@ -73,6 +73,7 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter {
     }
 
     @Override public void channelRead(ChannelHandlerContext ctx, Object msg) {
+        ReadBatch.current().open();
         if (msg instanceof InboundRelay relay) {
             try {
                 relay(relay);
@@ -84,6 +85,12 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter {
         } else {
             ctx.fireChannelRead(msg);
         }
+    }
+
+    /** The end of this connection's batch of reads: what the batch sent is written and flushed now. */
+    @Override public void channelReadComplete(ChannelHandlerContext ctx) {
+        ReadBatch.current().close();
+        ctx.fireChannelReadComplete();
     }
 
     /**

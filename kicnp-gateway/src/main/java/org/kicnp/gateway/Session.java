@@ -20,9 +20,10 @@ import org.kicnp.protocol.MessageCodec;
  * One agent connection as the server agent sees it: who it is once authenticated, whether it registered, what it
  * subscribed to, and how many messages to it were shed in a row. State changes happen on the channel's event loop.
  *
- * <p>Outgoing messages wait in an outbox that the channel's event loop drains in one task, writing them all as one
- * buffer and flushing once: a burst of relays to one agent costs one task, one wake-up, one buffer and one system
- * call, not one of each per message, whichever thread the messages come from.
+ * <p>Outgoing messages wait in an outbox that the channel's event loop drains in one go, writing them all as one
+ * buffer and flushing once: a burst of relays to one agent costs one wake-up, one buffer and one system call, not one
+ * of each per message, whichever thread the messages come from. Messages queued on the channel's own loop while a
+ * connection's reads are handled are drained when that read batch ends ({@link ReadBatch}); others by a task.
  */
 final class Session {
     enum State { NEW, AUTHENTICATED, REGISTERED, CLOSING }
@@ -90,8 +91,16 @@ final class Session {
 
     private void scheduleDrain() {
         if (drainScheduled.compareAndSet(false, true)) {
-            channel.eventLoop().execute(drainTask);
+            io.netty.channel.EventLoop loop = channel.eventLoop();
+            if (!(loop.inEventLoop() && ReadBatch.current().add(this, loop))) {
+                loop.execute(drainTask);
+            }
         }
+    }
+
+    /** Drains the outbox now, at the end of the read batch that wrote to it; on the channel's event loop only. */
+    void drainNow() {
+        drain();
     }
 
     /**

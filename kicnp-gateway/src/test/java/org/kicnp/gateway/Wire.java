@@ -26,6 +26,11 @@ final class Wire {
         ServerAgent server = ServerAgent.create(config, agents, kb, feedback, Retraction.removeFrom(kb), metrics);
         kb.addListener(server.knowledge());
         serverOut[0] = server;
+        return channel(config, server, metrics);
+    }
+
+    /** Another connection to the same server agent (with the real pipeline). */
+    static EmbeddedChannel channel(GatewayConfig config, ServerAgent server, GatewayMetrics metrics) {
         GatewayInitializer init = new GatewayInitializer(config, server, metrics,
                 new io.netty.channel.group.DefaultChannelGroup(io.netty.util.concurrent.GlobalEventExecutor.INSTANCE));
         return new EmbeddedChannel(new ChannelInitializer<EmbeddedChannel>() {
