@@ -6,11 +6,12 @@ import java.util.Optional;
 
 /**
  * The one-pass byte scanner behind {@link RelayRoute}: reads a relay's routing members without a JSON library and
- * without allocating anything but the few short strings it returns. It accepts only a strict subset of JSON — one
- * object whose members are strings (and {@code "v":1}), no escapes in member names or in the routing members,
- * well-formed UTF-8 and escapes in the subject and body — and gives {@code null} for anything else, which then
- * takes the general decoder's path. Whatever it accepts, the general decoder decodes to the same relay.
- * Not thread-safe; one per use ({@link RelayRoute#scan} makes one per payload, on the stack).
+ * without allocating anything but the few short strings it returns (names that repeat come from {@link NameCache}).
+ * It accepts only a strict subset of JSON — one object whose members are strings (and {@code "v":1}), no escapes in
+ * member names or in the routing members, well-formed UTF-8 and escapes in the subject and body — and gives
+ * {@code null} for anything else, which then takes the general decoder's path. Whatever it accepts, the general
+ * decoder decodes to the same relay. Not thread-safe; one per use ({@link RelayRoute#scan} makes one per payload, on
+ * the stack).
  */
 final class RelayScanner {
     private static final int ID = 0;
@@ -91,8 +92,10 @@ final class RelayScanner {
                     if (escaped) {
                         return null;
                     }
-                    // An empty member (the id of every fire-and-forget relay) is the one empty string.
-                    String t = strEnd == strStart ? "" : new String(b, strStart, strEnd - strStart, UTF_8);
+                    // Names repeat from relay to relay: answered from NameCache (the empty id of every
+                    // fire-and-forget relay is the one empty string).
+                    String t = member == ID && strEnd != strStart ? new String(b, strStart, strEnd - strStart, UTF_8)
+                            : NameCache.of(b, strStart, strEnd);
                     switch (member) {
                         case ID -> id = t;
                         case FROM -> from = t;
