@@ -71,11 +71,10 @@ final class Supports {
     FactView.Fact record(Derivation d, Optional<Rule> rule, FactView.Fact[] known) {
         FactView.Fact self = facts.touch(d.instance());
         self.derivation = d;
-        List<String> supports = d.supports();
-        for (int i = 0; i < supports.size(); i++) {
-            FactView.Fact f = recordOf(supports.get(i), known);
-            f.dependent(d.instance());
+        for (String support : d.binding().values()) { // d.supports() without making its list
+            recordOf(support, known).dependent(d.instance());
         }
+        d.createdBy().ifPresent(c -> recordOf(c, known).dependent(d.instance()));
         rule.filter(r -> r.claims()).ifPresent(r -> {
             List<String> held = new ArrayList<>();
             for (SlotPattern p : r.patterns()) {
