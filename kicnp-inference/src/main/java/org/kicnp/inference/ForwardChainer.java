@@ -1,6 +1,5 @@
 package org.kicnp.inference;
 
-import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.LinkedHashMap;
@@ -43,16 +42,10 @@ final class ForwardChainer {
     private final BooleanSupplier tracing;
     private final FactView facts;
     private final Map<String, Rule> rules = new LinkedHashMap<>();
-    /**
-     * The records of instances this engine fired, in the order added, until their events arrive: an instance's event
-     * then finds its record here instead of by name (the events come in the order of the additions).
-     */
-    private final ArrayDeque<FactView.Fact> madeAwaitingEvent = new ArrayDeque<>();
-    private static final int MADE_AWAITING_MAX = 4_096;
+    private final MadeInstances made;
     private long stampCounter;
     private long seq;
     private long firings;
-    private long names;
 
     ForwardChainer(KnowledgeBase kb, FactView facts, Conditions conditions, Supports supports, ScriptCalls scripts,
                    Consumer<TraceEvent> tracer, BooleanSupplier tracing) {
@@ -66,6 +59,7 @@ final class ForwardChainer {
         this.supports = supports;
         this.scripts = scripts;
         this.tracer = tracer;
+        this.made = new MadeInstances(kb);
     }
 
     /** Stamps the instances there are and installs every behavior frame, matching what is already there. */
@@ -150,8 +144,10 @@ final class ForwardChainer {
     private void factAdded(Frame f) {
         long stamp = ++stampCounter;
         String cls = f.parent().orElseThrow();
-        FactView.Fact fact = madeAwaitingEvent.isEmpty() || !madeAwaitingEvent.peekFirst().name.equals(f.name())
-                ? facts.put(f) : madeAwaitingEvent.pollFirst();
+        FactView.Fact fact = made.take(f);
+        if (fact == null) {
+            fact = facts.touch(f.name());
+        }
         fact.frame = f;
         fact.stamp = stamp;
         if (tracing.getAsBoolean()) {
@@ -183,7 +179,7 @@ final class ForwardChainer {
                 d.get().binding().forEach((slot, fact) -> network.rematch(r.frame(), slot, fact).forEach(this::reconsider));
             }
         }
-        retract(orphans, "it rests on '" + name + "', which was removed");
+        removeQuietly(orphans, "it rests on '" + name + "', which was removed");
         facts.remove(name);
     }
 
@@ -244,7 +240,7 @@ final class ForwardChainer {
                         unmarkFired(d);
                         Set<String> all = new LinkedHashSet<>(List.of(dep));
                         all.addAll(supports.closure(dep));
-                        retract(all, "the condition of slot '" + slot + "' of '" + d.frame()
+                        removeQuietly(all, "the condition of slot '" + slot + "' of '" + d.frame()
                                 + "' no longer holds after " + why);
                     }));
         }
@@ -290,7 +286,8 @@ final class ForwardChainer {
                 unmarkFired(d);
                 Set<String> all = new LinkedHashSet<>(List.of(dep));
                 all.addAll(supports.closure(dep));
-                retract(all, "frame '" + frame + "' changed and the condition of slot '" + slot + "' no longer holds");
+                removeQuietly(all, "frame '" + frame + "' changed and the condition of slot '" + slot
+                        + "' no longer holds");
             }));
         }
     }
@@ -346,10 +343,6 @@ final class ForwardChainer {
         }
     }
 
-    private long stamp(String fact) {
-        return facts.stamp(fact);
-    }
-
     /** Fires one activation: creates the instance and runs its onInstantiate script. */
     void fire(Activation a) {
         Rule r = a.rule();
@@ -362,40 +355,21 @@ final class ForwardChainer {
         if (!r.optional().isEmpty()) {
             fillOptional(r, full);
         }
-        String trigger = null;
-        long newest = -1;
         FactView.Fact[] refs = a.refs();
-        for (FactView.Fact f : refs) {
-            if (f.stamp > newest) {
-                newest = f.stamp;
-                trigger = f.name;
-            }
-        }
-        if (full.size() > refs.length) {
-            for (String f : full.values()) {
-                long st = stamp(f);
-                if (st > newest) {
-                    newest = st;
-                    trigger = f;
-                }
-            }
-        }
+        String trigger = newest(refs, full);
         List<Derivation.CheckedCondition> checked = CheckedConditions.of(r, full, refs, facts, conditions);
         long firing = ++firings;
         String name;
         while (true) {
-            name = newName(r.frame());
+            name = made.next(r.frame());
             Derivation d = new Derivation(name, r.frame(), full, checked, firing, trigger, Optional.empty());
             supports.markFired(a.key(), refs);
-            FactView.Fact made = supports.record(d, Optional.of(r), refs);
+            FactView.Fact record = supports.record(d, Optional.of(r), refs);
             Frame.Builder b = Frame.instance(name, r.frame()).provenance(Provenance.RUNTIME);
             full.forEach((slot, fact) -> b.slot(Slot.builder(slot, DataType.INSTANCE).value(Value.ref(fact)).build()));
             try {
                 kb.add(b.build());
-                if (madeAwaitingEvent.size() >= MADE_AWAITING_MAX) {
-                    madeAwaitingEvent.clear(); // only a short cut: a record not found here is looked up by name
-                }
-                madeAwaitingEvent.add(made);
+                made.added(record);
                 break;
             } catch (KnowledgeException e) {
                 supports.release(name);
@@ -420,6 +394,28 @@ final class ForwardChainer {
         }
     }
 
+    /** The most recently asserted instance of a binding: the required slots' records, then any optional ones. */
+    private String newest(FactView.Fact[] refs, Map<String, String> full) {
+        String trigger = null;
+        long newest = -1;
+        for (FactView.Fact f : refs) {
+            if (f.stamp > newest) {
+                newest = f.stamp;
+                trigger = f.name;
+            }
+        }
+        if (full.size() > refs.length) {
+            for (String f : full.values()) {
+                long st = facts.stamp(f);
+                if (st > newest) {
+                    newest = st;
+                    trigger = f;
+                }
+            }
+        }
+        return trigger;
+    }
+
     private void fillOptional(Rule r, Map<String, String> full) {
         for (SlotPattern p : r.optional()) {
             String best = null;
@@ -430,7 +426,7 @@ final class ForwardChainer {
                 Map<String, String> trial = new LinkedHashMap<>(full);
                 trial.put(p.slot(), c);
                 if (conditions.holds(p.condition(), Value.ref(c), r.frame(), trial)
-                        && (best == null || stamp(c) > stamp(best))) {
+                        && (best == null || facts.stamp(c) > facts.stamp(best))) {
                     best = c;
                 }
             }
@@ -487,10 +483,7 @@ final class ForwardChainer {
         return all;
     }
 
-    private void retract(Set<String> names, String reason) {
-        removeQuietly(names, reason);
-    }
-
+    /** Retracts the instances that are still there, in one batch, tracing each with the reason; a refusal is logged. */
     private void removeQuietly(Collection<String> names, String reason) {
         List<String> live = names.stream().filter(kb::contains).toList();
         if (live.isEmpty()) {
@@ -504,22 +497,9 @@ final class ForwardChainer {
         }
     }
 
-    /**
-     * The next name for an instance of {@code prefix}: {@code Prefix-N} with the engine's counter. Whether a frame
-     * of that name exists already is found by the knowledge base when the instance is added ({@link #fire} then takes
-     * the next name), so the usual case costs no look-up.
-     */
-    private String newName(String prefix) {
-        return prefix + "-" + (++names);
-    }
-
     /** The next {@code Prefix-N} name that no frame has now (for instances that scripts create). */
     String freshName(String prefix) {
-        String n;
-        do {
-            n = newName(prefix);
-        } while (kb.contains(n));
-        return n;
+        return made.fresh(prefix);
     }
 
     private void trace(TraceEvent e) {

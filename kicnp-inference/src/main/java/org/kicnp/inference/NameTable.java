@@ -33,33 +33,16 @@ final class NameTable<V> implements Iterable<V> {
 
     @SuppressWarnings("unchecked")
     V get(String key) {
-        int h = key.hashCode();
-        int mask = keys.length - 1;
-        for (int i = slot(h); ; i = i + 1 & mask) {
-            String k = keys[i];
-            if (k == null) {
-                return null;
-            }
-            if (hashes[i] == h && (k == key || k.equals(key))) {
-                return (V) values[i];
-            }
-        }
+        return (V) values[slotOf(key, key.hashCode())];
     }
 
     /** The value of {@code key}, made by {@code make} and stored when there is none (one probe sequence either way). */
     @SuppressWarnings("unchecked")
     V computeIfAbsent(String key, Function<String, V> make) {
         int h = key.hashCode();
-        int mask = keys.length - 1;
-        int i = slot(h);
-        for (; ; i = i + 1 & mask) {
-            String k = keys[i];
-            if (k == null) {
-                break;
-            }
-            if (hashes[i] == h && (k == key || k.equals(key))) {
-                return (V) values[i];
-            }
+        int i = slotOf(key, h);
+        if (keys[i] != null) {
+            return (V) values[i];
         }
         V v = make.apply(key);
         keys[i] = key;
@@ -74,18 +57,23 @@ final class NameTable<V> implements Iterable<V> {
     /** Removes the entry of {@code key}; returns its value, or null when there was none. */
     @SuppressWarnings("unchecked")
     V remove(String key) {
-        int h = key.hashCode();
+        int i = slotOf(key, key.hashCode());
+        if (keys[i] == null) {
+            return null;
+        }
+        V old = (V) values[i];
+        size--;
+        closeGap(i);
+        return old;
+    }
+
+    /** The slot holding {@code key} (of hash {@code h}), or the empty slot that ends its probe run. */
+    private int slotOf(String key, int h) {
         int mask = keys.length - 1;
         for (int i = slot(h); ; i = i + 1 & mask) {
             String k = keys[i];
-            if (k == null) {
-                return null;
-            }
-            if (hashes[i] == h && (k == key || k.equals(key))) {
-                V old = (V) values[i];
-                size--;
-                closeGap(i);
-                return old;
+            if (k == null || hashes[i] == h && (k == key || k.equals(key))) {
+                return i;
             }
         }
     }

@@ -76,8 +76,24 @@ public final class Proxies {
         Object javaValue();
     }
 
-    private record ReadOnlyObject(Map<String, Object> members, Map<String, ?> source)
-            implements ProxyObject, Unwrappable {
+    /** What both object proxies share: no member can be set or removed, and each unwraps to its source. */
+    private interface ReadOnlyProxy extends ProxyObject, Unwrappable {
+        Object source();
+
+        @Override default void putMember(String key, Value value) {
+            throw new UnsupportedOperationException("The object is read-only; member '" + key + "' cannot be set.");
+        }
+
+        @Override default boolean removeMember(String key) {
+            throw new UnsupportedOperationException("The object is read-only; member '" + key + "' cannot be removed.");
+        }
+
+        @Override default Object javaValue() {
+            return source();
+        }
+    }
+
+    private record ReadOnlyObject(Map<String, Object> members, Map<String, ?> source) implements ReadOnlyProxy {
 
         @Override public Object getMember(String key) {
             return members.get(key);
@@ -91,25 +107,12 @@ public final class Proxies {
             return members.containsKey(key);
         }
 
-        @Override public void putMember(String key, Value value) {
-            throw new UnsupportedOperationException("The object is read-only; member '" + key + "' cannot be set.");
-        }
-
-        @Override public boolean removeMember(String key) {
-            throw new UnsupportedOperationException("The object is read-only; member '" + key + "' cannot be removed.");
-        }
-
-        @Override public Object javaValue() {
-            return source;
-        }
-
         @Override public String toString() {
             return "ReadOnlyObject" + members.keySet();
         }
     }
 
-    private record LazyObject(ScriptObject source, Map<String, Optional<Object>> read)
-            implements ProxyObject, Unwrappable {
+    private record LazyObject(ScriptObject source, Map<String, Optional<Object>> read) implements ReadOnlyProxy {
 
         private Optional<Object> read(String key) {
             Optional<Object> v = read.get(key);
@@ -130,18 +133,6 @@ public final class Proxies {
 
         @Override public boolean hasMember(String key) {
             return read(key).isPresent();
-        }
-
-        @Override public void putMember(String key, Value value) {
-            throw new UnsupportedOperationException("The object is read-only; member '" + key + "' cannot be set.");
-        }
-
-        @Override public boolean removeMember(String key) {
-            throw new UnsupportedOperationException("The object is read-only; member '" + key + "' cannot be removed.");
-        }
-
-        @Override public Object javaValue() {
-            return source;
         }
 
         @Override public String toString() {

@@ -1,0 +1,54 @@
+package org.kicnp.inference;
+
+import java.util.ArrayDeque;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+
+/**
+ * The instances the engine makes: their names ({@code Frame-N} with the engine's counter) and, between a firing's
+ * addition and the knowledge-base event that reports it, their records, so that the event finds its record without a
+ * look-up by name (events come in the order of the additions). Owned by the engine thread.
+ */
+final class MadeInstances {
+    /** A short cut only: past this many records awaiting their events, the oldest are forgotten and looked up. */
+    private static final int MAX_AWAITING = 4_096;
+    private final KnowledgeBase kb;
+    private final ArrayDeque<FactView.Fact> awaitingEvent = new ArrayDeque<>();
+    private long counter;
+
+    MadeInstances(KnowledgeBase kb) {
+        this.kb = kb;
+    }
+
+    /**
+     * The next name for an instance of {@code prefix}. Whether a frame of that name exists already is found by the
+     * knowledge base when the instance is added (the firing then takes the next name), so the usual case costs no
+     * look-up.
+     */
+    String next(String prefix) {
+        return prefix + "-" + (++counter);
+    }
+
+    /** The next name that no frame has now (for instances that scripts create). */
+    String fresh(String prefix) {
+        String n;
+        do {
+            n = next(prefix);
+        } while (kb.contains(n));
+        return n;
+    }
+
+    /** Notes the record of an instance the engine has just added. */
+    void added(FactView.Fact made) {
+        if (awaitingEvent.size() >= MAX_AWAITING) {
+            awaitingEvent.clear();
+        }
+        awaitingEvent.add(made);
+    }
+
+    /** The record of the instance an Added event reports, when the engine made it; else null (look it up). */
+    FactView.Fact take(Frame added) {
+        FactView.Fact head = awaitingEvent.peekFirst();
+        return head != null && head.name.equals(added.name()) ? awaitingEvent.pollFirst() : null;
+    }
+}
