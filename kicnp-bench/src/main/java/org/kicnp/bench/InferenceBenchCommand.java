@@ -72,8 +72,9 @@ final class InferenceBenchCommand implements Callable<Integer> {
         DroolsInferenceRun droolsLogical = DroolsInferenceRun.compile(true);
         InferenceWorkload warm = new InferenceWorkload(warmUpN);
         for (int i = 0; i < warmUpRuns; i++) {
-            check(warm, KicnpInferenceRun.run(warm), drools.run(warm));
-            check(warm, KicnpInferenceRun.run(warm), droolsLogical.run(warm));
+            EngineResult k = KicnpInferenceRun.run(warm);
+            check(warm, k, drools.run(warm));
+            check(warm, k, droolsLogical.run(warm));
         }
         List<InferenceRun> results = new ArrayList<>();
         for (int n : sizes) {
