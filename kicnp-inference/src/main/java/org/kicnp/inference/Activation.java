@@ -1,6 +1,5 @@
 package org.kicnp.inference;
 
-import java.util.LinkedHashMap;
 import java.util.Map;
 
 /**
@@ -61,17 +60,14 @@ final class Activation {
         return key;
     }
 
-    /** The binding as slot → instance, in slot order (a new map). */
-    Map<String, String> binding() {
+    /** The binding as slot → instance, in slot order (immutable; shares {@link #facts()}). */
+    Binding binding() {
         return bindingOf(rule, facts);
     }
 
-    static Map<String, String> bindingOf(Rule rule, String[] facts) {
-        Map<String, String> b = new LinkedHashMap<>(facts.length * 2);
-        for (int i = 0; i < facts.length; i++) {
-            b.put(rule.required().get(i).slot(), facts[i]);
-        }
-        return b;
+    /** The binding of a rule's required slots to {@code facts}, which must not be changed afterwards. */
+    static Binding bindingOf(Rule rule, String[] facts) {
+        return Binding.wrap(rule.requiredSlots(), facts);
     }
 
     /** The facts of a binding given as slot → instance, in the order of the rule's required slots. */

@@ -10,14 +10,15 @@ import java.util.Optional;
 /**
  * Why a derived instance exists: the behavior frame that made it, the binding (slot → instance), each condition with
  * the value it was tested on, the firing number, the fact whose arrival completed the binding ({@code trigger}), and,
- * for an instance a script created, the instance whose firing ran that script.
+ * for an instance a script created, the instance whose firing ran that script. The binding is immutable and keeps
+ * the order it was given in (the behavior frame's slot order for a firing).
  */
 public record Derivation(String instance, String frame, Map<String, String> binding, List<CheckedCondition> conditions,
                          long firing, String trigger, Optional<String> createdBy) {
     public Derivation {
         requireNonNull(instance, "instance");
         requireNonNull(frame, "frame");
-        binding = Map.copyOf(binding);
+        binding = Binding.copyOf(binding);
         conditions = List.copyOf(conditions);
         requireNonNull(trigger, "trigger");
         requireNonNull(createdBy, "createdBy");

@@ -353,7 +353,9 @@ final class ForwardChainer {
         }
         Map<String, String> full = a.binding();
         if (!r.optional().isEmpty()) {
-            fillOptional(r, full);
+            Map<String, String> withOptional = new LinkedHashMap<>(full);
+            fillOptional(r, withOptional);
+            full = Binding.copyOf(withOptional);
         }
         FactView.Fact[] refs = a.refs();
         String trigger = newest(refs, full);

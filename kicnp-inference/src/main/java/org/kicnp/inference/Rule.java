@@ -11,13 +11,15 @@ import java.util.stream.Stream;
  * optional instance slots (bound at firing when something fits), and what the agenda orders by: explicit
  * priority, depth in the hierarchy and number of conditions. {@code claims}: some slot is unshared or unique, so a
  * binding may be blocked by what earlier firings hold. {@code scripted}: some slot has a script condition. {@code onInstantiate}: the frame's script, as its instances
- * inherit it (resolved when the rule is compiled; an edit of the frame recompiles the rule).
+ * inherit it (resolved when the rule is compiled; an edit of the frame recompiles the rule). {@code requiredSlots}:
+ * the required slots' names in order, the keys of every binding the rule fires with ({@link Binding}).
  */
 record Rule(String frame, int priority, int depth, int conditionCount, List<SlotPattern> required,
             List<SlotPattern> optional, List<SlotPattern> patterns, List<String> uniqueSlots, boolean claims,
-            boolean scripted, Optional<String> onInstantiate) {
+            boolean scripted, Optional<String> onInstantiate, List<String> requiredSlots) {
     Rule {
         required = List.copyOf(required);
+        requiredSlots = List.copyOf(requiredSlots);
         optional = List.copyOf(optional);
         patterns = List.copyOf(patterns);
         uniqueSlots = List.copyOf(uniqueSlots);
@@ -32,7 +34,7 @@ record Rule(String frame, int priority, int depth, int conditionCount, List<Slot
         boolean claims = !unique.isEmpty() || all.stream().anyMatch(SlotPattern::claims);
         boolean scripted = all.stream().anyMatch(SlotPattern::isScript);
         return new Rule(frame, priority, depth, conditionCount, required, optional, all, unique, claims, scripted,
-                onInstantiate);
+                onInstantiate, required.stream().map(SlotPattern::slot).toList());
     }
 
     /** Rules are compared by identity: one compiled rule per frame version. */

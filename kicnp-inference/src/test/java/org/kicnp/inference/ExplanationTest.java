@@ -43,6 +43,8 @@ class ExplanationTest {
         assertThat(d.firing()).isEqualTo(1);
         assertThat(d.conditions()).contains(new Derivation.CheckedCondition("mOrder", ".drink == \"tea\"", "tea"),
                 new Derivation.CheckedCondition("mUser", "COND_ANY", "u1"));
+        assertThat(d.binding().keySet()).as("the binding in the behavior frame's slot order")
+                .containsExactly("mUser", "mOrder");
     }
 
     @Test
