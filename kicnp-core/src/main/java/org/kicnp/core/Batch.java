@@ -1,6 +1,7 @@
 package org.kicnp.core;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -11,11 +12,14 @@ import java.util.Map;
  * class as it was (it touches instances only), which lets validation use what the knowledge base knows of its classes.
  */
 final class Batch {
-    private final Map<String, Frame> staged;
+    /** Name → frame after the batch (null: removed); a singleton map for a batch of one change, the usual case. */
+    private Map<String, Frame> staged;
+    private final boolean single;
     private boolean classesUnchanged = true;
 
     private Batch(int size) {
-        staged = LinkedHashMap.newLinkedHashMap(size);
+        single = size == 1;
+        staged = single ? Map.of() : LinkedHashMap.newLinkedHashMap(size);
     }
 
     static Batch stage(List<? extends Change> changes, Map<String, Node> nodes) {
@@ -72,7 +76,11 @@ final class Batch {
     }
 
     private void stage(String name, Frame after) {
-        staged.put(name, after);
+        if (single) {
+            staged = Collections.singletonMap(name, after); // a batch of one change stages at most once
+        } else {
+            staged.put(name, after);
+        }
         if (after != null && after.isClass()) {
             classesUnchanged = false;
         }
@@ -89,19 +97,34 @@ final class Batch {
 
     /** What the batch does, frame by frame; a put that changes nothing makes no event. */
     List<FrameEvent> events(Map<String, Node> nodes) {
+        if (single) {
+            if (staged.isEmpty()) {
+                return List.of();
+            }
+            Map.Entry<String, Frame> only = staged.entrySet().iterator().next();
+            FrameEvent e = event(nodes.get(only.getKey()), only.getValue());
+            return e == null ? List.of() : List.of(e);
+        }
         List<FrameEvent> events = new ArrayList<>(staged.size());
-        for (Map.Entry<String, Frame> e : staged.entrySet()) {
-            Frame after = e.getValue();
-            Node n = nodes.get(e.getKey());
-            Frame before = n == null ? null : n.frame;
-            if (before == null && after != null) {
-                events.add(new FrameEvent.Added(after));
-            } else if (before != null && after == null) {
-                events.add(new FrameEvent.Removed(before));
-            } else if (before != null && !before.equals(after)) {
-                events.add(new FrameEvent.Replaced(before, after));
+        for (Map.Entry<String, Frame> s : staged.entrySet()) {
+            FrameEvent e = event(nodes.get(s.getKey()), s.getValue());
+            if (e != null) {
+                events.add(e);
             }
         }
         return events;
+    }
+
+    /** The event of one staged frame over the node it had before (null: none), or null when nothing changes. */
+    private static FrameEvent event(Node n, Frame after) {
+        Frame before = n == null ? null : n.frame;
+        if (before == null && after != null) {
+            return new FrameEvent.Added(after);
+        } else if (before != null && after == null) {
+            return new FrameEvent.Removed(before);
+        } else if (before != null && !before.equals(after)) {
+            return new FrameEvent.Replaced(before, after);
+        }
+        return null;
     }
 }

@@ -43,9 +43,13 @@ final class References {
             if (s.frameRelatedOrNull() != null) {
                 out.add(s.frameRelatedOrNull());
             }
-            out.addAll(s.frameListRelated());
+            if (!s.frameListRelated().isEmpty()) { // addAll of an empty list still copies it to an array
+                out.addAll(s.frameListRelated());
+            }
         }
-        out.addAll(f.parts());
+        if (!f.parts().isEmpty()) {
+            out.addAll(f.parts());
+        }
         for (SemanticLink l : f.linksTo()) {
             out.add(l.frame());
         }
