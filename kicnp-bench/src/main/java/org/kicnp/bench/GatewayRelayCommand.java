@@ -20,8 +20,9 @@ import picocli.CommandLine.Spec;
         mixinStandardHelpOptions = true,
         description = {
             "Many agents relaying ~200-byte messages to each other through the K-ICNP gateway, then through Mosquitto",
-            "(started by scripts/mosquitto.sh, which installs it with apt-get when missing), with the same clients in",
-            "this JVM: max throughput (closed loop) and p50/p99/p99.9 latency at a fixed offered load (open loop).",
+            "(started by scripts/mosquitto.sh, which installs it with apt-get when missing); each hub in its own process,",
+            "the same clients in this JVM for both: max throughput (closed loop) and p50/p99/p99.9 latency at a fixed",
+            "offered load (open loop).",
             "The last line of output is one JSON object with the figures."
         })
 final class GatewayRelayCommand implements Callable<Integer> {
@@ -67,6 +68,16 @@ final class GatewayRelayCommand implements Callable<Integer> {
                     + "into the latency tail; docs/benchmarks.md).")
     int gatewayThreads;
 
+    @Option(names = "--gateway-in-process",
+            description = "Run the gateway inside this JVM, beside the clients (their garbage collections and "
+                    + "compilations then stall it too), instead of in a JVM of its own as `kicnp serve` runs it.")
+    boolean gatewayInProcess;
+
+    @Option(names = "--gateway-java-opts", paramLabel = "OPTS", defaultValue = "",
+            description = "JVM options of the gateway's own process, space-separated, after those the launcher gives "
+                    + "`kicnp serve` (default: none, the JVM's default collector and heap sizing).")
+    String gatewayJavaOpts;
+
     @Option(names = "--no-mosquitto", description = "Measure K-ICNP alone.")
     boolean noMosquitto;
 
@@ -90,7 +101,8 @@ final class GatewayRelayCommand implements Callable<Integer> {
         try {
             o = new RelayBenchOptions(agents, messageBytes, rate, Duration.ofSeconds(warmupSeconds),
                     Duration.ofSeconds(seconds), Duration.ofSeconds(seconds), outstanding, clientThreads,
-                    gatewayThreads, Duration.ofSeconds(jitWarmupSeconds), mosquitto,
+                    gatewayThreads, gatewayInProcess, gatewayJavaOpts.isBlank() ? List.of()
+                    : List.of(gatewayJavaOpts.strip().split("\\s+")), Duration.ofSeconds(jitWarmupSeconds), mosquitto,
                     !noInstall);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());

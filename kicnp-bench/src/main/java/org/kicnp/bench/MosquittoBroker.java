@@ -94,11 +94,7 @@ final class MosquittoBroker implements AutoCloseable {
     /** The broker's CPU time so far (user and system), in nanoseconds, from {@code /proc}; 0 if unreadable. */
     long cpuNanos() {
         try {
-            String pid = Files.readString(dir.resolve("mosquitto.pid")).strip();
-            String stat = Files.readString(Path.of("/proc", pid, "stat"));
-            String[] f = stat.substring(stat.lastIndexOf(')') + 2).split(" ");
-            long ticks = Long.parseLong(f[11]) + Long.parseLong(f[12]); // utime, stime (fields 14 and 15)
-            return ticks * 10_000_000L; // USER_HZ is 100 on Linux
+            return ProcessCpu.nanos(Long.parseLong(Files.readString(dir.resolve("mosquitto.pid")).strip()));
         } catch (IOException | RuntimeException e) {
             return 0;
         }

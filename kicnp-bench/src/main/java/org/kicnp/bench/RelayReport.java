@@ -14,7 +14,7 @@ final class RelayReport {
         return String.format(Locale.ROOT, """
                 Gateway relay benchmark: K-ICNP GatewayServer vs Mosquitto%s
                   machine: %d cores, load average %s; the clients run in this JVM on the same cores (%d event loops);
-                           gateway I/O threads: %s; the JVM's default collector
+                  gateway: %s; I/O threads: %s
                   pattern: agents in pairs, each sends to its peer by name through the hub (K-ICNP relay toAgent; MQTT
                            each client subscribes to its own topic and publishes to its peer's); loopback TCP, Nagle off
                   delivery: K-ICNP fire-and-forget relay (empty id: the hub sends no ack, as the SDK's tellTo) vs
@@ -25,10 +25,19 @@ final class RelayReport {
                   latency: open loop, %,d msgs/s in total at a constant rate released by 1 ms ticks, %d s after %d s
                            warm-up; latency = delivery time - intended send time (coordinated omission corrected)
                 """, mosquittoVersion.isEmpty() ? "" : " (" + mosquittoVersion + ")",
-                Runtime.getRuntime().availableProcessors(), loadAverage(), o.clientThreads(),
+                Runtime.getRuntime().availableProcessors(), loadAverage(), o.clientThreads(), gatewayPlace(o),
                 o.gatewayThreads() > 0 ? String.valueOf(o.gatewayThreads()) : "one per core", o.messageBytes(),
                 o.jitWarmup().toSeconds(), o.outstanding(), o.throughputTime().toSeconds(), o.warmup().toSeconds(), o.rate(),
                 o.latencyTime().toSeconds(), o.warmup().toSeconds());
+    }
+
+    private static String gatewayPlace(RelayBenchOptions o) {
+        if (o.gatewayInProcess()) {
+            return "in this JVM, beside the clients (--gateway-in-process)";
+        }
+        return "a JVM of its own, the launcher's options for `kicnp serve`"
+                + (o.gatewayJavaOptions().isEmpty() ? " and the JVM's default collector"
+                : " plus " + String.join(" ", o.gatewayJavaOptions()));
     }
 
     static String loadAverage() {
@@ -95,6 +104,7 @@ final class RelayReport {
         }
         return sb.append("], \"offered_msgs_per_s\": ").append(o.rate())
                 .append(", \"message_bytes\": ").append(o.messageBytes())
+                .append(", \"gateway\": \"").append(o.gatewayInProcess() ? "in_process" : "own_process").append('"')
                 .append(", \"cores\": ").append(Runtime.getRuntime().availableProcessors())
                 .append(", \"load_average\": \"").append(loadAverage()).append("\"}").toString();
     }
