@@ -18,6 +18,8 @@ import org.kicnp.gateway.GatewayServer;
  */
 final class GatewayRelayBench {
     private static final Duration CONNECT_TIMEOUT = Duration.ofSeconds(60);
+    /** The open-loop part of the JIT warm-up on each hub (see {@link #warm}). */
+    static final Duration OPEN_WARMUP = Duration.ofSeconds(5);
 
     private GatewayRelayBench() {
     }
@@ -90,10 +92,17 @@ final class GatewayRelayBench {
         }
     }
 
+    /**
+     * The untimed JIT warm-up: the closed loop for {@code --jit-warmup}, then the open loop at the offered rate for
+     * {@link #OPEN_WARMUP}, so the open loop's own paths (the ticks, single-message reads and writes, the gateway's
+     * scheduled tasks) are compiled too; before, they first ran two seconds before the measured window, and their
+     * compilations and deoptimisations fell next to or into it.
+     */
     private static void warm(RelayClient client, InetSocketAddress hub, int agents, RelayBenchOptions o)
             throws InterruptedException {
         try (RelayDriver d = RelayDriver.connect(client, hub, agents, o.clientThreads(), CONNECT_TIMEOUT)) {
             d.throughput(o.windowFor(agents), o.jitWarmup(), Duration.ofMillis(100), clients -> 0);
+            d.latency(o.rate(), Duration.ZERO, OPEN_WARMUP);
         }
     }
 }

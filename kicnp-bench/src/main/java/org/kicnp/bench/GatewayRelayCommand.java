@@ -45,9 +45,9 @@ final class GatewayRelayCommand implements Callable<Integer> {
     int warmupSeconds;
 
     @Option(names = "--jit-warmup", defaultValue = "20",
-            description = "Seconds of an untimed run on each hub (with the first agent count) before the first "
-                    + "measurement, so the JIT has compiled the gateway and the clients; on a loaded machine the "
-                    + "compiler gets little CPU (default: ${DEFAULT-VALUE}; 0: none).")
+            description = "Seconds of an untimed closed-loop run on each hub (with the first agent count), followed "
+                    + "by 5 s of the open loop, before the first measurement, so the JIT has compiled the gateway and "
+                    + "the clients; on a loaded machine the compiler gets little CPU (default: ${DEFAULT-VALUE}; 0: none).")
     int jitWarmupSeconds;
 
     @Option(names = "--seconds", defaultValue = "5",
