@@ -61,11 +61,12 @@ final class GatewayRelayCommand implements Callable<Integer> {
     @Option(names = "--client-threads", defaultValue = "2", description = "Client event loops (default: ${DEFAULT-VALUE}).")
     int clientThreads;
 
-    @Option(names = "--gateway-threads", defaultValue = "0",
-            description = "The gateway's I/O threads (default: ${DEFAULT-VALUE}, the gateway's own default of one per "
-                    + "core, as `kicnp serve` runs it; with one thread it is busy 60-75 % of a core at 50,000 msgs/s "
-                    + "with 1,000 agents, one read and one write system call per relay, and every stall is amplified "
-                    + "into the latency tail; docs/benchmarks.md).")
+    @Option(names = "--gateway-threads", defaultValue = "1",
+            description = "The gateway's I/O threads (default: ${DEFAULT-VALUE}, as Mosquitto's one thread; 0: the "
+                    + "gateway's own default of one per core, as `kicnp serve` runs it). With its own process on two "
+                    + "cores shared with the clients, one thread gave the lower p99 at 1,000 agents in 7 of 7 "
+                    + "alternating pairs: a relay between two loops costs a hand-off and often a wake-up "
+                    + "(docs/benchmarks.md, round 4).")
     int gatewayThreads;
 
     @Option(names = "--gateway-in-process",
