@@ -64,7 +64,7 @@ final class GatewayRelayCommand implements Callable<Integer> {
     @Option(names = "--gateway-threads", defaultValue = "1",
             description = "The gateway's I/O threads (default: ${DEFAULT-VALUE}, as Mosquitto's one thread; 0: the "
                     + "gateway's own default of one per core, as `kicnp serve` runs it). With its own process on two "
-                    + "cores shared with the clients, one thread gave the lower p99 at 1,000 agents in 7 of 7 "
+                    + "cores shared with the clients, one thread gave the lower p99 at 1,000 agents in 8 of 9 "
                     + "alternating pairs: a relay between two loops costs a hand-off and often a wake-up "
                     + "(docs/benchmarks.md, round 4).")
     int gatewayThreads;
