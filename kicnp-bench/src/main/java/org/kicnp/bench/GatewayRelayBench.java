@@ -7,21 +7,19 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.Optional;
-import java.util.Properties;
 import java.util.function.Consumer;
-import org.kicnp.core.KnowledgeBase;
-import org.kicnp.gateway.AgentDirectory;
-import org.kicnp.gateway.FeedbackListener;
-import org.kicnp.gateway.GatewayConfig;
 import org.kicnp.gateway.GatewayServer;
 
 /**
  * {@code ./kicnp bench gateway}: many agents relaying small messages to each other through a hub, K-ICNP's real
- * {@link GatewayServer} against a Mosquitto broker, with the same clients in the same process. For each agent
+ * {@link GatewayServer} (in a process of its own, {@link GatewayProcess}, unless asked otherwise) against a Mosquitto
+ * broker (its own process), with the same clients in this process. For each agent
  * count, each hub gets a closed-loop throughput run and an open-loop latency run at a fixed offered load.
  */
 final class GatewayRelayBench {
     private static final Duration CONNECT_TIMEOUT = Duration.ofSeconds(60);
+    /** The open-loop part of the JIT warm-up on each hub (see {@link #warm}). */
+    static final Duration OPEN_WARMUP = Duration.ofSeconds(5);
 
     private GatewayRelayBench() {
     }
@@ -45,12 +43,9 @@ final class GatewayRelayBench {
                 progress.accept(brokerNote);
             }
         }
-        GatewayConfig config = GatewayConfig.defaults().withPort(0);
-        if (o.gatewayThreads() > 0) {
-            config = config.withIoThreads(o.gatewayThreads());
-        }
-        try (GatewayServer gateway = GatewayServer.start(config, directory(most),
-                KnowledgeBase.create(), FeedbackListener.NONE)) {
+        try (KicnpHub gateway = o.gatewayInProcess() ? InProcessGateway.start(most, o.gatewayThreads())
+                : GatewayProcess.start(most, o.gatewayThreads(), o.gatewayJavaOptions())) {
+            progress.accept("K-ICNP gateway on " + gateway.address() + ", " + gateway.describe() + ".");
             if (!o.jitWarmup().isZero()) {
                 // Untimed: the JIT compiles the gateway's and both clients' hot paths before anything is measured
                 // (Mosquitto is native and needs no such start).
@@ -64,9 +59,9 @@ final class GatewayRelayBench {
             List<RelayRun> runs = new ArrayList<>();
             for (int agents : o.agentCounts()) {
                 progress.accept("K-ICNP gateway, " + agents + " agents ...");
-                long shedBefore = gateway.metrics().shed();
+                long shedBefore = gateway.shed();
                 HubFigures kicnp = measure(new KicnpRelayClient(o.messageBytes()), gateway.address(), agents, o,
-                        () -> gateway.metrics().shed() - shedBefore, GatewayRelayBench::processCpuMinus);
+                        () -> gateway.shed() - shedBefore, gateway::cpuNanos);
                 progress.accept("  " + gateway.metrics());
                 Optional<HubFigures> mqtt = Optional.empty();
                 Optional<String> note = broker == null ? Optional.of(brokerNote) : Optional.empty();
@@ -97,28 +92,17 @@ final class GatewayRelayBench {
         }
     }
 
+    /**
+     * The untimed JIT warm-up: the closed loop for {@code --jit-warmup}, then the open loop at the offered rate for
+     * {@link #OPEN_WARMUP}, so the open loop's own paths (the ticks, single-message reads and writes, the gateway's
+     * scheduled tasks) are compiled too; before, they first ran two seconds before the measured window, and their
+     * compilations and deoptimisations fell next to or into it.
+     */
     private static void warm(RelayClient client, InetSocketAddress hub, int agents, RelayBenchOptions o)
             throws InterruptedException {
         try (RelayDriver d = RelayDriver.connect(client, hub, agents, o.clientThreads(), CONNECT_TIMEOUT)) {
             d.throughput(o.windowFor(agents), o.jitWarmup(), Duration.ofMillis(100), clients -> 0);
+            d.latency(o.rate(), Duration.ZERO, OPEN_WARMUP);
         }
-    }
-
-    /** This process's CPU time minus the given client CPU time: the in-process gateway's share, in nanoseconds. */
-    private static long processCpuMinus(long clientCpuNanos) {
-        var os = java.lang.management.ManagementFactory.getOperatingSystemMXBean();
-        long process = os instanceof com.sun.management.OperatingSystemMXBean sun ? sun.getProcessCpuTime() : 0;
-        return process - clientCpuNanos;
-    }
-
-    /** An agent file for the bench agents {@code a00000 ...}: each a user with its own token. */
-    private static AgentDirectory directory(int agents) {
-        Properties p = new Properties();
-        for (int k = 0; k < agents; k++) {
-            String name = RelayAgent.nameOf(k);
-            p.setProperty(name + ".token", KicnpRelayClient.TOKEN_PREFIX + name);
-            p.setProperty(name + ".kinds", "user");
-        }
-        return AgentDirectory.of(p, "bench agents");
     }
 }

@@ -20,8 +20,9 @@ import picocli.CommandLine.Spec;
         mixinStandardHelpOptions = true,
         description = {
             "Many agents relaying ~200-byte messages to each other through the K-ICNP gateway, then through Mosquitto",
-            "(started by scripts/mosquitto.sh, which installs it with apt-get when missing), with the same clients in",
-            "this JVM: max throughput (closed loop) and p50/p99/p99.9 latency at a fixed offered load (open loop).",
+            "(started by scripts/mosquitto.sh, which installs it with apt-get when missing); each hub in its own process,",
+            "the same clients in this JVM for both: max throughput (closed loop) and p50/p99/p99.9 latency at a fixed",
+            "offered load (open loop).",
             "The last line of output is one JSON object with the figures."
         })
 final class GatewayRelayCommand implements Callable<Integer> {
@@ -44,9 +45,9 @@ final class GatewayRelayCommand implements Callable<Integer> {
     int warmupSeconds;
 
     @Option(names = "--jit-warmup", defaultValue = "20",
-            description = "Seconds of an untimed run on each hub (with the first agent count) before the first "
-                    + "measurement, so the JIT has compiled the gateway and the clients; on a loaded machine the "
-                    + "compiler gets little CPU (default: ${DEFAULT-VALUE}; 0: none).")
+            description = "Seconds of an untimed closed-loop run on each hub (with the first agent count), followed "
+                    + "by 5 s of the open loop, before the first measurement, so the JIT has compiled the gateway and "
+                    + "the clients; on a loaded machine the compiler gets little CPU (default: ${DEFAULT-VALUE}; 0: none).")
     int jitWarmupSeconds;
 
     @Option(names = "--seconds", defaultValue = "5",
@@ -60,12 +61,23 @@ final class GatewayRelayCommand implements Callable<Integer> {
     @Option(names = "--client-threads", defaultValue = "2", description = "Client event loops (default: ${DEFAULT-VALUE}).")
     int clientThreads;
 
-    @Option(names = "--gateway-threads", defaultValue = "0",
-            description = "The gateway's I/O threads (default: ${DEFAULT-VALUE}, the gateway's own default of one per "
-                    + "core, as `kicnp serve` runs it; with one thread it is busy 60-75 % of a core at 50,000 msgs/s "
-                    + "with 1,000 agents, one read and one write system call per relay, and every stall is amplified "
-                    + "into the latency tail; docs/benchmarks.md).")
+    @Option(names = "--gateway-threads", defaultValue = "1",
+            description = "The gateway's I/O threads (default: ${DEFAULT-VALUE}, as Mosquitto's one thread; 0: the "
+                    + "gateway's own default of one per core, as `kicnp serve` runs it). With its own process on two "
+                    + "cores shared with the clients, one thread gave the lower p99 at 1,000 agents in 8 of 9 "
+                    + "alternating pairs: a relay between two loops costs a hand-off and often a wake-up "
+                    + "(docs/benchmarks.md, round 4).")
     int gatewayThreads;
+
+    @Option(names = "--gateway-in-process",
+            description = "Run the gateway inside this JVM, beside the clients (their garbage collections and "
+                    + "compilations then stall it too), instead of in a JVM of its own as `kicnp serve` runs it.")
+    boolean gatewayInProcess;
+
+    @Option(names = "--gateway-java-opts", paramLabel = "OPTS", defaultValue = "",
+            description = "JVM options of the gateway's own process, space-separated, after those the launcher gives "
+                    + "`kicnp serve` (default: none, the JVM's default collector and heap sizing).")
+    String gatewayJavaOpts;
 
     @Option(names = "--no-mosquitto", description = "Measure K-ICNP alone.")
     boolean noMosquitto;
@@ -90,7 +102,8 @@ final class GatewayRelayCommand implements Callable<Integer> {
         try {
             o = new RelayBenchOptions(agents, messageBytes, rate, Duration.ofSeconds(warmupSeconds),
                     Duration.ofSeconds(seconds), Duration.ofSeconds(seconds), outstanding, clientThreads,
-                    gatewayThreads, Duration.ofSeconds(jitWarmupSeconds), mosquitto,
+                    gatewayThreads, gatewayInProcess, gatewayJavaOpts.isBlank() ? List.of()
+                    : List.of(gatewayJavaOpts.strip().split("\\s+")), Duration.ofSeconds(jitWarmupSeconds), mosquitto,
                     !noInstall);
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());

@@ -17,11 +17,14 @@ final class MosquittoBroker implements AutoCloseable {
     private final Path script;
     private final Path dir;
     private final InetSocketAddress address;
+    /** The broker's process id (0: unknown), read from its pid file at the start, before any client runs. */
+    private final long pid;
 
     private MosquittoBroker(Path script, Path dir, InetSocketAddress address) {
         this.script = script;
         this.dir = dir;
         this.address = address;
+        this.pid = readPid(dir);
     }
 
     /**
@@ -91,17 +94,18 @@ final class MosquittoBroker implements AutoCloseable {
         }).orElse("");
     }
 
-    /** The broker's CPU time so far (user and system), in nanoseconds, from {@code /proc}; 0 if unreadable. */
-    long cpuNanos() {
+    /** The broker's process id from the script's pid file; 0 if unreadable. */
+    private static long readPid(Path dir) {
         try {
-            String pid = Files.readString(dir.resolve("mosquitto.pid")).strip();
-            String stat = Files.readString(Path.of("/proc", pid, "stat"));
-            String[] f = stat.substring(stat.lastIndexOf(')') + 2).split(" ");
-            long ticks = Long.parseLong(f[11]) + Long.parseLong(f[12]); // utime, stime (fields 14 and 15)
-            return ticks * 10_000_000L; // USER_HZ is 100 on Linux
+            return Long.parseLong(Files.readString(dir.resolve("mosquitto.pid")).strip());
         } catch (IOException | RuntimeException e) {
             return 0;
         }
+    }
+
+    /** The broker's CPU time so far (user and system), in nanoseconds, from {@code /proc}; 0 if unknown. */
+    long cpuNanos() {
+        return pid == 0 ? 0 : ProcessCpu.nanos(pid);
     }
 
     @Override public void close() throws IOException, InterruptedException {

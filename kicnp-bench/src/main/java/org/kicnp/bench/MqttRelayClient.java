@@ -4,7 +4,6 @@ import static java.nio.charset.StandardCharsets.US_ASCII;
 
 import io.netty.buffer.ByteBuf;
 import io.netty.channel.ChannelHandlerContext;
-import io.netty.channel.ChannelInboundHandlerAdapter;
 import io.netty.channel.ChannelPipeline;
 import io.netty.handler.codec.ByteToMessageDecoder;
 import io.netty.handler.codec.CorruptedFrameException;
@@ -57,7 +56,6 @@ final class MqttRelayClient implements RelayClient {
     }
 
     @Override public void initPipeline(ChannelPipeline p, RelayAgent agent, CompletableFuture<Void> ready) {
-        p.addLast(new PacketDecoder());
         p.addLast(new Handler(agent, ready));
     }
 
@@ -95,8 +93,20 @@ final class MqttRelayClient implements RelayClient {
         return buf;
     }
 
-    /** Splits the stream into whole MQTT packets (fixed header, remaining length, body). */
-    private static final class PacketDecoder extends ByteToMessageDecoder {
+    /**
+     * Splits the stream into whole MQTT packets (fixed header, remaining length, body) and handles each where it lies
+     * in the read buffer, without a slice per packet (as {@link KicnpRelayClient} reads its frames: the clients cost
+     * the two hubs alike).
+     */
+    private static final class Handler extends ByteToMessageDecoder {
+        private final RelayAgent agent;
+        private final CompletableFuture<Void> ready;
+
+        Handler(RelayAgent agent, CompletableFuture<Void> ready) {
+            this.agent = agent;
+            this.ready = ready;
+        }
+
         @Override protected void decode(ChannelHandlerContext ctx, ByteBuf in, List<Object> out) {
             while (true) {
                 int start = in.readerIndex();
@@ -122,61 +132,44 @@ final class MqttRelayClient implements RelayClient {
                 if (avail < i + length) {
                     return;
                 }
-                out.add(in.readRetainedSlice(i + length));
+                packet(ctx, in, start, i);
+                in.readerIndex(start + i + length);
             }
-        }
-    }
-
-    private static final class Handler extends ChannelInboundHandlerAdapter {
-        private final RelayAgent agent;
-        private final CompletableFuture<Void> ready;
-
-        Handler(RelayAgent agent, CompletableFuture<Void> ready) {
-            this.agent = agent;
-            this.ready = ready;
         }
 
         @Override public void channelActive(ChannelHandlerContext ctx) {
             ctx.writeAndFlush(connect(ctx, agent.name));
         }
 
-        @Override public void channelRead(ChannelHandlerContext ctx, Object msg) {
-            ByteBuf p = (ByteBuf) msg;
-            try {
-                int at = p.readerIndex();
-                int type = (p.getByte(at) & 0xFF) >>> 4;
-                int header = 1;
-                while ((p.getByte(at + header) & 0x80) != 0) {
-                    header++;
+        /** The packet at {@code at} in {@code p}, whose fixed header is {@code header} bytes long. */
+        private void packet(ChannelHandlerContext ctx, ByteBuf p, int at, int header) {
+            int type = (p.getByte(at) & 0xFF) >>> 4;
+            switch (type) {
+                case PUBLISH -> {
+                    int topicLength = p.getUnsignedShort(at + header);
+                    int payload = at + header + 2 + topicLength; // QoS 0: no packet id
+                    agent.loop.delivered(agent, Digits.get(p, payload + 1, STAMP_DIGITS));
                 }
-                header++;
-                switch (type) {
-                    case PUBLISH -> {
-                        int topicLength = p.getUnsignedShort(at + header);
-                        int payload = at + header + 2 + topicLength; // QoS 0: no packet id
-                        agent.loop.delivered(agent, Digits.get(p, payload + 1, STAMP_DIGITS));
+                case CONNACK -> {
+                    if (p.getByte(at + header + 1) != 0) {
+                        ready.completeExceptionally(new IllegalStateException("The broker refused " + agent
+                                + " with CONNACK code " + p.getByte(at + header + 1) + "."));
+                    } else {
+                        ctx.writeAndFlush(subscribe(ctx, agent.name));
                     }
-                    case CONNACK -> {
-                        if (p.getByte(at + header + 1) != 0) {
-                            ready.completeExceptionally(new IllegalStateException("The broker refused " + agent
-                                    + " with CONNACK code " + p.getByte(at + header + 1) + "."));
-                        } else {
-                            ctx.writeAndFlush(subscribe(ctx, agent.name));
-                        }
-                    }
-                    case SUBACK -> ready.complete(null);
-                    default -> { }
                 }
-            } finally {
-                p.release();
+                case SUBACK -> ready.complete(null);
+                default -> { }
             }
         }
 
-        @Override public void channelReadComplete(ChannelHandlerContext ctx) {
+        @Override public void channelReadComplete(ChannelHandlerContext ctx) throws Exception {
+            super.channelReadComplete(ctx);
             agent.loop.readComplete();
         }
 
-        @Override public void channelInactive(ChannelHandlerContext ctx) {
+        @Override public void channelInactive(ChannelHandlerContext ctx) throws Exception {
+            super.channelInactive(ctx);
             if (ready.isDone() && !agent.loop.closing) {
                 org.slf4j.LoggerFactory.getLogger(RelayDriver.class).warn("Bench agent {}'s connection closed.", agent);
             }

@@ -16,16 +16,20 @@ import java.util.Optional;
  * @param outstanding the closed-loop messages outstanding in total, spread over the agents (at least 2 each)
  * @param clientThreads the client event loops
  * @param gatewayThreads the gateway's I/O threads; 0 keeps the gateway's default
+ * @param gatewayInProcess run the gateway inside the bench's JVM, beside the clients, not in a process of its own
+ * @param gatewayJavaOptions JVM options for the gateway's own process, after the launcher's
  * @param jitWarmup an untimed closed-loop run on each hub before the first measurement (zero: none)
  * @param mosquittoScript {@code scripts/mosquitto.sh}; empty skips Mosquitto
  * @param install whether the script may install Mosquitto with apt-get
  */
 record RelayBenchOptions(List<Integer> agentCounts, int messageBytes, int rate, Duration warmup, Duration throughputTime,
-                         Duration latencyTime, int outstanding, int clientThreads, int gatewayThreads, Duration jitWarmup,
+                         Duration latencyTime, int outstanding, int clientThreads, int gatewayThreads,
+                         boolean gatewayInProcess, List<String> gatewayJavaOptions, Duration jitWarmup,
                          Optional<Path> mosquittoScript,
                          boolean install) {
     RelayBenchOptions {
         agentCounts = List.copyOf(agentCounts);
+        gatewayJavaOptions = List.copyOf(gatewayJavaOptions);
         requireNonNull(warmup, "warmup");
         requireNonNull(throughputTime, "throughputTime");
         requireNonNull(latencyTime, "latencyTime");

@@ -164,7 +164,16 @@ final class RelayDriver implements AutoCloseable {
             loop.startOpen(start, period, agents.size(), recordFrom, recordUntil);
             return null;
         });
-        Thread.sleep(Math.max(0, (recordUntil - RelayLoop.now()) / 1_000_000));
+        Ticker ticker = Ticker.start(() -> {
+            for (RelayLoop loop : loops) {
+                loop.executor.execute(loop.tickTask);
+            }
+        }, start, recordUntil);
+        try {
+            ticker.awaitEnd(); // every tick up to the window's end has been handed to the loops
+        } finally {
+            ticker.stop();
+        }
         long deadline = System.nanoTime() + DRAIN.toNanos();
         Histogram all = new Histogram(3);
         long expected;

@@ -3,7 +3,6 @@ package org.kicnp.bench;
 import io.netty.channel.EventLoop;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import org.HdrHistogram.Histogram;
 
@@ -12,7 +11,8 @@ import org.HdrHistogram.Histogram;
  * sending (closed-loop window refills, open-loop ticks), counting deliveries, recording latencies, and flushing
  * each written channel once per batch of reads rather than once per message.
  *
- * <p>Open loop: each agent has a constant-rate schedule of intended send times, released by a 1 ms tick; a
+ * <p>Open loop: each agent has a constant-rate schedule of intended send times, released by a 1 ms tick
+ * ({@link Ticker}); a
  * message carries its <em>intended</em> time, and its latency is the delivery time minus that time. A stall
  * anywhere (client, hub, kernel) delays the sends behind it too, and every one of them is charged the full
  * delay, so coordinated omission is not hidden.
@@ -49,7 +49,11 @@ final class RelayLoop {
     /** Open loop: the messages scheduled before the measured window (index 0) and within it (index 1). */
     private final long[] scheduled = new long[2];
     long periodNanos;
-    private ScheduledFuture<?> ticker;
+    /** Open loop: the schedule's start and the agents in all loops (for each agent's phase). */
+    private long start;
+    private int total;
+    /** The open loop's tick as a task, made once: {@link Ticker} hands it to this loop every millisecond. */
+    final Runnable tickTask = this::tick;
 
     RelayLoop(EventLoop executor) {
         this.executor = executor;
@@ -147,6 +151,8 @@ final class RelayLoop {
      */
     void startOpen(long start, long period, int total, long recordFrom, long recordUntil) {
         this.mode = Mode.OPEN;
+        this.start = start;
+        this.total = total;
         this.periodNanos = period;
         this.recordFrom = recordFrom;
         this.recordUntil = recordUntil;
@@ -159,10 +165,6 @@ final class RelayLoop {
         phases[1].reset();
         scheduled[0] = 0;
         scheduled[1] = 0;
-        // The ticks fall on the grid the intended times are rounded to (start + k ms), so a message is sent at its
-        // intended time rather than up to a tick after it; whatever delays a tick is still charged to its messages.
-        long firstTick = Math.max(0, start - now());
-        ticker = executor.scheduleAtFixedRate(() -> tick(start, total), firstTick, TICK_NANOS, TimeUnit.NANOSECONDS);
     }
 
     /** An agent's next intended time: its constant-rate schedule, rounded down to the 1 ms tick that sends it. */
@@ -171,7 +173,15 @@ final class RelayLoop {
         return start + (exact - start) / TICK_NANOS * TICK_NANOS;
     }
 
-    private void tick(long start, int total) {
+    /**
+     * Sends every message due by now. Run on this loop by {@link Ticker}, on the grid the intended times are rounded
+     * to (start + k ms), so a message is sent at its intended time rather than up to a tick after it; whatever delays
+     * a tick is still charged to its messages.
+     */
+    void tick() {
+        if (mode != Mode.OPEN) {
+            return;
+        }
         long now = now();
         for (int i = 0; i < agents.size(); i++) {
             RelayAgent a = agents.get(i);
@@ -183,18 +193,10 @@ final class RelayLoop {
             }
         }
         flushDirty();
-        if (now >= sendUntil && ticker != null) {
-            ticker.cancel(false);
-            ticker = null;
-        }
     }
 
     /** Ends the open loop (sending has already stopped at {@code sendUntil}). */
     void stopOpen() {
-        if (ticker != null) {
-            ticker.cancel(false);
-            ticker = null;
-        }
         mode = Mode.IDLE;
     }
 }

@@ -14,21 +14,32 @@ final class RelayReport {
         return String.format(Locale.ROOT, """
                 Gateway relay benchmark: K-ICNP GatewayServer vs Mosquitto%s
                   machine: %d cores, load average %s; the clients run in this JVM on the same cores (%d event loops);
-                           gateway I/O threads: %s; the JVM's default collector
+                  gateway: %s; I/O threads: %s
                   pattern: agents in pairs, each sends to its peer by name through the hub (K-ICNP relay toAgent; MQTT
                            each client subscribes to its own topic and publishes to its peer's); loopback TCP, Nagle off
                   delivery: K-ICNP fire-and-forget relay (empty id: the hub sends no ack, as the SDK's tellTo) vs
                            MQTT QoS 0 (no acks); %d bytes per message on the wire for both
-                  JIT: an untimed %d s run on each hub first, so the JVM's hot paths are compiled before measuring
+                  JIT: an untimed %d s closed-loop and %d s open-loop run on each hub first, so the JVMs' hot paths are
+                           compiled before measuring
                   throughput: closed loop, %d messages outstanding in total (window per agent shown), %d s after %d s
                            warm-up; msgs/s = messages delivered to agents per second; CPU µs per delivered message
                   latency: open loop, %,d msgs/s in total at a constant rate released by 1 ms ticks, %d s after %d s
                            warm-up; latency = delivery time - intended send time (coordinated omission corrected)
                 """, mosquittoVersion.isEmpty() ? "" : " (" + mosquittoVersion + ")",
-                Runtime.getRuntime().availableProcessors(), loadAverage(), o.clientThreads(),
+                Runtime.getRuntime().availableProcessors(), loadAverage(), o.clientThreads(), gatewayPlace(o),
                 o.gatewayThreads() > 0 ? String.valueOf(o.gatewayThreads()) : "one per core", o.messageBytes(),
-                o.jitWarmup().toSeconds(), o.outstanding(), o.throughputTime().toSeconds(), o.warmup().toSeconds(), o.rate(),
+                o.jitWarmup().toSeconds(), o.jitWarmup().isZero() ? 0 : GatewayRelayBench.OPEN_WARMUP.toSeconds(),
+                o.outstanding(), o.throughputTime().toSeconds(), o.warmup().toSeconds(), o.rate(),
                 o.latencyTime().toSeconds(), o.warmup().toSeconds());
+    }
+
+    private static String gatewayPlace(RelayBenchOptions o) {
+        if (o.gatewayInProcess()) {
+            return "in this JVM, beside the clients (--gateway-in-process)";
+        }
+        return "a JVM of its own, the launcher's options for `kicnp serve`"
+                + (o.gatewayJavaOptions().isEmpty() ? " and the JVM's default collector"
+                : " plus " + String.join(" ", o.gatewayJavaOptions()));
     }
 
     static String loadAverage() {
@@ -95,6 +106,7 @@ final class RelayReport {
         }
         return sb.append("], \"offered_msgs_per_s\": ").append(o.rate())
                 .append(", \"message_bytes\": ").append(o.messageBytes())
+                .append(", \"gateway\": \"").append(o.gatewayInProcess() ? "in_process" : "own_process").append('"')
                 .append(", \"cores\": ").append(Runtime.getRuntime().availableProcessors())
                 .append(", \"load_average\": \"").append(loadAverage()).append("\"}").toString();
     }

@@ -31,7 +31,20 @@ class GatewayRelayCommandTest {
         assertThat(r.get("mosquitto_msgs_per_s").isNull()).isTrue();
         assertThat(r.get("ratio").isNull()).isTrue();
         assertThat(run.out()).contains("K-ICNP", "coordinated omission",
-                Runtime.getRuntime().availableProcessors() + " cores");
+                Runtime.getRuntime().availableProcessors() + " cores", "gateway: a JVM of its own");
+        assertThat(lastJson(run.out()).get("gateway").asText()).isEqualTo("own_process");
+    }
+
+    @Test
+    void gateway_inProcess_runsTheGatewayInThisJvmAndSaysSo() throws Exception {
+        Output run = run("gateway", "--agents", "4", "--seconds", "1", "--warmup", "0", "--jit-warmup", "0", "--rate", "1000",
+                "--no-mosquitto", "--gateway-in-process");
+
+        assertThat(run.code()).as(run.err()).isZero();
+        JsonNode json = lastJson(run.out());
+        assertThat(json.get("gateway").asText()).isEqualTo("in_process");
+        assertThat(json.get("runs").get(0).get("kicnp_msgs_per_s").asDouble()).isPositive();
+        assertThat(run.out()).contains("gateway: in this JVM, beside the clients");
     }
 
     @Test

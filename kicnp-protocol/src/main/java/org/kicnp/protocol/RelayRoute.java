@@ -37,6 +37,6 @@ public record RelayRoute(String id, String from, Optional<String> toAgent, Optio
      */
     static Optional<RelayRoute> scan(byte[] payload, int offset, int length) {
         java.util.Objects.checkFromIndexSize(offset, length, payload.length);
-        return Optional.ofNullable(new RelayScanner(payload, offset, length).scan());
+        return Optional.ofNullable(new RelayScanner().scan(payload, offset, length));
     }
 }

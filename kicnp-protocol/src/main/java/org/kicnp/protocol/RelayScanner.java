@@ -10,8 +10,10 @@ import java.util.Optional;
  * It accepts only a strict subset of JSON — one object whose members are strings (and {@code "v":1}), no escapes in
  * member names or in the routing members, well-formed UTF-8 and escapes in the subject and body — and gives
  * {@code null} for anything else, which then takes the general decoder's path. Whatever it accepts, the general
- * decoder decodes to the same relay. Not thread-safe; one per use ({@link RelayRoute#scan} makes one per payload, on
- * the stack).
+ * decoder decodes to the same relay. Not thread-safe: one per connection ({@link RelayRouteReader}) or per use
+ * ({@link RelayRoute#scan}). A scanner that is used again remembers the last route it gave and gives that same
+ * instance again when the next relay has the same routing members (an agent writing to the same peer again and
+ * again, the common case): no route and no {@code Optional} per relay then.
  */
 final class RelayScanner {
     private static final int ID = 0;
@@ -28,8 +30,8 @@ final class RelayScanner {
     };
     private static final byte[] RELAY = bytes("relay");
 
-    private final byte[] b;
-    private final int end;
+    private byte[] b;
+    private int end;
     private int i;
     /** Where the last string scanned starts and ends (its content, without quotes), and whether it had escapes. */
     private int strStart;
@@ -40,19 +42,28 @@ final class RelayScanner {
     private String from;
     private String toAgentName;
     private String toKindName;
+    /** The route given last, given again when the next one is the same. */
+    private RelayRoute last;
 
-    RelayScanner(byte[] payload, int offset, int length) {
+    /** The route of {@code payload[offset, offset + length)}, or {@code null} when it is not a relay this accepts. */
+    RelayRoute scan(byte[] payload, int offset, int length) {
         this.b = payload;
         this.i = offset;
         this.end = offset + length;
+        id = null;
+        from = null;
+        toAgentName = null;
+        toKindName = null;
+        RelayRoute route = scan();
+        this.b = null; // holds no payload between uses
+        return route;
     }
 
     private static byte[] bytes(String s) {
         return s.getBytes(UTF_8);
     }
 
-    /** The route, or {@code null} when the payload is not a relay this scanner accepts. */
-    RelayRoute scan() {
+    private RelayRoute scan() {
         int seen = 0;
         ws();
         if (!take('{')) {
@@ -120,6 +131,12 @@ final class RelayScanner {
         if (i != end || (seen & required) != required || toAgent == toKind) {
             return null;
         }
+        RelayRoute before = last;
+        if (before != null && before.id().equals(id) && before.from().equals(from)
+                && (toAgent ? before.toAgent().isPresent() && before.toAgent().get().equals(toAgentName)
+                        : before.toKind().isPresent() && before.toKind().get().name().equalsIgnoreCase(toKindName))) {
+            return before;
+        }
         Optional<AgentKind> kind = Optional.empty();
         if (toKind) {
             kind = kind(toKindName);
@@ -127,7 +144,8 @@ final class RelayScanner {
                 return null;
             }
         }
-        return new RelayRoute(id, from, Optional.ofNullable(toAgentName), kind);
+        last = new RelayRoute(id, from, Optional.ofNullable(toAgentName), kind);
+        return last;
     }
 
     private static Optional<AgentKind> kind(String wire) {
