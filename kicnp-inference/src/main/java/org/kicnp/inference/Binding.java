@@ -1,24 +1,18 @@
 package org.kicnp.inference;
 
 import java.util.AbstractList;
-import java.util.AbstractMap;
-import java.util.AbstractSet;
 import java.util.Collection;
-import java.util.Iterator;
 import java.util.List;
 import java.util.Map;
-import java.util.NoSuchElementException;
 import java.util.Objects;
-import java.util.Set;
-import java.util.function.BiConsumer;
 
 /**
- * A firing's binding, slot → instance, immutable and in the rule's slot order: two arrays instead of a hash table.
- * A rule has a handful of instance slots, so {@link #get} searches linearly. The engine makes one per firing from
- * the activation's arrays without copying them (they are never changed once made) and hands the same object to
- * the derivation, the checked conditions and the trace, where a hash map was built and copied before.
+ * A firing's binding, slot → instance, immutable and in the rule's slot order ({@link SlotBinding}: by position,
+ * no hash table), every slot bound. The engine makes one per firing from the activation's arrays without copying
+ * them (they are never changed once made) and hands the same object to the derivation, the checked conditions and
+ * the trace, where a hash map was built and copied before.
  */
-final class Binding extends AbstractMap<String, String> {
+final class Binding extends SlotBinding {
     private static final Binding EMPTY = new Binding(List.of(), new String[0]);
 
     private final List<String> slots;
@@ -59,37 +53,21 @@ final class Binding extends AbstractMap<String, String> {
         return new Binding(List.of(s), f);
     }
 
-    @Override public String get(Object slot) {
-        for (int i = 0; i < facts.length; i++) {
-            String s = slots.get(i);
-            if (s == slot || s.equals(slot)) {
-                return facts[i];
-            }
-        }
-        return null;
-    }
-
-    @Override public boolean containsKey(Object slot) {
-        return get(slot) != null;
-    }
-
-    @Override public boolean containsValue(Object fact) {
-        for (String f : facts) {
-            if (f.equals(fact)) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    @Override public int size() {
+    @Override int width() {
         return facts.length;
     }
 
-    @Override public void forEach(BiConsumer<? super String, ? super String> action) {
-        for (int i = 0; i < facts.length; i++) {
-            action.accept(slots.get(i), facts[i]);
-        }
+    @Override String slotAt(int position) {
+        return slots.get(position);
+    }
+
+    @Override String factAt(int position) {
+        return facts[position];
+    }
+
+    /** Every position is bound. */
+    @Override public int size() {
+        return facts.length;
     }
 
     /** The bound instances in slot order (a read-only view). */
@@ -97,32 +75,6 @@ final class Binding extends AbstractMap<String, String> {
         return new AbstractList<>() {
             @Override public String get(int index) {
                 return facts[index];
-            }
-
-            @Override public int size() {
-                return facts.length;
-            }
-        };
-    }
-
-    @Override public Set<Map.Entry<String, String>> entrySet() {
-        return new AbstractSet<>() {
-            @Override public Iterator<Map.Entry<String, String>> iterator() {
-                return new Iterator<>() {
-                    private int next;
-
-                    @Override public boolean hasNext() {
-                        return next < facts.length;
-                    }
-
-                    @Override public Map.Entry<String, String> next() {
-                        if (next >= facts.length) {
-                            throw new NoSuchElementException();
-                        }
-                        int i = next++;
-                        return new SimpleImmutableEntry<>(slots.get(i), facts[i]);
-                    }
-                };
             }
 
             @Override public int size() {

@@ -10,6 +10,7 @@ import java.util.Optional;
 import java.util.Set;
 import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
+import java.util.function.Function;
 import org.kicnp.core.Change;
 import org.kicnp.core.ChangeSet;
 import org.kicnp.core.DataType;
@@ -43,6 +44,7 @@ final class ForwardChainer {
     private final FactView facts;
     private final Map<String, Rule> rules = new LinkedHashMap<>();
     private final MadeInstances made;
+    private final DerivationCheck check;
     private long stampCounter;
     private long seq;
     private long firings;
@@ -60,6 +62,7 @@ final class ForwardChainer {
         this.scripts = scripts;
         this.tracer = tracer;
         this.made = new MadeInstances(kb);
+        this.check = new DerivationCheck(kb, conditions, scripts, supports, rules);
     }
 
     /** Stamps the instances there are and installs every behavior frame, matching what is already there. */
@@ -236,13 +239,8 @@ final class ForwardChainer {
         agenda.withdrawFact(name);
         for (String dep : supports.dependentsOf(name)) {
             supports.derivation(dep).filter(d -> d.binding().containsValue(name)).ifPresent(d ->
-                    failingSlot(d).ifPresent(slot -> {
-                        unmarkFired(d);
-                        Set<String> all = new LinkedHashSet<>(List.of(dep));
-                        all.addAll(supports.closure(dep));
-                        removeQuietly(all, "the condition of slot '" + slot + "' of '" + d.frame()
-                                + "' no longer holds after " + why);
-                    }));
+                    retractIfFailing(dep, d, slot -> "the condition of slot '" + slot + "' of '" + d.frame()
+                            + "' no longer holds after " + why));
         }
         facts.touch(name).stamp = ++stampCounter;
         network.insert(name, now.get().parent().orElseThrow()).forEach(this::consider);
@@ -256,7 +254,6 @@ final class ForwardChainer {
                 .equals(after.ownSlot(n).flatMap(Slot::effectiveValue)));
         return names;
     }
-
 
     // ---- rules ----
 
@@ -282,13 +279,8 @@ final class ForwardChainer {
             network.addRule(r).forEach(this::consider);
         });
         for (String dep : supports.derivedFrom(frame)) {
-            supports.derivation(dep).ifPresent(d -> failingSlot(d).ifPresent(slot -> {
-                unmarkFired(d);
-                Set<String> all = new LinkedHashSet<>(List.of(dep));
-                all.addAll(supports.closure(dep));
-                removeQuietly(all, "frame '" + frame + "' changed and the condition of slot '" + slot
-                        + "' no longer holds");
-            }));
+            supports.derivation(dep).ifPresent(d -> retractIfFailing(dep, d, slot -> "frame '" + frame
+                    + "' changed and the condition of slot '" + slot + "' no longer holds"));
         }
     }
 
@@ -351,12 +343,7 @@ final class ForwardChainer {
             trace(new TraceEvent.Blocked(r.frame(), a.binding(), blocked.get()));
             return;
         }
-        Map<String, String> full = a.binding();
-        if (!r.optional().isEmpty()) {
-            Map<String, String> withOptional = new LinkedHashMap<>(full);
-            fillOptional(r, withOptional);
-            full = Binding.copyOf(withOptional);
-        }
+        Map<String, String> full = r.optional().isEmpty() ? a.binding() : withOptional(r, a.binding());
         FactView.Fact[] refs = a.refs();
         String trigger = newest(refs, full);
         List<Derivation.CheckedCondition> checked = CheckedConditions.of(r, full, refs, facts, conditions);
@@ -418,7 +405,9 @@ final class ForwardChainer {
         return trigger;
     }
 
-    private void fillOptional(Rule r, Map<String, String> full) {
+    /** The binding with each optional slot bound to the newest instance that fits it, where one does. */
+    private Binding withOptional(Rule r, Binding required) {
+        Map<String, String> full = new LinkedHashMap<>(required);
         for (SlotPattern p : r.optional()) {
             String best = null;
             for (String c : network.candidates(r.frame(), p.slot())) {
@@ -436,37 +425,20 @@ final class ForwardChainer {
                 full.put(p.slot(), best);
             }
         }
+        return Binding.copyOf(full);
     }
 
-    /** The first slot of a derived instance whose class or condition no longer holds, if any. */
-    private Optional<String> failingSlot(Derivation d) {
-        Rule r = rules.get(d.frame());
-        if (r == null || d.createdBy().isPresent()) {
-            return Optional.empty();
-        }
-        for (SlotPattern p : r.patterns()) {
-            String fact = d.binding().get(p.slot());
-            if (fact == null) {
-                if (p.required()) {
-                    return Optional.of(p.slot());
-                }
-                continue;
-            }
-            if (!kb.contains(fact) || !kb.isA(fact, p.argument())
-                    || !conditions.holds(p.condition(), Value.ref(fact), r.frame(), d.binding())) {
-                return Optional.of(p.slot());
-            }
-        }
-        Map<String, String> required = new LinkedHashMap<>();
-        r.required().forEach(p -> required.put(p.slot(), d.binding().get(p.slot())));
-        return scripts.conditionFails(r, required).map(x -> "script");
-    }
-
-    private void unmarkFired(Derivation d) {
-        Rule r = rules.get(d.frame());
-        if (r != null) {
-            supports.unmarkFired(new BindingKey(r.frame(), Activation.factsOf(r, d.binding())));
-        }
+    /**
+     * Retracts a derived instance, with what rests on it, when a slot of its derivation no longer holds; its binding
+     * may then fire again. {@code reason} words the retraction from the failing slot.
+     */
+    private void retractIfFailing(String instance, Derivation d, Function<String, String> reason) {
+        check.failingSlot(d).ifPresent(slot -> {
+            check.unmarkFired(d);
+            Set<String> all = new LinkedHashSet<>(List.of(instance));
+            all.addAll(supports.closure(instance));
+            removeQuietly(all, reason.apply(slot));
+        });
     }
 
     // ---- truth maintenance ----
