@@ -11,13 +11,15 @@ import org.kicnp.gateway.AgentDirectory;
 import org.kicnp.gateway.FeedbackListener;
 import org.kicnp.gateway.GatewayConfig;
 import org.kicnp.gateway.GatewayServer;
+import org.kicnp.gateway.Transport;
 
 /**
  * The gateway process of {@code bench gateway} ({@link GatewayProcess} starts it): the real {@link GatewayServer}
  * with its default configuration on an ephemeral loopback port, authenticating the bench's agents by their tokens,
  * in a JVM of its own, as {@code kicnp serve} runs it and as Mosquitto runs in its own process.
  *
- * <p>Arguments: {@code AGENTS IO_THREADS} (0: the gateway's default of one per core). It prints {@code port=N} on
+ * <p>Arguments: {@code AGENTS IO_THREADS TRANSPORT} (0 threads: the gateway's default of one per core; a transport
+ * as {@link Transport#parse} reads it). It prints {@code port=N} on
  * standard output once it listens, then answers one line per command read from standard input: {@code shed} →
  * {@code shed=N}, {@code metrics} → {@code metrics=…}. It stops when standard input ends (the bench closed it or
  * died), so it never outlives the bench.
@@ -27,13 +29,13 @@ public final class GatewayMain {
     }
 
     public static void main(String[] args) throws IOException {
-        if (args.length != 2) {
-            System.err.println("Usage: GatewayMain AGENTS IO_THREADS");
+        if (args.length != 3) {
+            System.err.println("Usage: GatewayMain AGENTS IO_THREADS TRANSPORT");
             System.exit(2);
         }
         int agents = Integer.parseInt(args[0]);
         int ioThreads = Integer.parseInt(args[1]);
-        GatewayConfig config = GatewayConfig.defaults().withPort(0);
+        GatewayConfig config = GatewayConfig.defaults().withPort(0).withTransport(Transport.parse(args[2]));
         if (ioThreads > 0) {
             config = config.withIoThreads(ioThreads);
         }

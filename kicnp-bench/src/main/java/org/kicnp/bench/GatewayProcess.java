@@ -10,6 +10,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import org.kicnp.gateway.Transport;
 import java.util.concurrent.TimeUnit;
 
 /**
@@ -40,10 +41,12 @@ final class GatewayProcess implements KicnpHub {
      *
      * @param agents the bench agents it authenticates ({@code a00000 ...})
      * @param ioThreads its I/O threads; 0 keeps the gateway's default (one per core)
+     * @param transport its socket transport
      * @param extraOptions JVM options added after the launcher's (e.g. a collector)
      * @throws IllegalStateException when it does not come up; the message says how it ended
      */
-    static GatewayProcess start(int agents, int ioThreads, List<String> extraOptions) throws IOException {
+    static GatewayProcess start(int agents, int ioThreads, Transport transport, List<String> extraOptions)
+            throws IOException {
         List<String> options = new ArrayList<>(launcherOptions());
         options.add("-Dorg.slf4j.simpleLogger.log.org.kicnp.gateway=warn"); // not a line per connection
         options.addAll(extraOptions);
@@ -51,7 +54,7 @@ final class GatewayProcess implements KicnpHub {
         command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         command.addAll(options);
         command.addAll(List.of("-cp", System.getProperty("java.class.path"), GatewayMain.class.getName(),
-                Integer.toString(agents), Integer.toString(ioThreads)));
+                Integer.toString(agents), Integer.toString(ioThreads), transport.label()));
         Process p = new ProcessBuilder(command).redirectError(ProcessBuilder.Redirect.INHERIT).start();
         BufferedReader replies = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8));
         Writer commands = new OutputStreamWriter(p.getOutputStream(), StandardCharsets.UTF_8);
@@ -80,11 +83,15 @@ final class GatewayProcess implements KicnpHub {
 
     /**
      * What {@code ./kicnp} passes every Java verb, {@code kicnp serve} included: Netty may reach into
-     * {@code sun.nio.ch} (no garbage per ready key) and, from JDK 24 on, use {@code sun.misc.Unsafe}.
+     * {@code sun.nio.ch} (no garbage per ready key), load its native transports without the JDK's warning (from
+     * JDK 22 on) and, from JDK 24 on, use {@code sun.misc.Unsafe}.
      */
     static List<String> launcherOptions() {
         List<String> o = new ArrayList<>(List.of("--add-opens=java.base/sun.nio.ch=ALL-UNNAMED",
                 "-Dio.netty.tryReflectionSetAccessible=true"));
+        if (Runtime.version().feature() >= 22) {
+            o.add("--enable-native-access=ALL-UNNAMED");
+        }
         if (Runtime.version().feature() >= 24) {
             o.add("--sun-misc-unsafe-memory-access=allow");
         }

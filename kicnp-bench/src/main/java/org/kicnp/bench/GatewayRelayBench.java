@@ -43,8 +43,8 @@ final class GatewayRelayBench {
                 progress.accept(brokerNote);
             }
         }
-        try (KicnpHub gateway = o.gatewayInProcess() ? InProcessGateway.start(most, o.gatewayThreads())
-                : GatewayProcess.start(most, o.gatewayThreads(), o.gatewayJavaOptions())) {
+        try (KicnpHub gateway = o.gatewayInProcess() ? InProcessGateway.start(most, o.gatewayThreads(), o.transport())
+                : GatewayProcess.start(most, o.gatewayThreads(), o.transport(), o.gatewayJavaOptions())) {
             progress.accept("K-ICNP gateway on " + gateway.address() + ", " + gateway.describe() + ".");
             if (!o.jitWarmup().isZero()) {
                 // Untimed: the JIT compiles the gateway's and both clients' hot paths before anything is measured
@@ -84,7 +84,7 @@ final class GatewayRelayBench {
     private static HubFigures measure(RelayClient client, InetSocketAddress hub, int agents, RelayBenchOptions o,
                                       java.util.function.LongSupplier shed,
                                       java.util.function.LongUnaryOperator hubCpu) throws InterruptedException {
-        try (RelayDriver d = RelayDriver.connect(client, hub, agents, o.clientThreads(), CONNECT_TIMEOUT)) {
+        try (RelayDriver d = RelayDriver.connect(client, hub, agents, o.clientThreads(), o.transport(), CONNECT_TIMEOUT)) {
             RelayDriver.Throughput t = d.throughput(o.windowFor(agents), o.warmup(), o.throughputTime(), hubCpu);
             LatencyFigures latency = d.latency(o.rate(), o.warmup(), o.latencyTime());
             return new HubFigures(t.msgsPerSecond(), latency, shed.getAsLong(), t.hubCpuMicrosPerMsg(),
@@ -100,7 +100,7 @@ final class GatewayRelayBench {
      */
     private static void warm(RelayClient client, InetSocketAddress hub, int agents, RelayBenchOptions o)
             throws InterruptedException {
-        try (RelayDriver d = RelayDriver.connect(client, hub, agents, o.clientThreads(), CONNECT_TIMEOUT)) {
+        try (RelayDriver d = RelayDriver.connect(client, hub, agents, o.clientThreads(), o.transport(), CONNECT_TIMEOUT)) {
             d.throughput(o.windowFor(agents), o.jitWarmup(), Duration.ofMillis(100), clients -> 0);
             d.latency(o.rate(), Duration.ZERO, OPEN_WARMUP);
         }

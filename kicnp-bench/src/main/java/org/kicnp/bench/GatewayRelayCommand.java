@@ -6,6 +6,7 @@ import java.time.Duration;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.Callable;
+import org.kicnp.gateway.Transport;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -69,6 +70,12 @@ final class GatewayRelayCommand implements Callable<Integer> {
                     + "(docs/benchmarks.md, round 4).")
     int gatewayThreads;
 
+    @Option(names = "--transport", defaultValue = "auto", paramLabel = "NAME",
+            description = "Socket transport of the gateway and of the clients (the same for both hubs' clients): "
+                    + "auto (default: the best that works here, io_uring, then epoll, then nio), io_uring, epoll or "
+                    + "nio.")
+    String transport;
+
     @Option(names = "--gateway-in-process",
             description = "Run the gateway inside this JVM, beside the clients (their garbage collections and "
                     + "compilations then stall it too), instead of in a JVM of its own as `kicnp serve` runs it.")
@@ -104,7 +111,7 @@ final class GatewayRelayCommand implements Callable<Integer> {
                     Duration.ofSeconds(seconds), Duration.ofSeconds(seconds), outstanding, clientThreads,
                     gatewayThreads, gatewayInProcess, gatewayJavaOpts.isBlank() ? List.of()
                     : List.of(gatewayJavaOpts.strip().split("\\s+")), Duration.ofSeconds(jitWarmupSeconds), mosquitto,
-                    !noInstall);
+                    !noInstall, available(Transport.parse(transport)));
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
@@ -122,6 +129,14 @@ final class GatewayRelayCommand implements Callable<Integer> {
         out.println(RelayReport.json(runs, o));
         out.flush();
         return 0;
+    }
+
+    /** The transport, when it works here; else the reason, as an {@link IllegalArgumentException} (a usage error). */
+    private static Transport available(Transport t) {
+        t.unavailabilityCause().ifPresent(why -> {
+            throw new IllegalArgumentException("The " + t.label() + " transport does not work here: " + why);
+        });
+        return t;
     }
 
     /** The gateway logs every connection at INFO; a thousand of them would bury the table. */

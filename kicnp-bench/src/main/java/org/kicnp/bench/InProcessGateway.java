@@ -6,6 +6,7 @@ import org.kicnp.core.KnowledgeBase;
 import org.kicnp.gateway.FeedbackListener;
 import org.kicnp.gateway.GatewayConfig;
 import org.kicnp.gateway.GatewayServer;
+import org.kicnp.gateway.Transport;
 
 /**
  * The gateway inside the bench's own JVM, beside the clients ({@code --gateway-in-process}): the clients' garbage
@@ -19,8 +20,8 @@ final class InProcessGateway implements KicnpHub {
     }
 
     /** Starts the gateway on an ephemeral loopback port, authenticating the bench's {@code agents}. */
-    static InProcessGateway start(int agents, int ioThreads) {
-        GatewayConfig config = GatewayConfig.defaults().withPort(0);
+    static InProcessGateway start(int agents, int ioThreads, Transport transport) {
+        GatewayConfig config = GatewayConfig.defaults().withPort(0).withTransport(transport);
         if (ioThreads > 0) {
             config = config.withIoThreads(ioThreads);
         }

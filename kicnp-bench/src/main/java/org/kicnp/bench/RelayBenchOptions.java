@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
 import java.util.Optional;
+import org.kicnp.gateway.Transport;
 
 /**
  * How {@link GatewayRelayBench} runs.
@@ -21,12 +22,13 @@ import java.util.Optional;
  * @param jitWarmup an untimed closed-loop run on each hub before the first measurement (zero: none)
  * @param mosquittoScript {@code scripts/mosquitto.sh}; empty skips Mosquitto
  * @param install whether the script may install Mosquitto with apt-get
+ * @param transport the socket transport of the gateway and of the clients (both hubs' clients alike)
  */
 record RelayBenchOptions(List<Integer> agentCounts, int messageBytes, int rate, Duration warmup, Duration throughputTime,
                          Duration latencyTime, int outstanding, int clientThreads, int gatewayThreads,
                          boolean gatewayInProcess, List<String> gatewayJavaOptions, Duration jitWarmup,
                          Optional<Path> mosquittoScript,
-                         boolean install) {
+                         boolean install, Transport transport) {
     RelayBenchOptions {
         agentCounts = List.copyOf(agentCounts);
         gatewayJavaOptions = List.copyOf(gatewayJavaOptions);
@@ -35,6 +37,7 @@ record RelayBenchOptions(List<Integer> agentCounts, int messageBytes, int rate, 
         requireNonNull(latencyTime, "latencyTime");
         requireNonNull(jitWarmup, "jitWarmup");
         requireNonNull(mosquittoScript, "mosquittoScript");
+        requireNonNull(transport, "transport");
         if (agentCounts.isEmpty() || agentCounts.stream().anyMatch(n -> n < 2 || n % 2 != 0)) {
             throw new IllegalArgumentException("Agent counts must be even numbers of 2 or more, not " + agentCounts + ".");
         }

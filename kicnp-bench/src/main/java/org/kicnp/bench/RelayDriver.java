@@ -7,9 +7,7 @@ import io.netty.channel.ChannelOption;
 import io.netty.channel.EventLoop;
 import io.netty.channel.EventLoopGroup;
 import io.netty.channel.MultiThreadIoEventLoopGroup;
-import io.netty.channel.nio.NioIoHandler;
 import io.netty.channel.socket.SocketChannel;
-import io.netty.channel.socket.nio.NioSocketChannel;
 import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -20,6 +18,7 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import org.HdrHistogram.Histogram;
+import org.kicnp.gateway.Transport;
 
 /**
  * Connects a number of benchmark agents to a hub through one {@link RelayClient} and runs the two measurements:
@@ -42,13 +41,15 @@ final class RelayDriver implements AutoCloseable {
      * Connects {@code count} agents (an even number) and waits until every one can send and receive.
      *
      * @param threads client event loops
+     * @param transport their socket transport
      */
-    static RelayDriver connect(RelayClient client, InetSocketAddress hub, int count, int threads, Duration timeout)
+    static RelayDriver connect(RelayClient client, InetSocketAddress hub, int count, int threads, Transport transport,
+            Duration timeout)
             throws InterruptedException {
         if (count < 2 || count % 2 != 0) {
             throw new IllegalArgumentException("Agents come in pairs: " + count + " is not an even number of 2 or more.");
         }
-        RelayDriver d = new RelayDriver(new MultiThreadIoEventLoopGroup(threads, NioIoHandler.newFactory()));
+        RelayDriver d = new RelayDriver(new MultiThreadIoEventLoopGroup(threads, transport.ioHandlerFactory()));
         try {
             for (io.netty.util.concurrent.EventExecutor e : d.group) {
                 d.loops.add(new RelayLoop((EventLoop) e));
@@ -63,7 +64,7 @@ final class RelayDriver implements AutoCloseable {
             for (int k = 0; k < count; k++) {
                 d.agents.get(k).peer = d.agents.get(k ^ 1);
             }
-            d.connectAll(client, hub, timeout);
+            d.connectAll(client, hub, transport, timeout);
             return d;
         } catch (RuntimeException | InterruptedException e) {
             d.close();
@@ -71,7 +72,7 @@ final class RelayDriver implements AutoCloseable {
         }
     }
 
-    private void connectAll(RelayClient client, InetSocketAddress hub, Duration timeout) throws InterruptedException {
+    private void connectAll(RelayClient client, InetSocketAddress hub, Transport transport, Duration timeout) throws InterruptedException {
         long deadline = System.nanoTime() + timeout.toNanos();
         int batch = 100; // handshakes in flight at once, so the listen backlog never overflows
         for (int from = 0; from < agents.size(); from += batch) {
@@ -79,7 +80,7 @@ final class RelayDriver implements AutoCloseable {
             for (RelayAgent a : agents.subList(from, Math.min(agents.size(), from + batch))) {
                 CompletableFuture<Void> f = new CompletableFuture<>();
                 ready.add(f);
-                Channel ch = new Bootstrap().group(a.loop.executor).channel(NioSocketChannel.class)
+                Channel ch = new Bootstrap().group(a.loop.executor).channel(transport.socketChannel())
                         .option(ChannelOption.TCP_NODELAY, true)
                         .handler(new ChannelInitializer<SocketChannel>() {
                             @Override protected void initChannel(SocketChannel c) {

@@ -14,7 +14,7 @@ final class RelayReport {
         return String.format(Locale.ROOT, """
                 Gateway relay benchmark: K-ICNP GatewayServer vs Mosquitto%s
                   machine: %d cores, load average %s; the clients run in this JVM on the same cores (%d event loops);
-                  gateway: %s; I/O threads: %s
+                  gateway: %s; I/O threads: %s; socket transport (gateway and clients): %s
                   pattern: agents in pairs, each sends to its peer by name through the hub (K-ICNP relay toAgent; MQTT
                            each client subscribes to its own topic and publishes to its peer's); loopback TCP, Nagle off
                   delivery: K-ICNP fire-and-forget relay (empty id: the hub sends no ack, as the SDK's tellTo) vs
@@ -27,7 +27,8 @@ final class RelayReport {
                            warm-up; latency = delivery time - intended send time (coordinated omission corrected)
                 """, mosquittoVersion.isEmpty() ? "" : " (" + mosquittoVersion + ")",
                 Runtime.getRuntime().availableProcessors(), loadAverage(), o.clientThreads(), gatewayPlace(o),
-                o.gatewayThreads() > 0 ? String.valueOf(o.gatewayThreads()) : "one per core", o.messageBytes(),
+                o.gatewayThreads() > 0 ? String.valueOf(o.gatewayThreads()) : "one per core", o.transport().label(),
+                o.messageBytes(),
                 o.jitWarmup().toSeconds(), o.jitWarmup().isZero() ? 0 : GatewayRelayBench.OPEN_WARMUP.toSeconds(),
                 o.outstanding(), o.throughputTime().toSeconds(), o.warmup().toSeconds(), o.rate(),
                 o.latencyTime().toSeconds(), o.warmup().toSeconds());
@@ -107,6 +108,7 @@ final class RelayReport {
         return sb.append("], \"offered_msgs_per_s\": ").append(o.rate())
                 .append(", \"message_bytes\": ").append(o.messageBytes())
                 .append(", \"gateway\": \"").append(o.gatewayInProcess() ? "in_process" : "own_process").append('"')
+                .append(", \"transport\": \"").append(o.transport().label()).append('"')
                 .append(", \"cores\": ").append(Runtime.getRuntime().availableProcessors())
                 .append(", \"load_average\": \"").append(loadAverage()).append("\"}").toString();
     }

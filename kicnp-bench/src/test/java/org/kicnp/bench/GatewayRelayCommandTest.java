@@ -9,6 +9,7 @@ import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.kicnp.gateway.Transport;
 import picocli.CommandLine;
 
 /** {@code bench gateway} end to end on a tiny configuration: real gateway, real sockets, the real broker if any. */
@@ -33,6 +34,29 @@ class GatewayRelayCommandTest {
         assertThat(run.out()).contains("K-ICNP", "coordinated omission",
                 Runtime.getRuntime().availableProcessors() + " cores", "gateway: a JVM of its own");
         assertThat(lastJson(run.out()).get("gateway").asText()).isEqualTo("own_process");
+        // auto: the best transport that works here, named in the header and the JSON
+        assertThat(lastJson(run.out()).get("transport").asText()).isEqualTo(Transport.best().label());
+        assertThat(run.out()).contains("socket transport (gateway and clients): " + Transport.best().label());
+    }
+
+    @Test
+    void gateway_withJavaNio_runsGatewayAndClientsOnIt() throws Exception {
+        Output run = run("gateway", "--agents", "4", "--seconds", "1", "--warmup", "0", "--jit-warmup", "0", "--rate", "1000",
+                "--no-mosquitto", "--transport", "nio");
+
+        assertThat(run.code()).as(run.err()).isZero();
+        JsonNode json = lastJson(run.out());
+        assertThat(json.get("transport").asText()).isEqualTo("nio");
+        assertThat(json.get("runs").get(0).get("kicnp_msgs_per_s").asDouble()).isPositive();
+        assertThat(json.get("runs").get(0).get("kicnp_lost_at_50k").asLong()).isZero();
+    }
+
+    @Test
+    void gateway_unknownTransport_isAUsageErrorListingTheChoices() {
+        Output run = run("gateway", "--agents", "4", "--no-mosquitto", "--transport", "carrier-pigeon");
+
+        assertThat(run.code()).isEqualTo(2);
+        assertThat(run.err()).contains("carrier-pigeon", "auto, io_uring, epoll, nio");
     }
 
     @Test

@@ -6,9 +6,13 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import org.kicnp.cli.platform.Platform;
 import org.kicnp.cli.platform.PlatformConfig;
+import org.kicnp.gateway.Transport;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
 
 /**
  * {@code kicnp serve KB_DIR}: runs the platform — durable knowledge base, inference engine, gateway and editor —
@@ -36,10 +40,24 @@ public final class ServeCommand implements Callable<Integer> {
     @Option(names = "--event-log", paramLabel = "FILE", description = "Event log (JSON lines). Default: KB_DIR/.kicnp/logs/events-TIME.jsonl.")
     Path eventLog;
 
+    @Option(names = "--transport", defaultValue = "auto", paramLabel = "NAME",
+            description = "The gateway's socket transport: auto (default: the best that works here, io_uring, then "
+                    + "epoll, then nio), io_uring, epoll or nio.")
+    String transport;
+
+    @Spec
+    CommandSpec spec;
+
     @Override public Integer call() throws InterruptedException {
+        Transport t;
+        try {
+            t = Transport.parse(transport);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
         PlatformConfig config = PlatformConfig.of(kbDir).withGatewayPort(gatewayPort).withHttpPort(Optional.of(httpPort))
                 .withAgentsFile(Optional.ofNullable(agents)).withEditorPasswordFile(Optional.ofNullable(passwordFile))
-                .withEventLog(Optional.ofNullable(eventLog));
+                .withEventLog(Optional.ofNullable(eventLog)).withGatewayTransport(t);
         Platform platform = Platform.start(config);
         printBanner(platform);
         CountDownLatch stopped = new CountDownLatch(1);
@@ -54,7 +72,8 @@ public final class ServeCommand implements Callable<Integer> {
 
     static void printBanner(Platform platform) {
         System.out.println("K-ICNP serving " + platform.kb().size() + " frames.");
-        System.out.println("  gateway:  127.0.0.1:" + platform.gatewayPort() + " (agent tokens in " + platform.agentsFile() + ")");
+        System.out.println("  gateway:  127.0.0.1:" + platform.gatewayPort() + " (" + platform.gatewayTransport().label()
+                + " transport; agent tokens in " + platform.agentsFile() + ")");
         platform.editorPort().ifPresent(p -> System.out.println("  editor:   http://127.0.0.1:" + p + "/ (password in "
                 + platform.editorPasswordFile().map(Path::toString).orElse("?") + ")"));
         System.out.println("  events:   " + platform.events().file());

@@ -24,7 +24,22 @@ class ServeCommandTest {
     @Test
     void serveHelp_namesEveryOption() {
         assertThat(help("serve")).contains("KB_DIR", "--gateway-port", "--http-port", "--agents",
-                "--editor-password-file", "--event-log");
+                "--editor-password-file", "--event-log", "--transport");
+    }
+
+    @Test
+    void serve_unknownTransport_isAUsageError_beforeAnythingStarts() {
+        PrintStream old = System.err;
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        int code;
+        try {
+            System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
+            code = Main.run("serve", "no-such-kb-dir", "--transport", "carrier-pigeon");
+        } finally {
+            System.setErr(old);
+        }
+        assertThat(code).isEqualTo(2);
+        assertThat(err.toString(StandardCharsets.UTF_8)).contains("carrier-pigeon", "auto, io_uring, epoll, nio");
     }
 
     @Test

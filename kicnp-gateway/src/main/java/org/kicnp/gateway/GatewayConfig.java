@@ -10,19 +10,21 @@ import org.kicnp.protocol.Framing;
 /**
  * How a gateway listens and what it bounds. Defaults: loopback only, port 7407, 1 MiB frames, 30 s heartbeat
  * timeout, 64/256 KiB write-buffer water marks, a slow consumer dropped after 1,000 consecutive shed messages,
- * no TLS, one I/O thread per core. Immutable; the {@code with…} methods return changed copies.
+ * no TLS, one I/O thread per core, the best socket transport available here ({@link Transport#best()}). Immutable; the {@code with…} methods return changed copies.
  *
  * @param port 0 picks an ephemeral port (tests)
  * @param ioThreads the event loops serving connections (see {@link #withIoThreads})
+ * @param transport the socket transport under those loops (see {@link Transport})
  */
 public record GatewayConfig(String host, int port, String serverName, int maxFrameBytes, Duration heartbeatTimeout,
                             int writeLowWaterBytes, int writeHighWaterBytes, int maxShedBeforeDrop,
-                            Optional<SslContext> tls, int ioThreads) {
+                            Optional<SslContext> tls, int ioThreads, Transport transport) {
     public GatewayConfig {
         requireNonNull(host, "host");
         requireNonNull(serverName, "serverName");
         requireNonNull(heartbeatTimeout, "heartbeatTimeout");
         requireNonNull(tls, "tls");
+        requireNonNull(transport, "transport");
         if (port < 0 || port > 65_535) {
             throw new IllegalArgumentException("Port " + port + " is not between 0 and 65535.");
         }
@@ -47,37 +49,38 @@ public record GatewayConfig(String host, int port, String serverName, int maxFra
     /** The defaults: {@code 127.0.0.1:7407}. */
     public static GatewayConfig defaults() {
         return new GatewayConfig("127.0.0.1", 7407, "kicnp", Framing.DEFAULT_MAX_FRAME_BYTES, Duration.ofSeconds(30),
-                64 * 1024, 256 * 1024, 1_000, Optional.empty(), Runtime.getRuntime().availableProcessors());
+                64 * 1024, 256 * 1024, 1_000, Optional.empty(), Runtime.getRuntime().availableProcessors(),
+                Transport.best());
     }
 
     public GatewayConfig withHost(String h) {
         return new GatewayConfig(h, port, serverName, maxFrameBytes, heartbeatTimeout, writeLowWaterBytes,
-                writeHighWaterBytes, maxShedBeforeDrop, tls, ioThreads);
+                writeHighWaterBytes, maxShedBeforeDrop, tls, ioThreads, transport);
     }
 
     public GatewayConfig withPort(int p) {
         return new GatewayConfig(host, p, serverName, maxFrameBytes, heartbeatTimeout, writeLowWaterBytes,
-                writeHighWaterBytes, maxShedBeforeDrop, tls, ioThreads);
+                writeHighWaterBytes, maxShedBeforeDrop, tls, ioThreads, transport);
     }
 
     public GatewayConfig withServerName(String name) {
         return new GatewayConfig(host, port, name, maxFrameBytes, heartbeatTimeout, writeLowWaterBytes,
-                writeHighWaterBytes, maxShedBeforeDrop, tls, ioThreads);
+                writeHighWaterBytes, maxShedBeforeDrop, tls, ioThreads, transport);
     }
 
     public GatewayConfig withMaxFrameBytes(int bytes) {
         return new GatewayConfig(host, port, serverName, bytes, heartbeatTimeout, writeLowWaterBytes,
-                writeHighWaterBytes, maxShedBeforeDrop, tls, ioThreads);
+                writeHighWaterBytes, maxShedBeforeDrop, tls, ioThreads, transport);
     }
 
     public GatewayConfig withHeartbeatTimeout(Duration timeout) {
         return new GatewayConfig(host, port, serverName, maxFrameBytes, timeout, writeLowWaterBytes,
-                writeHighWaterBytes, maxShedBeforeDrop, tls, ioThreads);
+                writeHighWaterBytes, maxShedBeforeDrop, tls, ioThreads, transport);
     }
 
     public GatewayConfig withWriteBuffer(int lowBytes, int highBytes, int maxShed) {
         return new GatewayConfig(host, port, serverName, maxFrameBytes, heartbeatTimeout, lowBytes, highBytes,
-                maxShed, tls, ioThreads);
+                maxShed, tls, ioThreads, transport);
     }
 
     /**
@@ -86,11 +89,17 @@ public record GatewayConfig(String host, int port, String serverName, int maxFra
      */
     public GatewayConfig withIoThreads(int threads) {
         return new GatewayConfig(host, port, serverName, maxFrameBytes, heartbeatTimeout, writeLowWaterBytes,
-                writeHighWaterBytes, maxShedBeforeDrop, tls, threads);
+                writeHighWaterBytes, maxShedBeforeDrop, tls, threads, transport);
+    }
+
+    /** The socket transport; one that does not work here makes {@link GatewayServer#start} fail, saying why. */
+    public GatewayConfig withTransport(Transport t) {
+        return new GatewayConfig(host, port, serverName, maxFrameBytes, heartbeatTimeout, writeLowWaterBytes,
+                writeHighWaterBytes, maxShedBeforeDrop, tls, ioThreads, t);
     }
 
     public GatewayConfig withTls(SslContext context) {
         return new GatewayConfig(host, port, serverName, maxFrameBytes, heartbeatTimeout, writeLowWaterBytes,
-                writeHighWaterBytes, maxShedBeforeDrop, Optional.of(context), ioThreads);
+                writeHighWaterBytes, maxShedBeforeDrop, Optional.of(context), ioThreads, transport);
     }
 }

@@ -10,8 +10,6 @@ import io.netty.channel.MultiThreadIoEventLoopGroup;
 import io.netty.channel.WriteBufferWaterMark;
 import io.netty.channel.group.ChannelGroup;
 import io.netty.channel.group.DefaultChannelGroup;
-import io.netty.channel.nio.NioIoHandler;
-import io.netty.channel.socket.nio.NioServerSocketChannel;
 import io.netty.util.concurrent.GlobalEventExecutor;
 import java.net.InetSocketAddress;
 import java.util.List;
@@ -40,9 +38,10 @@ public final class GatewayServer implements AutoCloseable {
     private final ServerAgent server;
     private final GatewayMetrics metrics;
     private final KnowledgeBase kb;
+    private final Transport transport;
 
     private GatewayServer(EventLoopGroup boss, EventLoopGroup workers, Channel listener, ChannelGroup connections,
-                          ServerAgent server, GatewayMetrics metrics, KnowledgeBase kb) {
+                          ServerAgent server, GatewayMetrics metrics, KnowledgeBase kb, Transport transport) {
         this.boss = boss;
         this.workers = workers;
         this.listener = listener;
@@ -50,6 +49,7 @@ public final class GatewayServer implements AutoCloseable {
         this.server = server;
         this.metrics = metrics;
         this.kb = kb;
+        this.transport = transport;
     }
 
     /**
@@ -66,31 +66,36 @@ public final class GatewayServer implements AutoCloseable {
      * Starts a gateway over a knowledge base that takes an agent's runtime frames away through {@code retraction}
      * when the agent leaves (the platform retracts them through its inference engine).
      *
-     * @throws GatewayException when the address cannot be bound
+     * @throws GatewayException when the address cannot be bound, or the configured transport does not work here
      */
     public static GatewayServer start(GatewayConfig config, AgentDirectory agents, KnowledgeBase kb,
                                       FeedbackListener feedback, Retraction retraction) {
         requireNonNull(config, "config");
+        Transport transport = config.transport();
+        transport.unavailabilityCause().ifPresent(why -> {
+            throw new GatewayException("The " + transport.label() + " transport does not work here: " + why
+                    + " (choose another, or auto for the best one that does).");
+        });
         GatewayMetrics metrics = new GatewayMetrics();
         ServerAgent server = ServerAgent.create(config, requireNonNull(agents, "agents"), requireNonNull(kb, "kb"),
                 requireNonNull(feedback, "feedback"), requireNonNull(retraction, "retraction"), metrics);
         ChannelGroup connections = new DefaultChannelGroup("kicnp-agents", GlobalEventExecutor.INSTANCE);
-        EventLoopGroup boss = new MultiThreadIoEventLoopGroup(1, NioIoHandler.newFactory());
-        EventLoopGroup workers = new MultiThreadIoEventLoopGroup(config.ioThreads(), NioIoHandler.newFactory());
+        EventLoopGroup boss = new MultiThreadIoEventLoopGroup(1, transport.ioHandlerFactory());
+        EventLoopGroup workers = new MultiThreadIoEventLoopGroup(config.ioThreads(), transport.ioHandlerFactory());
         GatewayInitializer init = new GatewayInitializer(config, server, metrics, connections);
         try {
             Channel ch = new ServerBootstrap()
                     .group(boss, workers)
-                    .channel(NioServerSocketChannel.class)
+                    .channel(transport.serverChannel())
                     .childOption(ChannelOption.TCP_NODELAY, true)
                     .childOption(ChannelOption.WRITE_BUFFER_WATER_MARK,
                             new WriteBufferWaterMark(config.writeLowWaterBytes(), config.writeHighWaterBytes()))
                     .childHandler(init)
                     .bind(config.host(), config.port()).sync().channel();
             kb.addListener(server.knowledge());
-            GatewayServer gw = new GatewayServer(boss, workers, ch, connections, server, metrics, kb);
-            LOG.info("K-ICNP gateway '{}' listening on {}{}.", config.serverName(), ch.localAddress(),
-                    config.tls().isPresent() ? " (TLS)" : "");
+            GatewayServer gw = new GatewayServer(boss, workers, ch, connections, server, metrics, kb, transport);
+            LOG.info("K-ICNP gateway '{}' listening on {}{} ({} transport).", config.serverName(), ch.localAddress(),
+                    config.tls().isPresent() ? " (TLS)" : "", transport.label());
             return gw;
         } catch (Exception e) {
             boss.shutdownGracefully(0, 1, TimeUnit.SECONDS);
@@ -114,6 +119,11 @@ public final class GatewayServer implements AutoCloseable {
     /** Where the platform sends commands to robots. */
     public ActionSink actionSink() {
         return server.commands();
+    }
+
+    /** The socket transport it runs on. */
+    public Transport transport() {
+        return transport;
     }
 
     public GatewayMetrics metrics() {

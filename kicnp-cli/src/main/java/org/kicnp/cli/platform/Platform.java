@@ -20,6 +20,7 @@ import org.kicnp.editor.TeleOperation;
 import org.kicnp.gateway.AgentDirectory;
 import org.kicnp.gateway.GatewayConfig;
 import org.kicnp.gateway.GatewayServer;
+import org.kicnp.gateway.Transport;
 import org.kicnp.inference.GraalScriptHost;
 import org.kicnp.inference.InferenceEngine;
 import org.kicnp.script.ScriptConfig;
@@ -120,7 +121,8 @@ public final class Platform implements AutoCloseable {
             CommandBridge bridge = new CommandBridge(kb, log);
             TraceLog traceLog = new TraceLog(log);
             EngineRetraction retraction = new EngineRetraction(kb, engineThread);
-            gateway = GatewayServer.start(GatewayConfig.defaults().withPort(config.gatewayPort()), directory, kb, bridge,
+            gateway = GatewayServer.start(GatewayConfig.defaults().withPort(config.gatewayPort())
+                    .withTransport(config.gatewayTransport()), directory, kb, bridge,
                     retraction);
             engine = InferenceEngine.builder(kb).scripts(new GraalScriptHost(scripts)).actionSink(bridge)
                     .runOn(engineThread).build();
@@ -199,6 +201,10 @@ public final class Platform implements AutoCloseable {
 
     public int gatewayPort() {
         return gateway.port();
+    }
+
+    public Transport gatewayTransport() {
+        return gateway.transport();
     }
 
     /** The editor's port, when it runs. */

@@ -20,6 +20,7 @@ import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
 import org.kicnp.core.Slot;
 import org.kicnp.core.Value;
+import org.kicnp.gateway.Transport;
 import org.kicnp.protocol.AgentKind;
 import org.kicnp.protocol.Message.Command;
 
@@ -85,6 +86,23 @@ class PlatformTest {
             assertThat(log).anyMatch(l -> l.contains("\"event\":\"fired\"") && l.contains("AskUserName"));
             assertThat(log).anyMatch(l -> l.contains("\"event\":\"command\"") && l.contains("robovie"));
             assertThat(log).anyMatch(l -> l.contains("\"event\":\"feedback\"") && l.contains("\"stage\":\"ended\""));
+        }
+    }
+
+    @Test
+    void serve_onJavaNio_connectsTheRobotsToo() throws Exception {
+        Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
+        try (Platform platform = Platform.start(PlatformConfig.of(kb).withEphemeralPorts()
+                .withGatewayTransport(Transport.NIO))) {
+            assertThat(platform.gatewayTransport()).isEqualTo(Transport.NIO);
+            try (RecordingRobot robovie = new RecordingRobot(AgentOptions.of("127.0.0.1", platform.gatewayPort(),
+                    "robovie", AgentKind.ROBOT, platform.token("robovie")))) {
+                robovie.startAndAwait(Duration.ofSeconds(10));
+                robovie.sensor("face_seen", Value.of("unknown"),
+                        new Value.Lst(List.of(Value.of(0.1), Value.of(0.2), Value.of(0.3))));
+                await("FaceDetection fires on the signal sent over NIO",
+                        () -> !platform.kb().instancesOf("FaceDetection").isEmpty());
+            }
         }
     }
 
