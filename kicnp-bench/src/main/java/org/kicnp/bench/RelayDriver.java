@@ -221,11 +221,18 @@ final class RelayDriver implements AutoCloseable {
 
     @Override public void close() {
         loops.forEach(l -> l.closing = true);
+        List<io.netty.channel.ChannelFuture> closed = new ArrayList<>();
         for (RelayAgent a : agents) {
             if (a.channel != null) {
                 a.channel.eventLoop().execute(a::discard);
-                a.channel.close();
+                closed.add(a.channel.close());
             }
+        }
+        // Closing is asynchronous on io_uring (the kernel completes the close); the loops stay up until every channel
+        // has closed, else a channel's last tasks meet a terminated loop.
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+        for (io.netty.channel.ChannelFuture f : closed) {
+            f.awaitUninterruptibly(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
         }
         group.shutdownGracefully(0, 1, TimeUnit.SECONDS).syncUninterruptibly();
     }

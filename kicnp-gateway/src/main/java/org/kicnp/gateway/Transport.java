@@ -80,14 +80,31 @@ public enum Transport {
         return unavailabilityCause().isEmpty();
     }
 
-    /** Why this transport does not work here (its native library did not load, the kernel refused), if it does not. */
+    /**
+     * Why this transport does not work here (its native library did not load, the kernel refused, the library does not
+     * match the Java classes that bind to it), if it does not.
+     */
     public Optional<String> unavailabilityCause() {
         Throwable cause = switch (this) {
-            case IO_URING -> IoUring.isAvailable() ? null : IoUring.unavailabilityCause();
-            case EPOLL -> Epoll.isAvailable() ? null : Epoll.unavailabilityCause();
+            case IO_URING -> IoUring.isAvailable() ? nativeBindingProblem() : IoUring.unavailabilityCause();
+            case EPOLL -> Epoll.isAvailable() ? nativeBindingProblem() : Epoll.unavailabilityCause();
             case NIO -> null;
         };
-        return cause == null ? Optional.empty() : Optional.of(String.valueOf(cause.getMessage()));
+        return cause == null ? Optional.empty() : Optional.of(cause.getClass().getSimpleName() + ": " + cause.getMessage());
+    }
+
+    /**
+     * A native transport's library loads before its shared part ({@code unix-common}) binds its own native methods,
+     * which happens on the first error a connection meets: a library built for another Netty version than those
+     * classes would then fail inside the event loop. Binding them here turns that into "not available".
+     */
+    private static Throwable nativeBindingProblem() {
+        try {
+            Class.forName("io.netty.channel.unix.Errors", true, Transport.class.getClassLoader());
+            return null;
+        } catch (ClassNotFoundException | LinkageError e) {
+            return e instanceof ExceptionInInitializerError && e.getCause() != null ? e.getCause() : e;
+        }
     }
 
     public IoHandlerFactory ioHandlerFactory() {
