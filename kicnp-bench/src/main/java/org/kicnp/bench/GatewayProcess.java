@@ -10,8 +10,8 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import org.kicnp.gateway.Transport;
 import java.util.concurrent.TimeUnit;
+import org.kicnp.gateway.Transport;
 
 /**
  * The gateway in a JVM of its own ({@link GatewayMain}), started by the bench as Mosquitto is started by its script:

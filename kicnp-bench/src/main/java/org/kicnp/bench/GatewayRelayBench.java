@@ -84,7 +84,8 @@ final class GatewayRelayBench {
     private static HubFigures measure(RelayClient client, InetSocketAddress hub, int agents, RelayBenchOptions o,
                                       java.util.function.LongSupplier shed,
                                       java.util.function.LongUnaryOperator hubCpu) throws InterruptedException {
-        try (RelayDriver d = RelayDriver.connect(client, hub, agents, o.clientThreads(), o.transport(), CONNECT_TIMEOUT)) {
+        try (RelayDriver d = RelayDriver.connect(client, hub, agents, o.clientThreads(), o.transport(),
+                CONNECT_TIMEOUT)) {
             RelayDriver.Throughput t = d.throughput(o.windowFor(agents), o.warmup(), o.throughputTime(), hubCpu);
             LatencyFigures latency = d.latency(o.rate(), o.warmup(), o.latencyTime());
             return new HubFigures(t.msgsPerSecond(), latency, shed.getAsLong(), t.hubCpuMicrosPerMsg(),
@@ -100,7 +101,8 @@ final class GatewayRelayBench {
      */
     private static void warm(RelayClient client, InetSocketAddress hub, int agents, RelayBenchOptions o)
             throws InterruptedException {
-        try (RelayDriver d = RelayDriver.connect(client, hub, agents, o.clientThreads(), o.transport(), CONNECT_TIMEOUT)) {
+        try (RelayDriver d = RelayDriver.connect(client, hub, agents, o.clientThreads(), o.transport(),
+                CONNECT_TIMEOUT)) {
             d.throughput(o.windowFor(agents), o.jitWarmup(), Duration.ofMillis(100), clients -> 0);
             d.latency(o.rate(), Duration.ZERO, OPEN_WARMUP);
         }

@@ -111,7 +111,7 @@ final class GatewayRelayCommand implements Callable<Integer> {
                     Duration.ofSeconds(seconds), Duration.ofSeconds(seconds), outstanding, clientThreads,
                     gatewayThreads, gatewayInProcess, gatewayJavaOpts.isBlank() ? List.of()
                     : List.of(gatewayJavaOpts.strip().split("\\s+")), Duration.ofSeconds(jitWarmupSeconds), mosquitto,
-                    !noInstall, available(Transport.parse(transport)));
+                    !noInstall, Transport.parse(transport).requireAvailable());
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage());
         }
@@ -129,14 +129,6 @@ final class GatewayRelayCommand implements Callable<Integer> {
         out.println(RelayReport.json(runs, o));
         out.flush();
         return 0;
-    }
-
-    /** The transport, when it works here; else the reason, as an {@link IllegalArgumentException} (a usage error). */
-    private static Transport available(Transport t) {
-        t.unavailabilityCause().ifPresent(why -> {
-            throw new IllegalArgumentException("The " + t.label() + " transport does not work here: " + why);
-        });
-        return t;
     }
 
     /** The gateway logs every connection at INFO; a thousand of them would bury the table. */

@@ -2,6 +2,7 @@ package org.kicnp.bench;
 
 import io.netty.bootstrap.Bootstrap;
 import io.netty.channel.Channel;
+import io.netty.channel.ChannelFuture;
 import io.netty.channel.ChannelInitializer;
 import io.netty.channel.ChannelOption;
 import io.netty.channel.EventLoop;
@@ -72,7 +73,8 @@ final class RelayDriver implements AutoCloseable {
         }
     }
 
-    private void connectAll(RelayClient client, InetSocketAddress hub, Transport transport, Duration timeout) throws InterruptedException {
+    private void connectAll(RelayClient client, InetSocketAddress hub, Transport transport, Duration timeout)
+            throws InterruptedException {
         long deadline = System.nanoTime() + timeout.toNanos();
         int batch = 100; // handshakes in flight at once, so the listen backlog never overflows
         for (int from = 0; from < agents.size(); from += batch) {
@@ -221,7 +223,7 @@ final class RelayDriver implements AutoCloseable {
 
     @Override public void close() {
         loops.forEach(l -> l.closing = true);
-        List<io.netty.channel.ChannelFuture> closed = new ArrayList<>();
+        List<ChannelFuture> closed = new ArrayList<>();
         for (RelayAgent a : agents) {
             if (a.channel != null) {
                 a.channel.eventLoop().execute(a::discard);
@@ -231,7 +233,7 @@ final class RelayDriver implements AutoCloseable {
         // Closing is asynchronous on io_uring (the kernel completes the close); the loops stay up until every channel
         // has closed, else a channel's last tasks meet a terminated loop.
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
-        for (io.netty.channel.ChannelFuture f : closed) {
+        for (ChannelFuture f : closed) {
             f.awaitUninterruptibly(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
         }
         group.shutdownGracefully(0, 1, TimeUnit.SECONDS).syncUninterruptibly();

@@ -72,8 +72,8 @@ public final class ServeCommand implements Callable<Integer> {
 
     static void printBanner(Platform platform) {
         System.out.println("K-ICNP serving " + platform.kb().size() + " frames.");
-        System.out.println("  gateway:  127.0.0.1:" + platform.gatewayPort() + " (" + platform.gatewayTransport().label()
-                + " transport; agent tokens in " + platform.agentsFile() + ")");
+        System.out.println("  gateway:  127.0.0.1:" + platform.gatewayPort() + " ("
+                + platform.gatewayTransport().label() + " transport; agent tokens in " + platform.agentsFile() + ")");
         platform.editorPort().ifPresent(p -> System.out.println("  editor:   http://127.0.0.1:" + p + "/ (password in "
                 + platform.editorPasswordFile().map(Path::toString).orElse("?") + ")"));
         System.out.println("  events:   " + platform.events().file());

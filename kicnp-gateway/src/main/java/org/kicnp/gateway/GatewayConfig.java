@@ -10,7 +10,8 @@ import org.kicnp.protocol.Framing;
 /**
  * How a gateway listens and what it bounds. Defaults: loopback only, port 7407, 1 MiB frames, 30 s heartbeat
  * timeout, 64/256 KiB write-buffer water marks, a slow consumer dropped after 1,000 consecutive shed messages,
- * no TLS, one I/O thread per core, the best socket transport available here ({@link Transport#best()}). Immutable; the {@code with…} methods return changed copies.
+ * no TLS, one I/O thread per core, the best socket transport available here ({@link Transport#best()}). Immutable;
+ * the {@code with…} methods return changed copies.
  *
  * @param port 0 picks an ephemeral port (tests)
  * @param ioThreads the event loops serving connections (see {@link #withIoThreads})

@@ -72,10 +72,11 @@ public final class GatewayServer implements AutoCloseable {
                                       FeedbackListener feedback, Retraction retraction) {
         requireNonNull(config, "config");
         Transport transport = config.transport();
-        transport.unavailabilityCause().ifPresent(why -> {
-            throw new GatewayException("The " + transport.label() + " transport does not work here: " + why
-                    + " (choose another, or auto for the best one that does).");
-        });
+        try {
+            transport.requireAvailable();
+        } catch (IllegalArgumentException e) {
+            throw new GatewayException(e.getMessage(), e);
+        }
         GatewayMetrics metrics = new GatewayMetrics();
         ServerAgent server = ServerAgent.create(config, requireNonNull(agents, "agents"), requireNonNull(kb, "kb"),
                 requireNonNull(feedback, "feedback"), requireNonNull(retraction, "retraction"), metrics);

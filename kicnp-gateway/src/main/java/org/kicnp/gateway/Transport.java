@@ -80,6 +80,15 @@ public enum Transport {
         return unavailabilityCause().isEmpty();
     }
 
+    /** This transport, or an {@link IllegalArgumentException} that says why it does not work here. */
+    public Transport requireAvailable() {
+        unavailabilityCause().ifPresent(why -> {
+            throw new IllegalArgumentException("The " + label + " transport does not work here: " + why
+                    + " (choose another, or auto for the best one that does).");
+        });
+        return this;
+    }
+
     /**
      * Why this transport does not work here (its native library did not load, the kernel refused, the library does not
      * match the Java classes that bind to it), if it does not.
@@ -90,7 +99,8 @@ public enum Transport {
             case EPOLL -> Epoll.isAvailable() ? nativeBindingProblem() : Epoll.unavailabilityCause();
             case NIO -> null;
         };
-        return cause == null ? Optional.empty() : Optional.of(cause.getClass().getSimpleName() + ": " + cause.getMessage());
+        return cause == null ? Optional.empty()
+                : Optional.of(cause.getClass().getSimpleName() + ": " + cause.getMessage());
     }
 
     /**

@@ -34,7 +34,8 @@ public record PlatformConfig(Path kbDir, int gatewayPort, Optional<Integer> http
 
     /** Any free ports: for tests and the headless replay. */
     public PlatformConfig withEphemeralPorts() {
-        return new PlatformConfig(kbDir, 0, httpPort.map(p -> 0), agentsFile, editorPasswordFile, eventLog, gatewayTransport);
+        return new PlatformConfig(kbDir, 0, httpPort.map(p -> 0), agentsFile, editorPasswordFile, eventLog,
+                gatewayTransport);
     }
 
     public PlatformConfig withGatewayPort(int port) {
