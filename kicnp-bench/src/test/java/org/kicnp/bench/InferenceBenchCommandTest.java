@@ -7,7 +7,12 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Set;
+import org.kicnp.core.Frame;
+import org.kicnp.core.Slot;
+import org.kicnp.core.Value;
 import org.junit.jupiter.api.Test;
 import picocli.CommandLine;
 
@@ -30,6 +35,35 @@ class InferenceBenchCommandTest {
 
         assertThat(kicnp.firings()).isEqualTo(w.expectedFirings()).isEqualTo(drools.firings()).isEqualTo(50 * 8 + 2);
         assertThat(InferenceBenchCommand.check(w, kicnp, drools)).isEqualTo(402);
+    }
+
+    @Test
+    void storeOnly_addsTheInstancesTheEngineDerived_inItsOrder_toAKnowledgeBaseWithoutAnEngine() {
+        InferenceWorkload w = new InferenceWorkload(203);
+
+        List<Frame> derived = KicnpInferenceRun.derivedInstances(w);
+        EngineResult store = KicnpInferenceRun.storeOnly(w, derived);
+
+        assertThat(derived).hasSize((int) w.expectedFirings());
+        assertThat(derived).extracting(f -> f.parent().orElseThrow()).containsOnly("Pair", "Triple", "Alert");
+        // in commit order: every instance a derived one refers to (a stimulus or an earlier derived one) came before
+        Set<String> seen = new HashSet<>();
+        for (int i = 0; i < w.n(); i++) {
+            seen.add("s" + i);
+        }
+        int refs = 0;
+        for (Frame f : derived) {
+            for (Slot s : f.slots()) {
+                if (s.effectiveValue().orElse(null) instanceof Value.Ref(String target)) {
+                    assertThat(seen).as("%s refers to %s", f.name(), target).contains(target);
+                    refs++;
+                }
+            }
+            seen.add(f.name());
+        }
+        assertThat(refs).isEqualTo(2 * derived.size());
+        assertThat(store.firings()).isEqualTo(derived.size());
+        assertThat(store.seconds()).isPositive();
     }
 
     @Test
@@ -70,7 +104,7 @@ class InferenceBenchCommandTest {
                 .containsExactly("runs", "script_us_median", "stimulus_to_action_us_p99");
         JsonNode run = json.get("runs").get(0);
         assertThat(run.fieldNames()).toIterable().containsExactly("n", "firings", "kicnp_s", "drools_s", "ratio",
-                "drools_logical_s", "ratio_logical");
+                "drools_logical_s", "ratio_logical", "kicnp_kb_only_s");
         assertThat(run.get("n").asInt()).isEqualTo(200);
         assertThat(run.get("firings").asLong()).isEqualTo(new InferenceWorkload(200).expectedFirings()).isEqualTo(400);
         assertThat(run.get("kicnp_s").asDouble()).isPositive();
@@ -80,6 +114,8 @@ class InferenceBenchCommandTest {
         assertThat(run.get("ratio_logical").asDouble()).isCloseTo(
                 run.get("kicnp_s").asDouble() / run.get("drools_logical_s").asDouble(),
                 org.assertj.core.data.Percentage.withPercentage(1));
+        assertThat(run.get("kicnp_kb_only_s").asDouble()).isPositive();
+        assertThat(out.toString()).contains("KB only s").contains("KB/Drools");
         assertThat(json.get("script_us_median").asDouble()).isPositive();
         assertThat(json.get("stimulus_to_action_us_p99").asDouble()).isPositive();
     }
