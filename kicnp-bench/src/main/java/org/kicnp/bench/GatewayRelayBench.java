@@ -87,7 +87,7 @@ final class GatewayRelayBench {
         try (RelayDriver d = RelayDriver.connect(client, hub, agents, o.clientThreads(), o.transport(),
                 CONNECT_TIMEOUT)) {
             RelayDriver.Throughput t = d.throughput(o.windowFor(agents), o.warmup(), o.throughputTime(), hubCpu);
-            LatencyFigures latency = d.latency(o.rate(), o.warmup(), o.latencyTime());
+            LatencyFigures latency = d.latency(o.rate(), o.warmup(), o.latencyTime(), hubCpu);
             return new HubFigures(t.msgsPerSecond(), latency, shed.getAsLong(), t.hubCpuMicrosPerMsg(),
                     t.clientCpuMicrosPerMsg());
         }
@@ -104,7 +104,7 @@ final class GatewayRelayBench {
         try (RelayDriver d = RelayDriver.connect(client, hub, agents, o.clientThreads(), o.transport(),
                 CONNECT_TIMEOUT)) {
             d.throughput(o.windowFor(agents), o.jitWarmup(), Duration.ofMillis(100), clients -> 0);
-            d.latency(o.rate(), Duration.ZERO, OPEN_WARMUP);
+            d.latency(o.rate(), Duration.ZERO, OPEN_WARMUP, clients -> 0);
         }
     }
 }

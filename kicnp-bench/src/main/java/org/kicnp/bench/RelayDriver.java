@@ -156,9 +156,11 @@ final class RelayDriver implements AutoCloseable {
 
     /**
      * Open loop: {@code rate} messages per second in total, spread evenly over the agents; after {@code warmup},
-     * records the latency of every message intended to be sent within {@code measure}.
+     * records the latency of every message intended to be sent within {@code measure}, and the CPU time the hub
+     * ({@code hubCpu}, given the client loops' time) and the client loops spent over that window.
      */
-    LatencyFigures latency(int rate, Duration warmup, Duration measure) throws InterruptedException {
+    LatencyFigures latency(int rate, Duration warmup, Duration measure, java.util.function.LongUnaryOperator hubCpu)
+            throws InterruptedException {
         long period = Math.round(agents.size() * 1e9 / rate);
         long start = RelayLoop.now() + TimeUnit.MILLISECONDS.toNanos(20);
         long recordFrom = start + warmup.toNanos();
@@ -172,8 +174,21 @@ final class RelayDriver implements AutoCloseable {
                 loop.executor.execute(loop.tickTask);
             }
         }, start, recordUntil);
+        long clientCpu0;
+        long hubCpu0;
+        long[] machine0;
+        long clientCpu1;
+        long hubCpu1;
+        long[] machine1;
         try {
+            TimeUnit.NANOSECONDS.sleep(recordFrom - RelayLoop.now());
+            clientCpu0 = clientCpuNanos();
+            hubCpu0 = hubCpu.applyAsLong(clientCpu0);
+            machine0 = ProcessCpu.machineTicks();
             ticker.awaitEnd(); // every tick up to the window's end has been handed to the loops
+            clientCpu1 = clientCpuNanos();
+            hubCpu1 = hubCpu.applyAsLong(clientCpu1);
+            machine1 = ProcessCpu.machineTicks();
         } finally {
             ticker.stop();
         }
@@ -194,7 +209,8 @@ final class RelayDriver implements AutoCloseable {
             loop.stopOpen();
             return null;
         });
-        return LatencyFigures.of(rate, all, expected, measure);
+        return LatencyFigures.of(rate, all, expected, measure, hubCpu1 - hubCpu0, clientCpu1 - clientCpu0,
+                ProcessCpu.busyPercent(machine0, machine1));
     }
 
     private long delivered() throws InterruptedException {

@@ -24,7 +24,9 @@ final class RelayReport {
                   throughput: closed loop, %d messages outstanding in total (window per agent shown), %d s after %d s
                            warm-up; msgs/s = messages delivered to agents per second; CPU µs per delivered message
                   latency: open loop, %,d msgs/s in total at a constant rate released by 1 ms ticks, %d s after %d s
-                           warm-up; latency = delivery time - intended send time (coordinated omission corrected)
+                           warm-up; latency = delivery time - intended send time (coordinated omission corrected);
+                           over that window, CPU µs per delivered message of the hub and of the client loops, and
+                           busy = the share of the whole machine's CPU time (all cores, every process) in use
                 """, mosquittoVersion.isEmpty() ? "" : " (" + mosquittoVersion + ")",
                 Runtime.getRuntime().availableProcessors(), loadAverage(), o.clientThreads(), gatewayPlace(o),
                 o.gatewayThreads() > 0 ? String.valueOf(o.gatewayThreads()) : "one per core", o.transport().label(),
@@ -56,10 +58,12 @@ final class RelayReport {
 
     static String table(List<RelayRun> runs, int rate) {
         StringBuilder sb = new StringBuilder(String.format(Locale.ROOT,
-                "%-7s %-10s %7s %12s %8s %8s %10s %9s %9s %9s %9s %7s%n", "agents", "hub", "window", "msgs/s",
-                "hub CPU", "cli CPU", "delivered", "p50 ms", "p99 ms", "p99.9 ms", "max ms", "lost"));
-        sb.append(String.format(Locale.ROOT, "%-7s %-10s %7s %12s %8s %8s %10s %s%n", "", "", "", "(max)", "µs/msg",
-                "µs/msg", "(open)", "   (open loop at " + String.format(Locale.ROOT, "%,d", rate) + " msgs/s)"));
+                "%-7s %-10s %7s %12s %8s %8s %10s %9s %9s %9s %9s %7s %8s %8s %7s%n", "agents", "hub", "window",
+                "msgs/s", "hub CPU", "cli CPU", "delivered", "p50 ms", "p99 ms", "p99.9 ms", "max ms", "lost",
+                "hub CPU", "cli CPU", "busy"));
+        sb.append(String.format(Locale.ROOT, "%-7s %-10s %7s %12s %8s %8s %10s %-55s %8s %8s %7s%n", "", "", "",
+                "(max)", "µs/msg", "µs/msg", "(open)", "   (open loop at " + String.format(Locale.ROOT, "%,d", rate)
+                        + " msgs/s)", "µs/msg", "µs/msg", "%"));
         for (RelayRun r : runs) {
             row(sb, r.agents(), "K-ICNP", r.window(), r.kicnp());
             if (r.mosquitto().isPresent()) {
@@ -75,10 +79,12 @@ final class RelayReport {
 
     private static void row(StringBuilder sb, int agents, String hub, int window, HubFigures f) {
         LatencyFigures l = f.latency();
-        sb.append(String.format(Locale.ROOT, "%-7d %-10s %7d %,12.0f %8.1f %8.1f %,10.0f %9.3f %9.3f %9.3f %9.3f %7d%s%n",
+        sb.append(String.format(Locale.ROOT,
+                "%-7d %-10s %7d %,12.0f %8.1f %8.1f %,10.0f %9.3f %9.3f %9.3f %9.3f %7d %8.1f %8.1f %7.0f%s%n",
                 agents, hub, window, f.msgsPerSecond(), f.hubCpuMicrosPerMsg(), f.clientCpuMicrosPerMsg(),
-                l.deliveredPerSecond(), l.p50Millis(), l.p99Millis(), l.p999Millis(),
-                l.maxMillis(), l.lost(), f.shed() > 0 ? "  (hub shed " + f.shed() + ")" : ""));
+                l.deliveredPerSecond(), l.p50Millis(), l.p99Millis(), l.p999Millis(), l.maxMillis(), l.lost(),
+                l.hubCpuMicrosPerMsg(), l.clientCpuMicrosPerMsg(), l.machineBusyPercent(),
+                f.shed() > 0 ? "  (hub shed " + f.shed() + ")" : ""));
     }
 
     /** The last line: {@code {"runs": [{"agents": ..., "kicnp_msgs_per_s": ..., ...}, ...], ...}}. */
@@ -103,6 +109,11 @@ final class RelayReport {
                     .append(", \"mosquitto_p99_ms_at_50k\": ").append(opt(m.map(LatencyFigures::p99Millis), 3))
                     .append(", \"mosquitto_p999_ms_at_50k\": ").append(opt(m.map(LatencyFigures::p999Millis), 3))
                     .append(", \"mosquitto_lost_at_50k\": ").append(m.map(x -> String.valueOf(x.lost())).orElse("null"))
+                    .append(", \"kicnp_hub_cpu_us_per_msg_at_50k\": ").append(num(k.hubCpuMicrosPerMsg(), 2))
+                    .append(", \"kicnp_busy_pct_at_50k\": ").append(num(k.machineBusyPercent(), 1))
+                    .append(", \"mosquitto_hub_cpu_us_per_msg_at_50k\": ")
+                    .append(opt(m.map(LatencyFigures::hubCpuMicrosPerMsg), 2))
+                    .append(", \"mosquitto_busy_pct_at_50k\": ").append(opt(m.map(LatencyFigures::machineBusyPercent), 1))
                     .append('}');
         }
         return sb.append("], \"offered_msgs_per_s\": ").append(o.rate())

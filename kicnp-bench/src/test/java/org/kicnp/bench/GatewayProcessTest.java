@@ -27,8 +27,11 @@ class GatewayProcessTest {
                 RelayDriver.Throughput t = d.throughput(4, Duration.ZERO, Duration.ofMillis(300), gateway::cpuNanos);
                 assertThat(t.msgsPerSecond()).isPositive();
                 assertThat(t.hubCpuMicrosPerMsg()).isPositive(); // the gateway process's own CPU time, from /proc
-                LatencyFigures latency = d.latency(400, Duration.ZERO, Duration.ofMillis(500));
+                LatencyFigures latency = d.latency(400, Duration.ZERO, Duration.ofMillis(500), gateway::cpuNanos);
                 assertThat(latency.lost()).isZero();
+                assertThat(latency.clientCpuMicrosPerMsg()).isPositive(); // the client loops' thread CPU time
+                assertThat(latency.hubCpuMicrosPerMsg()).isNotNegative(); // /proc counts in 10 ms ticks: may be 0
+                assertThat(latency.machineBusyPercent()).isPositive().isLessThanOrEqualTo(100);
             }
             assertThat(gateway.shed()).isZero();
             assertThat(gateway.metrics()).contains("connections=4");

@@ -49,6 +49,12 @@ class GatewayRelayCommandTest {
         assertThat(json.get("transport").asText()).isEqualTo("nio");
         assertThat(json.get("runs").get(0).get("kicnp_msgs_per_s").asDouble()).isPositive();
         assertThat(json.get("runs").get(0).get("kicnp_lost_at_50k").asLong()).isZero();
+        // the open loop's cost: the gateway's own process spent CPU time, and the machine was busy but not over 100 %
+        assertThat(json.get("runs").get(0).get("kicnp_hub_cpu_us_per_msg_at_50k").asDouble()).isNotNegative();
+        assertThat(json.get("runs").get(0).get("kicnp_busy_pct_at_50k").asDouble()).isPositive()
+                .isLessThanOrEqualTo(100);
+        assertThat(json.get("runs").get(0).get("mosquitto_busy_pct_at_50k").isNull()).isTrue();
+        assertThat(run.out()).contains("busy = the share of the whole machine");
     }
 
     @Test
