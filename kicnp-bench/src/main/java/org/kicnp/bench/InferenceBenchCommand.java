@@ -5,7 +5,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import org.kicnp.core.Frame;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -72,12 +71,12 @@ final class InferenceBenchCommand implements Callable<Integer> {
         DroolsInferenceRun drools = DroolsInferenceRun.compile(false);
         DroolsInferenceRun droolsLogical = DroolsInferenceRun.compile(true);
         InferenceWorkload warm = new InferenceWorkload(warmUpN);
-        List<Frame> warmDerived = KicnpInferenceRun.derivedInstances(warm);
+        KicnpInferenceRun.Stored warmStored = KicnpInferenceRun.stored(warm);
         for (int i = 0; i < warmUpRuns; i++) {
             EngineResult k = KicnpInferenceRun.run(warm);
             check(warm, k, drools.run(warm));
             check(warm, k, droolsLogical.run(warm));
-            KicnpInferenceRun.storeOnly(warm, warmDerived);
+            KicnpInferenceRun.storeOnly(warm, warmStored);
         }
         List<InferenceRun> results = new ArrayList<>();
         for (int n : sizes) {
@@ -88,7 +87,7 @@ final class InferenceBenchCommand implements Callable<Integer> {
             Samples peerCpu = new Samples();
             Samples logical = new Samples();
             Samples store = new Samples();
-            List<Frame> derived = KicnpInferenceRun.derivedInstances(w);
+            KicnpInferenceRun.Stored stored = KicnpInferenceRun.stored(w);
             long firings = 0;
             for (int r = 0; r < runs; r++) {
                 System.gc();
@@ -98,7 +97,7 @@ final class InferenceBenchCommand implements Callable<Integer> {
                 System.gc();
                 EngineResult l = droolsLogical.run(w);
                 System.gc();
-                store.add(KicnpInferenceRun.storeOnly(w, derived).seconds());
+                store.add(KicnpInferenceRun.storeOnly(w, stored).seconds());
                 firings = check(w, k, d);
                 check(w, k, l);
                 logical.add(l.seconds());

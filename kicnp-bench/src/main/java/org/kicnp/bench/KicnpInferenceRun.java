@@ -17,14 +17,13 @@ final class KicnpInferenceRun {
     }
 
     static EngineResult run(InferenceWorkload w) {
-        return run(w, KnowledgeBase.create());
+        return run(w, KnowledgeBase.create(), w.kicnpStimuli());
     }
 
-    private static EngineResult run(InferenceWorkload w, KnowledgeBase kb) {
+    private static EngineResult run(InferenceWorkload w, KnowledgeBase kb, List<Change> stimuli) {
         kb.apply(w.kicnpClasses());
         long expected = w.expectedFirings();
         int limit = (int) Math.min(Integer.MAX_VALUE - 1, Math.max(10_000, expected * 2));
-        List<Change> stimuli = w.kicnpStimuli();
         try (InferenceEngine engine = InferenceEngine.builder(kb)
                 .options(EngineOptions.defaults().withMaxFirings(limit)).build()) {
             long cpu = EngineResult.threadCpuNanos();
@@ -36,30 +35,37 @@ final class KicnpInferenceRun {
         }
     }
 
-    /** The instances a run of {@code w} derives, in the order the engine committed them (an untimed run). */
-    static List<Frame> derivedInstances(InferenceWorkload w) {
+    /**
+     * What one (untimed) run of {@code w} stored: its stimuli and the instances the engine derived, in the order it
+     * committed them. The derived frames refer to the stimuli's and each other's very name strings, as in a run.
+     */
+    record Stored(List<Change> stimuli, List<Frame> derived) {
+    }
+
+    static Stored stored(InferenceWorkload w) {
         KnowledgeBase kb = KnowledgeBase.create();
-        run(w, kb);
-        return kb.frames().stream().filter(f -> f.isInstance() && kb.isA(f.name(), "Derived")).toList();
+        List<Change> stimuli = w.kicnpStimuli();
+        run(w, kb, stimuli);
+        return new Stored(stimuli,
+                kb.frames().stream().filter(f -> f.isInstance() && kb.isA(f.name(), "Derived")).toList());
     }
 
     /**
      * The knowledge base's own share of a run, with no engine: into a fresh knowledge base with the same classes, the
-     * timer covers asserting the same N stimuli (one batch) and then adding {@code derived} one at a time, as the
-     * engine commits each derived instance (validated, indexed, its change event published). No matching, agenda,
-     * truth maintenance or explanation. "Firings" is the number of instances added this way.
+     * timer covers asserting the same N stimuli (one batch) and then adding the derived instances one at a time, as
+     * the engine commits each (validated, indexed, its change event made). No matching, agenda, truth maintenance or
+     * explanation. "Firings" is the number of instances added this way.
      */
-    static EngineResult storeOnly(InferenceWorkload w, List<Frame> derived) {
+    static EngineResult storeOnly(InferenceWorkload w, Stored stored) {
         KnowledgeBase kb = KnowledgeBase.create();
         kb.apply(w.kicnpClasses());
-        List<Change> stimuli = w.kicnpStimuli();
         long cpu = EngineResult.threadCpuNanos();
         long start = System.nanoTime();
-        kb.apply(stimuli);
-        for (Frame f : derived) {
+        kb.apply(stored.stimuli());
+        for (Frame f : stored.derived()) {
             kb.add(f);
         }
         long nanos = System.nanoTime() - start;
-        return new EngineResult(derived.size(), nanos, EngineResult.threadCpuNanos() - cpu);
+        return new EngineResult(stored.derived().size(), nanos, EngineResult.threadCpuNanos() - cpu);
     }
 }

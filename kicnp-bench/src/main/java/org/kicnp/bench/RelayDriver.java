@@ -184,11 +184,11 @@ final class RelayDriver implements AutoCloseable {
             TimeUnit.NANOSECONDS.sleep(recordFrom - RelayLoop.now());
             clientCpu0 = clientCpuNanos();
             hubCpu0 = hubCpu.applyAsLong(clientCpu0);
-            machine0 = ProcessCpu.machineTicks();
+            machine0 = ProcessCpu.machineIdle();
             ticker.awaitEnd(); // every tick up to the window's end has been handed to the loops
             clientCpu1 = clientCpuNanos();
             hubCpu1 = hubCpu.applyAsLong(clientCpu1);
-            machine1 = ProcessCpu.machineTicks();
+            machine1 = ProcessCpu.machineIdle();
         } finally {
             ticker.stop();
         }

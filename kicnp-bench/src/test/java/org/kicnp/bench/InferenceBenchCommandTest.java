@@ -41,8 +41,9 @@ class InferenceBenchCommandTest {
     void storeOnly_addsTheInstancesTheEngineDerived_inItsOrder_toAKnowledgeBaseWithoutAnEngine() {
         InferenceWorkload w = new InferenceWorkload(203);
 
-        List<Frame> derived = KicnpInferenceRun.derivedInstances(w);
-        EngineResult store = KicnpInferenceRun.storeOnly(w, derived);
+        KicnpInferenceRun.Stored stored = KicnpInferenceRun.stored(w);
+        List<Frame> derived = stored.derived();
+        EngineResult store = KicnpInferenceRun.storeOnly(w, stored);
 
         assertThat(derived).hasSize((int) w.expectedFirings());
         assertThat(derived).extracting(f -> f.parent().orElseThrow()).containsOnly("Pair", "Triple", "Alert");
@@ -62,6 +63,7 @@ class InferenceBenchCommandTest {
             seen.add(f.name());
         }
         assertThat(refs).isEqualTo(2 * derived.size());
+        assertThat(stored.stimuli()).hasSize(w.n());
         assertThat(store.firings()).isEqualTo(derived.size());
         assertThat(store.seconds()).isPositive();
     }
