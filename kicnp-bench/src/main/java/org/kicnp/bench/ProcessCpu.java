@@ -30,37 +30,40 @@ final class ProcessCpu {
     }
 
     /**
-     * A reading of the machine's idle time: {idle clock ticks of all cores, System.nanoTime(), cores}, from
-     * {@code /proc/stat} (idle plus iowait: a thread waiting in io_uring counts as iowait, so iowait is idle here);
-     * {0, nanoTime, 0} if it cannot be read. The busy fields there (user, system, ...) are not used: they are sampled
-     * by the scheduler tick, which misses most of a load made of short bursts (the open loop's), while idle and iowait
-     * are measured when the cores enter and leave idle (over one open-loop run here the sampled busy fields gave 20 %
+     * A reading of the machine's idle time, from {@code /proc/stat}: idle plus iowait clock ticks of all cores (a
+     * thread waiting in io_uring counts as iowait, so iowait is idle here), when it was read, and how many cores there
+     * are (0 if it could not be read). The busy fields there (user, system, ...) are not used: they are sampled by the
+     * scheduler tick, which misses most of a load made of short bursts (the open loop's), while idle and iowait are
+     * measured when the cores enter and leave idle (over one open-loop run here the sampled busy fields gave 20 %
      * where the two processes' threads alone had used 37 % of the machine).
      */
-    static long[] machineIdle() {
-        long now = System.nanoTime();
-        try {
-            String stat;
-            try (FileInputStream in = new FileInputStream("/proc/stat")) {
-                stat = new String(in.readAllBytes(), StandardCharsets.US_ASCII);
+    record MachineIdle(long idleTicks, long nanoTime, int cores) {
+        static MachineIdle now() {
+            long now = System.nanoTime();
+            try {
+                String stat;
+                try (FileInputStream in = new FileInputStream("/proc/stat")) {
+                    stat = new String(in.readAllBytes(), StandardCharsets.US_ASCII);
+                }
+                String[] f = stat.substring(0, stat.indexOf('\n')).trim().split(" +");
+                int cores = (int) stat.lines().filter(l -> l.startsWith("cpu") && Character.isDigit(l.charAt(3)))
+                        .count();
+                return new MachineIdle(Long.parseLong(f[4]) + Long.parseLong(f[5]), now, cores);
+            } catch (IOException | RuntimeException e) {
+                return new MachineIdle(0, now, 0);
             }
-            String[] f = stat.substring(0, stat.indexOf('\n')).trim().split(" +");
-            long cores = stat.lines().filter(l -> l.startsWith("cpu") && Character.isDigit(l.charAt(3))).count();
-            return new long[] {Long.parseLong(f[4]) + Long.parseLong(f[5]), now, cores};
-        } catch (IOException | RuntimeException e) {
-            return new long[] {0, now, 0};
         }
-    }
 
-    /**
-     * The share of the machine's CPU time (all cores, every process) that was busy between two {@link #machineIdle()}
-     * readings, in %: 100 × (1 − idle time / (elapsed time × cores)); 0 when it could not be read.
-     */
-    static double busyPercent(long[] before, long[] after) {
-        double capacityTicks = (after[1] - before[1]) / 1e9 * 100 * after[2]; // USER_HZ is 100 on Linux
-        if (capacityTicks <= 0 || before[2] == 0) {
-            return 0;
+        /**
+         * The share of the machine's CPU time (all cores, every process) that was busy since {@code before}, in %:
+         * 100 × (1 − idle time / (elapsed time × cores)); 0 when either reading failed.
+         */
+        double busyPercentSince(MachineIdle before) {
+            double capacityTicks = (nanoTime - before.nanoTime) / 1e9 * 100 * cores; // USER_HZ is 100 on Linux
+            if (capacityTicks <= 0 || before.cores == 0) {
+                return 0;
+            }
+            return Math.max(0, Math.min(100, 100 * (1 - (idleTicks - before.idleTicks) / capacityTicks)));
         }
-        return Math.max(0, Math.min(100, 100 * (1 - (after[0] - before[0]) / capacityTicks)));
     }
 }

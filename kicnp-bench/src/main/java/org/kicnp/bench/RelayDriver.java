@@ -176,19 +176,19 @@ final class RelayDriver implements AutoCloseable {
         }, start, recordUntil);
         long clientCpu0;
         long hubCpu0;
-        long[] machine0;
+        ProcessCpu.MachineIdle machine0;
         long clientCpu1;
         long hubCpu1;
-        long[] machine1;
+        ProcessCpu.MachineIdle machine1;
         try {
             TimeUnit.NANOSECONDS.sleep(recordFrom - RelayLoop.now());
             clientCpu0 = clientCpuNanos();
             hubCpu0 = hubCpu.applyAsLong(clientCpu0);
-            machine0 = ProcessCpu.machineIdle();
+            machine0 = ProcessCpu.MachineIdle.now();
             ticker.awaitEnd(); // every tick up to the window's end has been handed to the loops
             clientCpu1 = clientCpuNanos();
             hubCpu1 = hubCpu.applyAsLong(clientCpu1);
-            machine1 = ProcessCpu.machineIdle();
+            machine1 = ProcessCpu.MachineIdle.now();
         } finally {
             ticker.stop();
         }
@@ -210,7 +210,7 @@ final class RelayDriver implements AutoCloseable {
             return null;
         });
         return LatencyFigures.of(rate, all, expected, measure, hubCpu1 - hubCpu0, clientCpu1 - clientCpu0,
-                ProcessCpu.busyPercent(machine0, machine1));
+                machine1.busyPercentSince(machine0));
     }
 
     private long delivered() throws InterruptedException {

@@ -1,6 +1,7 @@
 package org.kicnp.bench;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.data.Offset.offset;
 
 import org.junit.jupiter.api.Test;
 
@@ -8,28 +9,29 @@ class ProcessCpuTest {
 
     @Test
     void machineIdle_whileThisThreadSpins_showsTheMachineBusy() {
-        long[] before = ProcessCpu.machineIdle();
+        ProcessCpu.MachineIdle before = ProcessCpu.MachineIdle.now();
         long end = System.nanoTime() + 500_000_000L;
         long x = 0;
         while (System.nanoTime() < end) {
             x += x * 31 + 7;
         }
-        long[] after = ProcessCpu.machineIdle();
+        ProcessCpu.MachineIdle after = ProcessCpu.MachineIdle.now();
 
         assertThat(x).isNotZero();
-        assertThat(after[2]).as("cores in /proc/stat").isEqualTo(before[2]).isPositive();
-        assertThat(after[1] - before[1]).isGreaterThanOrEqualTo(500_000_000L);
-        // one core of the machine's was kept busy all along: at least 1 / cores of it (less a tolerance)
-        assertThat(ProcessCpu.busyPercent(before, after)).isGreaterThan(100.0 / after[2] * 0.8)
-                .isLessThanOrEqualTo(100);
+        assertThat(after.cores()).as("cores in /proc/stat").isEqualTo(before.cores()).isPositive();
+        assertThat(after.nanoTime() - before.nanoTime()).isGreaterThanOrEqualTo(500_000_000L);
+        // one of the machine's cores was kept busy all along: at least 1 / cores of it (less a tolerance)
+        assertThat(after.busyPercentSince(before)).isGreaterThan(100.0 / after.cores() * 0.8).isLessThanOrEqualTo(100);
     }
 
     @Test
-    void busyPercent_isOneLessTheIdleShareOfElapsedTimeTimesCores() {
+    void busyPercentSince_isOneLessTheIdleShareOfElapsedTimeTimesCores() {
+        ProcessCpu.MachineIdle start = new ProcessCpu.MachineIdle(1000, 0, 2);
         // 2 cores for 1 s = 200 ticks of capacity; 50 idle ticks -> 75 % busy
-        assertThat(ProcessCpu.busyPercent(new long[] {1000, 0, 2}, new long[] {1050, 1_000_000_000L, 2}))
-                .isCloseTo(75.0, org.assertj.core.data.Offset.offset(1e-9));
-        assertThat(ProcessCpu.busyPercent(new long[] {1000, 0, 2}, new long[] {1200, 1_000_000_000L, 2})).isZero();
-        assertThat(ProcessCpu.busyPercent(new long[] {0, 0, 0}, new long[] {0, 1_000_000_000L, 0})).isZero();
+        assertThat(new ProcessCpu.MachineIdle(1050, 1_000_000_000L, 2).busyPercentSince(start))
+                .isCloseTo(75.0, offset(1e-9));
+        assertThat(new ProcessCpu.MachineIdle(1200, 1_000_000_000L, 2).busyPercentSince(start)).isZero();
+        assertThat(new ProcessCpu.MachineIdle(0, 1_000_000_000L, 0).busyPercentSince(new ProcessCpu.MachineIdle(0, 0, 0)))
+                .isZero();
     }
 }
