@@ -61,6 +61,12 @@ public final class InferCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         try (ScriptRuntime runtime = ScriptRuntime.create(ScriptConfig.defaults())) {
+            if (KnowledgeLoader.expand(knowledge).isEmpty()) {
+                // As validate says: an empty knowledge base would infer nothing and look like a quiet success.
+                err.println("infer: no knowledge files (*.xml) found in " + knowledge + ".");
+                err.flush();
+                return 1;
+            }
             KnowledgeBase kb = KnowledgeBase.create();
             List<SourcedFrame> declared = KnowledgeLoader.parse(knowledge, kb);
             if (declared.stream().noneMatch(s -> s.frame().name().equals(InferenceEngine.FEEDBACK_CLASS))) {

@@ -53,6 +53,17 @@ class InferCommandTest {
     }
 
     @Test
+    void infer_onADirectoryWithoutKnowledgeFiles_failsWithAMessage(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("notes.txt"), "not a knowledge file");
+
+        Result r = run("infer", dir.toString(), "--assert", NEW_USER);
+
+        assertThat(r.code()).isEqualTo(1);
+        assertThat(r.err()).contains("infer: no knowledge files (*.xml) found in [" + dir + "].");
+        assertThat(r.out()).doesNotContain("Created");
+    }
+
+    @Test
     void infer_whenAssertingAClass_failsWithAMessage() {
         Result r = run("infer", TABLE5, "--assert",
                 "<FRAME><NAME>Ghost</NAME><ISA>User</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>");
