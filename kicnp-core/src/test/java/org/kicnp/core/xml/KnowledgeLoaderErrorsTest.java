@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.catchThrowableOfType;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -55,6 +56,23 @@ class KnowledgeLoaderErrorsTest {
 
         assertThat(errors).hasSize(1);
         assertThat(errors.getFirst()).startsWith(a + ":3:").contains("The XML is not well-formed");
+    }
+
+    @Test
+    void load_whenAByteIsNotUtf8_reportsItsLineAndColumnAndHowToFixIt() throws IOException {
+        Path a = dir.resolve("latin1.xml");
+        byte[] head = (kb(classFrame("Drink", null)).replace("</KNOWLEDGEBASE>\n", "")
+                + "  <FRAME><NAME>Cafe</NAME><ISA>Drink</ISA><!-- caf").getBytes(StandardCharsets.US_ASCII);
+        byte[] tail = " au lait --></FRAME>\n</KNOWLEDGEBASE>\n".getBytes(StandardCharsets.US_ASCII);
+        byte[] bytes = new byte[head.length + 1 + tail.length];
+        System.arraycopy(head, 0, bytes, 0, head.length);
+        bytes[head.length] = (byte) 0xE9;
+        System.arraycopy(tail, 0, bytes, head.length + 1, tail.length);
+        Files.write(a, bytes);
+
+        assertThat(errors(List.of(a))).containsExactly(a + ":6:51: The file is not valid UTF-8: byte 0xE9 here does "
+                + "not make a UTF-8 character; save the file as UTF-8, or name its encoding in the XML declaration "
+                + "(<?xml version=\"1.0\" encoding=\"ISO-8859-1\"?>).");
     }
 
     @Test
