@@ -143,6 +143,31 @@ class KnowledgeLoaderErrorsTest {
     }
 
     @Test
+    void load_whenNumbersAreTooLarge_saysSoInsteadOfCallingThemNotNumbersOrMakingThemInfinite() throws IOException {
+        Path a = file("a.xml", """
+                <FRAME>
+                  <NAME>X</NAME>
+                  <PRIORITY>99999999999</PRIORITY>
+                  <SLOTLIST>
+                    <SLOT><NAME>count</NAME><TYPE>TYPE_INT</TYPE><VALUE>99999999999999999999</VALUE></SLOT>
+                    <SLOT><NAME>range</NAME><TYPE>TYPE_FLOAT</TYPE><VALUE>1e999</VALUE></SLOT>
+                    <SLOT><NAME>limit</NAME><TYPE>TYPE_FLOAT</TYPE><VALUE>-Infinity</VALUE></SLOT>
+                  </SLOTLIST>
+                </FRAME>
+                """);
+
+        assertThat(errors(List.of(a))).containsExactly(
+                a + ":3:3: The PRIORITY of frame 'X' is '99999999999', which is outside the range of a priority "
+                        + "(-2147483648 to 2147483647).",
+                a + ":5:50: Slot 'count' of frame 'X' has a VALUE that does not fit its type TYPE_INT: "
+                        + "'99999999999999999999' is too large for an integer: TYPE_INT holds whole numbers from "
+                        + "-9223372036854775808 to 9223372036854775807.",
+                a + ":6:52: Slot 'range' of frame 'X' has a VALUE that does not fit its type TYPE_FLOAT: '1e999' is "
+                        + "too large for a float: TYPE_FLOAT holds numbers up to about 1.8e308 (write Infinity if "
+                        + "that is what you mean).");
+    }
+
+    @Test
     void load_whenTypeUnknown_reportsTheTypeElement() throws IOException {
         Path a = file("a.xml", """
                 <FRAME>
