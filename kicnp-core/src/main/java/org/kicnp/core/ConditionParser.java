@@ -82,7 +82,7 @@ public final class ConditionParser {
             try {
                 c = new Condition.Matches(left, s.value());
             } catch (IllegalArgumentException e) {
-                throw new ConditionSyntaxException(e.getMessage(), pos, text);
+                throw ConditionSyntaxException.because(e.getMessage(), pos, text);
             }
         } else {
             Condition.Op op = op();

@@ -79,4 +79,12 @@ class ConditionParserTest {
         assertThatThrownBy(() -> ConditionParser.parse("== 1 2"))
                 .hasMessageContaining("expected the end of the condition");
     }
+
+    @Test
+    void parse_whenPatternIsInvalid_saysWhyInOneSentence() {
+        assertThatThrownBy(() -> ConditionParser.parse("matches \"[a-\""))
+                .isInstanceOf(ConditionSyntaxException.class)
+                .hasMessage("Condition 'matches \"[a-\"' is not valid at character 13: '[a-' is not a valid pattern: "
+                        + "Illegal character range.");
+    }
 }
