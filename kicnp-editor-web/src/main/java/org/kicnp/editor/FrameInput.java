@@ -60,7 +60,7 @@ final class FrameInput {
                     + "names '" + frameName + "'; use rename to change a frame's name."));
         }
         FrameKind kind = FrameKind.CLASS;
-        String kindText = text(json, "kind").orElse("CLASS").toUpperCase(Locale.ROOT);
+        String kindText = field(json, "kind", "").orElse("CLASS").toUpperCase(Locale.ROOT);
         switch (kindText) {
             case "CLASS" -> kind = FrameKind.CLASS;
             case "INSTANCE" -> kind = FrameKind.INSTANCE;
@@ -68,8 +68,8 @@ final class FrameInput {
                     + "'; it must be CLASS or INSTANCE."));
         }
         Frame.Builder b = Frame.builder(frameName, kind);
-        text(json, "parent").ifPresent(b::parent);
-        text(json, "provenance").ifPresent(p -> provenance(p).ifPresent(b::provenance));
+        field(json, "parent", "").ifPresent(b::parent);
+        field(json, "provenance", "").ifPresent(p -> provenance(p).ifPresent(b::provenance));
         if (json.hasNonNull("priority")) {
             priority(json.get("priority")).ifPresent(b::priority);
         }
@@ -145,7 +145,7 @@ final class FrameInput {
             problems.add(ApiProblem.of(frameName, "", "A slot of frame '" + frameName + "' has no name."));
             return Optional.empty();
         }
-        String typeText = text(s, "type").orElse("TYPE_STR");
+        String typeText = field(s, "type", name).orElse("TYPE_STR");
         Optional<DataType> type = DataType.parse(typeText);
         if (type.isEmpty()) {
             problems.add(ApiProblem.of(frameName, name, where + " has the unknown data type '" + typeText + "'."));
@@ -153,17 +153,17 @@ final class FrameInput {
         }
         int before = problems.size();
         Slot.Builder b = Slot.builder(name, type.get());
-        text(s, "role").ifPresent(b::role);
-        text(s, "from").ifPresent(b::from);
-        text(s, "argument").ifPresent(b::argument);
-        text(s, "frameRelated").ifPresent(b::frameRelated);
+        field(s, "role", name).ifPresent(b::role);
+        field(s, "from", name).ifPresent(b::from);
+        field(s, "argument", name).ifPresent(b::argument);
+        field(s, "frameRelated", name).ifPresent(b::frameRelated);
         b.frameListRelated(strings(s, "frameListRelated", name));
-        text(s, "onNeeded").ifPresent(b::onNeeded);
-        text(s, "onAdded").ifPresent(b::onAdded);
-        text(s, "onRemoved").ifPresent(b::onRemoved);
+        field(s, "onNeeded", name).ifPresent(b::onNeeded);
+        field(s, "onAdded", name).ifPresent(b::onAdded);
+        field(s, "onRemoved", name).ifPresent(b::onRemoved);
         b.required(flag(s, "required", false, where)).shared(flag(s, "shared", true, where))
                 .unique(flag(s, "unique", false, where)).reactive(flag(s, "reactive", true, where));
-        text(s, "condition").ifPresent(c -> {
+        field(s, "condition", name).ifPresent(c -> {
             try {
                 b.condition(ConditionParser.parse(c));
             } catch (KnowledgeException e) {
@@ -239,6 +239,21 @@ final class FrameInput {
         problems.add(ApiProblem.of(frameName, text(s, "name").orElse(""), where + " has " + field + " " + f
                 + ", which is not true or false."));
         return otherwise;
+    }
+
+    /**
+     * A text item of the frame (slot empty) or of a slot, as {@link #text}; an object or array there is a problem, not
+     * an absent item: taking it as absent would make a frame a root or a slot a string without a word.
+     */
+    private Optional<String> field(JsonNode node, String field, String slot) {
+        JsonNode f = node.get(field);
+        if (f != null && !f.isNull() && !f.isValueNode()) {
+            String of = slot.isEmpty() ? "Frame '" + frameName + "'" : "Slot '" + slot + "' of frame '" + frameName + "'";
+            problems.add(ApiProblem.of(frameName, slot, of + " has " + field + " " + abbreviate(f.toString())
+                    + ", which is not a text."));
+            return Optional.empty();
+        }
+        return text(node, field);
     }
 
     static Optional<String> text(JsonNode node, String field) {

@@ -207,6 +207,25 @@ class EditorApiTest {
         assertThat(kb.require("AskUserName")).isEqualTo(before);
     }
 
+    @Test void put_withParentOrConditionThatIsNotAText_answers422AndKeepsTheFrame() {
+        http.login(PASSWORD);
+        Frame before = kb.require("AskUserName");
+        ObjectNode f = (ObjectNode) json(http.get("/api/frames/AskUserName"));
+        f.put("expectedRevision", f.get("revision").asLong());
+        f.putObject("parent").put("name", "Speech");
+        ((ObjectNode) f.get("slots").get(0)).putArray("condition").add("== \"tea\"");
+
+        HttpResponse<String> r = http.put("/api/frames/AskUserName", f.toString());
+
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(422);
+        List<String> messages = new ArrayList<>();
+        json(r).get("problems").forEach(p -> messages.add(p.get("message").asText()));
+        assertThat(messages).containsExactlyInAnyOrder(
+                "Frame 'AskUserName' has parent {\"name\":\"Speech\"}, which is not a text.",
+                "Slot 'mUser' of frame 'AskUserName' has condition [\"== \\\"tea\\\"\"], which is not a text.");
+        assertThat(kb.require("AskUserName")).isEqualTo(before);
+    }
+
     @Test void create_withFacetThatIsNotABooleanOrPriorityThatIsNotAnInteger_answers422AndAddsNothing() {
         http.login(PASSWORD);
 
