@@ -58,6 +58,10 @@ public final class InferCommand implements Callable<Integer> {
     int maxFirings = EngineOptions.defaults().maxFirings();
 
     @Override public Integer call() {
+        if (maxFirings < 1) {
+            throw new CommandLine.ParameterException(spec.commandLine(),
+                    "--max-firings must be at least 1, not " + maxFirings + ".");
+        }
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         try (ScriptRuntime runtime = ScriptRuntime.create(ScriptConfig.defaults())) {

@@ -64,6 +64,14 @@ class InferCommandTest {
     }
 
     @Test
+    void infer_withMaxFiringsBelowOne_isAUsageErrorNamingTheOption() {
+        Result r = run("infer", TABLE5, "--max-firings", "-5");
+
+        assertThat(r.code()).isEqualTo(2);
+        assertThat(r.err()).contains("--max-firings must be at least 1, not -5.");
+    }
+
+    @Test
     void infer_whenAssertingAClass_failsWithAMessage() {
         Result r = run("infer", TABLE5, "--assert",
                 "<FRAME><NAME>Ghost</NAME><ISA>User</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>");
