@@ -26,7 +26,10 @@ final class CommandFailure implements IExecutionExceptionHandler {
 
     private static String sentence(Exception e) {
         String message = e.getMessage() == null ? "" : e.getMessage().strip();
-        boolean ours = e.getClass().getName().startsWith("org.kicnp.") || e instanceof UncheckedIOException;
+        // The platform's own exceptions, and the JDK ones it throws with a sentence, speak for themselves; a terse
+        // JDK message ("Port out of range:70000") keeps the exception's name for context.
+        boolean ours = e.getClass().getName().startsWith("org.kicnp.") || e instanceof UncheckedIOException
+                || message.endsWith(".");
         if (ours && !message.isEmpty()) {
             return message;
         }

@@ -63,6 +63,18 @@ class ServeCommandTest {
     }
 
     @Test
+    void serve_withAnEmptyPasswordFile_saysSoInOneSentence(@TempDir Path kb) throws Exception {
+        Path password = Files.writeString(kb.resolve("password"), "\n");
+
+        CliRun run = CliRun.of("serve", kb.toString(), "--gateway-port", "0", "--http-port", "0",
+                "--editor-password-file", password.toString());
+
+        assertThat(run.exitCode()).isEqualTo(1);
+        assertThat(run.err()).contains("kicnp serve: The editor password file '" + password + "' is empty.")
+                .doesNotContain("Exception");
+    }
+
+    @Test
     void replayAndDemoHelp_nameTheirOptions() {
         assertThat(help("replay")).contains("--time-scale", "--drink", "--no-second-visit");
         assertThat(help("demo")).contains("--auto", "--kb", "--http-port");
