@@ -173,11 +173,18 @@ public final class ConditionParser {
             pos++;
         }
         String n = text.substring(start, pos);
+        boolean whole = n.matches("[-+]?\\d+");
         try {
-            return n.matches("[-+]?\\d+") ? Value.of(Long.parseLong(n)) : Value.of(Double.parseDouble(n));
+            Value v = whole ? Value.of(Long.parseLong(n)) : Value.of(Double.parseDouble(n));
+            if (v instanceof Value.Real r && Double.isInfinite(r.value())) {
+                pos = start;
+                throw error("a number up to about 1.8e308 (found '" + n + "')");
+            }
+            return v;
         } catch (NumberFormatException e) {
             pos = start;
-            throw error("a number (found '" + n + "')");
+            throw error(whole ? "a whole number from " + Long.MIN_VALUE + " to " + Long.MAX_VALUE
+                    + " (found '" + n + "')" : "a number (found '" + n + "')");
         }
     }
 
