@@ -196,8 +196,15 @@ final class FrameInput {
                 List<Value> items = new ArrayList<>();
                 if (v.isArray()) {
                     for (JsonNode i : v) {
+                        if (!i.isValueNode()) {
+                            throw new IllegalArgumentException("the item " + abbreviate(i.toString())
+                                    + " is not a text; lists inside lists are not supported.");
+                        }
                         items.add(Value.parse(item, i.asText()));
                     }
+                } else if (!v.isValueNode()) {
+                    throw new IllegalArgumentException(abbreviate(v.toString()) + " is not a list: write an array of "
+                            + "texts or comma-separated text.");
                 } else {
                     for (String part : v.asText().split(",")) {
                         if (!part.isBlank()) {

@@ -245,6 +245,25 @@ class EditorApiTest {
         assertThat(kb.contains("Scout")).isFalse();
     }
 
+    @Test void create_withAListValueThatIsAnObject_answers422InsteadOfSavingAnEmptyList() {
+        http.login(PASSWORD);
+
+        HttpResponse<String> r = http.post("/api/frames", """
+                {"name":"Scout","kind":"CLASS","parent":"Robot",
+                 "slots":[{"name":"abilities","type":"TYPE_LIST","value":{"items":["drive"]}},
+                          {"name":"poses","type":"TYPE_LIST","value":["sit",["lie"]]}]}""");
+
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(422);
+        List<String> messages = new ArrayList<>();
+        json(r).get("problems").forEach(p -> messages.add(p.get("message").asText()));
+        assertThat(messages).containsExactlyInAnyOrder(
+                "Slot 'abilities' of frame 'Scout' value is not valid: {\"items\":[\"drive\"]} is not a list: write an "
+                        + "array of texts or comma-separated text.",
+                "Slot 'poses' of frame 'Scout' value is not valid: the item [\"lie\"] is not a text; lists inside lists "
+                        + "are not supported.");
+        assertThat(kb.contains("Scout")).isFalse();
+    }
+
     @Test void create_withFacetsWrittenAsTheXmlWritesThem_keepsThem() {
         http.login(PASSWORD);
 
