@@ -58,9 +58,19 @@ public final class InferCommand implements Callable<Integer> {
     int maxFirings = EngineOptions.defaults().maxFirings();
 
     @Override public Integer call() {
+        if (maxFirings < 1) {
+            throw new CommandLine.ParameterException(spec.commandLine(),
+                    "--max-firings must be at least 1, not " + maxFirings + ".");
+        }
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         try (ScriptRuntime runtime = ScriptRuntime.create(ScriptConfig.defaults())) {
+            if (KnowledgeLoader.expand(knowledge).isEmpty()) {
+                // As validate says: an empty knowledge base would infer nothing and look like a quiet success.
+                err.println("infer: no knowledge files (*.xml) found in " + knowledge + ".");
+                err.flush();
+                return 1;
+            }
             KnowledgeBase kb = KnowledgeBase.create();
             List<SourcedFrame> declared = KnowledgeLoader.parse(knowledge, kb);
             if (declared.stream().noneMatch(s -> s.frame().name().equals(InferenceEngine.FEEDBACK_CLASS))) {

@@ -32,7 +32,8 @@ public final class Main implements Runnable {
 
     /** Runs the command line and returns its exit code, without exiting: tests call this. */
     public static int run(String... args) {
-        return new CommandLine(new Main()).setCaseInsensitiveEnumValuesAllowed(true).execute(args);
+        return new CommandLine(new Main()).setCaseInsensitiveEnumValuesAllowed(true)
+                .setExecutionExceptionHandler(new CommandFailure()).execute(args);
     }
 
     @Override public void run() {

@@ -2,6 +2,7 @@ package org.kicnp.cli;
 
 import org.kicnp.agent.AgentException;
 import org.kicnp.agent.AgentOptions;
+import org.kicnp.cli.platform.PlatformConfig;
 import org.kicnp.protocol.AgentKind;
 import org.kicnp.robots.AiboAgent;
 import org.kicnp.robots.PinoAgent;
@@ -41,12 +42,14 @@ import java.util.concurrent.TimeUnit;
 public final class RobotsCommand implements Callable<Integer> {
     private static final List<String> ROBOTS = List.of("robovie", "pino", "scout", "aibo");
 
-    @Option(names = "--gateway", defaultValue = "127.0.0.1:7407",
-            description = "The server, host:port (default ${DEFAULT-VALUE}).")
+    // The port serve listens on by default, so that "serve KB" then "robots" finds it.
+    @Option(names = "--gateway", defaultValue = "127.0.0.1:" + PlatformConfig.DEFAULT_GATEWAY_PORT,
+            description = "The server, host:port (default ${DEFAULT-VALUE}, where serve listens by default).")
     String gateway;
 
     @Option(names = "--tokens", defaultValue = "agents.properties",
-            description = "Properties file with NAME.token for robovie, pino, scout and aibo (default ${DEFAULT-VALUE}).")
+            description = "Properties file with NAME.token for robovie, pino, scout and aibo (default ${DEFAULT-VALUE}; "
+                    + "serve writes it to KB_DIR/.kicnp/agents.properties).")
     Path tokens;
 
     @Option(names = "--seed", defaultValue = "42",

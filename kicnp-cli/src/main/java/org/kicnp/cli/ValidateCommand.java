@@ -27,7 +27,8 @@ import picocli.CommandLine.Spec;
         mixinStandardHelpOptions = true,
         description = {
             "Loads the knowledge files (XML, in the paper's format) together as one knowledge base and checks them.",
-            "Directories are searched for *.xml files. Prints OK with the counts, or each error on a line of its own:",
+            "Directories are searched for *.xml files; scripts are parsed (never run). Prints OK with the counts, or",
+            "each error on a line of its own:",
             "  FILE:LINE:COLUMN: message"
         },
         exitCodeListHeading = "%nExit codes:%n",
@@ -73,23 +74,30 @@ public final class ValidateCommand implements Callable<Integer> {
         }
         try {
             List<SourcedFrame> loaded = KnowledgeLoader.load(KnowledgeBase.create(), files);
+            List<LoadError> scriptErrors = ScriptSyntaxCheck.errors(loaded);
+            if (!scriptErrors.isEmpty()) {
+                return failed(out, scriptErrors, files);
+            }
             long instances = loaded.stream().filter(f -> f.frame().kind() == FrameKind.INSTANCE).count();
             out.printf("OK: %s (%s, %s) from %s%n", plural(loaded.size(), "frame"),
                     plural(loaded.size() - instances, "class", "classes"), plural(instances, "instance"),
                     plural(files.size(), "file"));
             return 0;
         } catch (KnowledgeXmlException e) {
-            List<LoadError> errors = e.errors();
-            // One error per line, whatever the message holds, so the output stays grep-able.
-            errors.forEach(err -> out.println(err.format().replaceAll("\\R\\s*", " ")));
-            long sources = errors.stream().map(LoadError::source).distinct().count();
-            out.printf("FAILED: %s in %s (of %s checked)%n", plural(errors.size(), "error"),
-                    plural(sources, "file"), plural(files.size(), "file"));
-            return 1;
+            return failed(out, e.errors(), files);
         } catch (UncheckedIOException e) {
             out.println("FAILED: a knowledge file could not be read: " + e.getCause().getMessage());
             return 1;
         }
+    }
+
+    private static int failed(PrintWriter out, List<LoadError> errors, List<Path> files) {
+        // One error per line, whatever the message holds, so the output stays grep-able.
+        errors.forEach(err -> out.println(err.format().replaceAll("\\R\\s*", " ")));
+        long sources = errors.stream().map(LoadError::source).distinct().count();
+        out.printf("FAILED: %s in %s (of %s checked)%n", plural(errors.size(), "error"),
+                plural(sources, "file"), plural(files.size(), "file"));
+        return 1;
     }
 
     private static String plural(long n, String one) {

@@ -53,6 +53,25 @@ class InferCommandTest {
     }
 
     @Test
+    void infer_onADirectoryWithoutKnowledgeFiles_failsWithAMessage(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("notes.txt"), "not a knowledge file");
+
+        Result r = run("infer", dir.toString(), "--assert", NEW_USER);
+
+        assertThat(r.code()).isEqualTo(1);
+        assertThat(r.err()).contains("infer: no knowledge files (*.xml) found in [" + dir + "].");
+        assertThat(r.out()).doesNotContain("Created");
+    }
+
+    @Test
+    void infer_withMaxFiringsBelowOne_isAUsageErrorNamingTheOption() {
+        Result r = run("infer", TABLE5, "--max-firings", "-5");
+
+        assertThat(r.code()).isEqualTo(2);
+        assertThat(r.err()).contains("--max-firings must be at least 1, not -5.");
+    }
+
+    @Test
     void infer_whenAssertingAClass_failsWithAMessage() {
         Result r = run("infer", TABLE5, "--assert",
                 "<FRAME><NAME>Ghost</NAME><ISA>User</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>");

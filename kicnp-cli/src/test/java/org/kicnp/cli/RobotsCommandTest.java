@@ -70,6 +70,18 @@ class RobotsCommandTest {
     }
 
     @Test
+    void robots_byDefault_connectsToThePortServeListensOnByDefault() {
+        CommandLine robots = new CommandLine(new RobotsCommand());
+        robots.parseArgs();
+        CommandLine serve = new CommandLine(new ServeCommand());
+        serve.parseArgs("kb");
+
+        String gateway = ((RobotsCommand) robots.getCommand()).gateway;
+
+        assertThat(gateway).isEqualTo("127.0.0.1:" + ((ServeCommand) serve.getCommand()).gatewayPort);
+    }
+
+    @Test
     void robots_help_listsItsOptions() {
         assertThat(run("robots", "--help")).isZero();
         assertThat(out.toString()).contains("--gateway").contains("--tokens").contains("--seed").contains("--time-scale");

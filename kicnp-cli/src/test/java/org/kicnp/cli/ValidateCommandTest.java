@@ -105,6 +105,26 @@ class ValidateCommandTest {
     }
 
     @Test
+    void validate_whenAScriptOrScriptConditionDoesNotParse_reportsItsFrameSlotLineAndColumn() throws IOException {
+        Files.writeString(dir.resolve("base.xml"), BASE);
+        Path greeting = dir.resolve("greeting.xml");
+        Files.writeString(greeting, GREETING.formatted("Speech")
+                .replace("Sendmsg(s.mMouth, “Hi!", "Sendmsg(s.mMouth, (“Hi!")
+                .replace("<CONDITION>COND_ANY</CONDITION>\n      <ARGUMENT>Mouth</ARGUMENT>",
+                        "<CONDITION>js: s.mMouth.on &amp;&amp;</CONDITION>\n      <ARGUMENT>Mouth</ARGUMENT>"));
+
+        CliRun run = CliRun.of("validate", dir.toString());
+
+        assertThat(run.exitCode()).as(run.out()).isEqualTo(1);
+        assertThat(run.outLines()).hasSize(3);
+        assertThat(run.outLines().get(0)).startsWith(greeting + ":1:1: The js: condition of slot 'mMouth' of frame "
+                + "'Greeting' has a syntax error at line 1, column ");
+        assertThat(run.outLines().get(1)).startsWith(greeting + ":1:1: The script in slot 'onInstantiate' of frame "
+                + "'Greeting' has a syntax error at line 1, column ");
+        assertThat(run.outLines().get(2)).isEqualTo("FAILED: 2 errors in 1 file (of 2 files checked)");
+    }
+
+    @Test
     void validate_whenXmlMalformed_reportsTheLineAndFails() throws IOException {
         Path broken = dir.resolve("broken.xml");
         Files.writeString(broken, "<FRAME>\n  <NAME>Oops</NAME>\n  <ISINSTANCE>FALSE</ISINST>\n</FRAME>\n");

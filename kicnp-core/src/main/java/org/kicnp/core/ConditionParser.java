@@ -82,7 +82,7 @@ public final class ConditionParser {
             try {
                 c = new Condition.Matches(left, s.value());
             } catch (IllegalArgumentException e) {
-                throw new ConditionSyntaxException(e.getMessage(), pos, text);
+                throw ConditionSyntaxException.because(e.getMessage(), pos, text);
             }
         } else {
             Condition.Op op = op();
@@ -173,11 +173,18 @@ public final class ConditionParser {
             pos++;
         }
         String n = text.substring(start, pos);
+        boolean whole = n.matches("[-+]?\\d+");
         try {
-            return n.matches("[-+]?\\d+") ? Value.of(Long.parseLong(n)) : Value.of(Double.parseDouble(n));
+            Value v = whole ? Value.of(Long.parseLong(n)) : Value.of(Double.parseDouble(n));
+            if (v instanceof Value.Real r && Double.isInfinite(r.value())) {
+                pos = start;
+                throw error("a number up to about 1.8e308 (found '" + n + "')");
+            }
+            return v;
         } catch (NumberFormatException e) {
             pos = start;
-            throw error("a number (found '" + n + "')");
+            throw error(whole ? "a whole number from " + Long.MIN_VALUE + " to " + Long.MAX_VALUE
+                    + " (found '" + n + "')" : "a number (found '" + n + "')");
         }
     }
 

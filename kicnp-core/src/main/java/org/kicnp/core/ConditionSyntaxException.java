@@ -5,8 +5,17 @@ public final class ConditionSyntaxException extends KnowledgeException {
     private final int column;
 
     ConditionSyntaxException(String expected, int column, String text) {
-        super("Condition '" + text + "' is not valid at character " + column + ": expected " + expected + ".");
+        this(column, text, "expected " + expected + ".");
+    }
+
+    private ConditionSyntaxException(int column, String text, String reason) {
+        super("Condition '" + text + "' is not valid at character " + column + ": " + reason);
         this.column = column;
+    }
+
+    /** For a part that parsed but is wrong in itself, such as a regular expression: {@code reason} is a sentence. */
+    static ConditionSyntaxException because(String reason, int column, String text) {
+        return new ConditionSyntaxException(column, text, reason);
     }
 
     /** The 1-based position in the condition text where parsing stopped. */

@@ -172,15 +172,25 @@ public sealed interface Value permits Value.Str, Value.Int, Value.Real, Value.Bo
                 try {
                     yield new Int(Long.parseLong(t));
                 } catch (NumberFormatException e) {
-                    throw new IllegalArgumentException("'" + text + "' is not an integer.");
+                    throw new IllegalArgumentException(t.matches("[+-]?[0-9]+")
+                            ? "'" + text + "' is too large for an integer: TYPE_INT holds whole numbers from "
+                                    + Long.MIN_VALUE + " to " + Long.MAX_VALUE + "."
+                            : "'" + text + "' is not an integer.");
                 }
             }
             case FLOAT -> {
+                double d;
                 try {
-                    yield new Real(Double.parseDouble(t));
+                    d = Double.parseDouble(t);
                 } catch (NumberFormatException e) {
                     throw new IllegalArgumentException("'" + text + "' is not a number.");
                 }
+                // A finite number too large for a double would silently become Infinity; only "Infinity" means that.
+                if (Double.isInfinite(d) && !t.contains("Infinity")) {
+                    throw new IllegalArgumentException("'" + text + "' is too large for a float: TYPE_FLOAT holds "
+                            + "numbers up to about 1.8e308 (write Infinity if that is what you mean).");
+                }
+                yield new Real(d);
             }
             case BOOLEAN -> switch (t.toUpperCase(java.util.Locale.ROOT)) {
                 case "TRUE", "YES", "1" -> Bool.TRUE;

@@ -79,4 +79,22 @@ class ConditionParserTest {
         assertThatThrownBy(() -> ConditionParser.parse("== 1 2"))
                 .hasMessageContaining("expected the end of the condition");
     }
+
+    @Test
+    void parse_whenANumberIsTooLarge_saysSoInsteadOfNotANumberOrInfinity() {
+        assertThatThrownBy(() -> ConditionParser.parse("> 99999999999999999999"))
+                .hasMessage("Condition '> 99999999999999999999' is not valid at character 3: expected a whole number from "
+                        + "-9223372036854775808 to 9223372036854775807 (found '99999999999999999999').");
+        assertThatThrownBy(() -> ConditionParser.parse("< 1e999"))
+                .hasMessage("Condition '< 1e999' is not valid at character 3: expected a number up to about 1.8e308 "
+                        + "(found '1e999').");
+    }
+
+    @Test
+    void parse_whenPatternIsInvalid_saysWhyInOneSentence() {
+        assertThatThrownBy(() -> ConditionParser.parse("matches \"[a-\""))
+                .isInstanceOf(ConditionSyntaxException.class)
+                .hasMessage("Condition 'matches \"[a-\"' is not valid at character 13: '[a-' is not a valid pattern: "
+                        + "Illegal character range.");
+    }
 }

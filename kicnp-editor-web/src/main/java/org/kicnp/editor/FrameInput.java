@@ -60,7 +60,7 @@ final class FrameInput {
                     + "names '" + frameName + "'; use rename to change a frame's name."));
         }
         FrameKind kind = FrameKind.CLASS;
-        String kindText = text(json, "kind").orElse("CLASS").toUpperCase(Locale.ROOT);
+        String kindText = field(json, "kind", "").orElse("CLASS").toUpperCase(Locale.ROOT);
         switch (kindText) {
             case "CLASS" -> kind = FrameKind.CLASS;
             case "INSTANCE" -> kind = FrameKind.INSTANCE;
@@ -68,20 +68,20 @@ final class FrameInput {
                     + "'; it must be CLASS or INSTANCE."));
         }
         Frame.Builder b = Frame.builder(frameName, kind);
-        text(json, "parent").ifPresent(b::parent);
-        text(json, "provenance").ifPresent(p -> provenance(p).ifPresent(b::provenance));
+        field(json, "parent", "").ifPresent(b::parent);
+        field(json, "provenance", "").ifPresent(p -> provenance(p).ifPresent(b::provenance));
         if (json.hasNonNull("priority")) {
-            b.priority(json.get("priority").asInt());
+            priority(json.get("priority")).ifPresent(b::priority);
         }
-        strings(json, "parts").forEach(b::part);
-        for (JsonNode l : array(json, "linksTo")) {
+        strings(json, "parts", "").forEach(b::part);
+        for (JsonNode l : array(json, "linksTo", "")) {
             link(l).ifPresent(sl -> b.linkTo(Relation.parse(sl[0]), sl[1]));
         }
-        for (JsonNode l : array(json, "linksFrom")) {
+        for (JsonNode l : array(json, "linksFrom", "")) {
             link(l).ifPresent(sl -> b.linkFrom(Relation.parse(sl[0]), sl[1]));
         }
         List<String> seen = new ArrayList<>();
-        for (JsonNode s : array(json, "slots")) {
+        for (JsonNode s : array(json, "slots", "")) {
             slot(s).ifPresent(slot -> {
                 if (seen.contains(slot.name())) {
                     problems.add(ApiProblem.of(frameName, slot.name(), "Frame '" + frameName + "' has two slots named '"
@@ -98,6 +98,23 @@ final class FrameInput {
             problems.add(ApiProblem.of(frameName, "", e.getMessage()));
             return null;
         }
+    }
+
+    /** An integer, as a JSON number or text; anything else is a problem, never a silent 0 or a clipped value. */
+    private Optional<Integer> priority(JsonNode p) {
+        if (p.isIntegralNumber() && p.canConvertToInt()) {
+            return Optional.of(p.intValue());
+        }
+        if (p.isTextual()) {
+            try {
+                return Optional.of(Integer.parseInt(p.asText().strip()));
+            } catch (NumberFormatException e) {
+                // reported below
+            }
+        }
+        problems.add(ApiProblem.of(frameName, "", "Frame '" + frameName + "' has priority " + p
+                + ", which is not an integer (from " + Integer.MIN_VALUE + " to " + Integer.MAX_VALUE + ")."));
+        return Optional.empty();
     }
 
     private Optional<Provenance> provenance(String p) {
@@ -128,7 +145,7 @@ final class FrameInput {
             problems.add(ApiProblem.of(frameName, "", "A slot of frame '" + frameName + "' has no name."));
             return Optional.empty();
         }
-        String typeText = text(s, "type").orElse("TYPE_STR");
+        String typeText = field(s, "type", name).orElse("TYPE_STR");
         Optional<DataType> type = DataType.parse(typeText);
         if (type.isEmpty()) {
             problems.add(ApiProblem.of(frameName, name, where + " has the unknown data type '" + typeText + "'."));
@@ -136,17 +153,17 @@ final class FrameInput {
         }
         int before = problems.size();
         Slot.Builder b = Slot.builder(name, type.get());
-        text(s, "role").ifPresent(b::role);
-        text(s, "from").ifPresent(b::from);
-        text(s, "argument").ifPresent(b::argument);
-        text(s, "frameRelated").ifPresent(b::frameRelated);
-        b.frameListRelated(strings(s, "frameListRelated"));
-        text(s, "onNeeded").ifPresent(b::onNeeded);
-        text(s, "onAdded").ifPresent(b::onAdded);
-        text(s, "onRemoved").ifPresent(b::onRemoved);
-        b.required(flag(s, "required", false)).shared(flag(s, "shared", true)).unique(flag(s, "unique", false))
-                .reactive(flag(s, "reactive", true));
-        text(s, "condition").ifPresent(c -> {
+        field(s, "role", name).ifPresent(b::role);
+        field(s, "from", name).ifPresent(b::from);
+        field(s, "argument", name).ifPresent(b::argument);
+        field(s, "frameRelated", name).ifPresent(b::frameRelated);
+        b.frameListRelated(strings(s, "frameListRelated", name));
+        field(s, "onNeeded", name).ifPresent(b::onNeeded);
+        field(s, "onAdded", name).ifPresent(b::onAdded);
+        field(s, "onRemoved", name).ifPresent(b::onRemoved);
+        b.required(flag(s, "required", false, where)).shared(flag(s, "shared", true, where))
+                .unique(flag(s, "unique", false, where)).reactive(flag(s, "reactive", true, where));
+        field(s, "condition", name).ifPresent(c -> {
             try {
                 b.condition(ConditionParser.parse(c));
             } catch (KnowledgeException e) {
@@ -179,8 +196,15 @@ final class FrameInput {
                 List<Value> items = new ArrayList<>();
                 if (v.isArray()) {
                     for (JsonNode i : v) {
+                        if (!i.isValueNode()) {
+                            throw new IllegalArgumentException("the item " + abbreviate(i.toString())
+                                    + " is not a text; lists inside lists are not supported.");
+                        }
                         items.add(Value.parse(item, i.asText()));
                     }
+                } else if (!v.isValueNode()) {
+                    throw new IllegalArgumentException(abbreviate(v.toString()) + " is not a list: write an array of "
+                            + "texts or comma-separated text.");
                 } else {
                     for (String part : v.asText().split(",")) {
                         if (!part.isBlank()) {
@@ -200,9 +224,43 @@ final class FrameInput {
         }
     }
 
-    private static boolean flag(JsonNode s, String field, boolean otherwise) {
+    /**
+     * A facet flag: a JSON boolean, or text the XML format accepts ({@code TRUE}, {@code no}, {@code 1}…). Anything
+     * else is a problem: reading it as the default would save a facet the person did not ask for.
+     */
+    private boolean flag(JsonNode s, String field, boolean otherwise, String where) {
         JsonNode f = s.get(field);
-        return f == null || f.isNull() ? otherwise : f.asBoolean(otherwise);
+        if (f == null || f.isNull()) {
+            return otherwise;
+        }
+        if (f.isBoolean()) {
+            return f.booleanValue();
+        }
+        if (f.isValueNode()) {
+            try {
+                return ((Value.Bool) Value.parse(DataType.BOOLEAN, f.asText())).value();
+            } catch (IllegalArgumentException e) {
+                // reported below
+            }
+        }
+        problems.add(ApiProblem.of(frameName, text(s, "name").orElse(""), where + " has " + field + " " + f
+                + ", which is not true or false."));
+        return otherwise;
+    }
+
+    /**
+     * A text item of the frame (slot empty) or of a slot, as {@link #text}; an object or array there is a problem, not
+     * an absent item: taking it as absent would make a frame a root or a slot a string without a word.
+     */
+    private Optional<String> field(JsonNode node, String field, String slot) {
+        JsonNode f = node.get(field);
+        if (f != null && !f.isNull() && !f.isValueNode()) {
+            String of = slot.isEmpty() ? "Frame '" + frameName + "'" : "Slot '" + slot + "' of frame '" + frameName + "'";
+            problems.add(ApiProblem.of(frameName, slot, of + " has " + field + " " + abbreviate(f.toString())
+                    + ", which is not a text."));
+            return Optional.empty();
+        }
+        return text(node, field);
     }
 
     static Optional<String> text(JsonNode node, String field) {
@@ -214,14 +272,31 @@ final class FrameInput {
         return t.isBlank() ? Optional.empty() : Optional.of(t);
     }
 
-    private static Iterable<JsonNode> array(JsonNode node, String field) {
+    /**
+     * The array in {@code field}, empty when the field is absent or null. Any other JSON is a problem: taking it as
+     * empty would make a save drop every slot (or part, or link) the frame had.
+     */
+    private Iterable<JsonNode> array(JsonNode node, String field, String slot) {
         JsonNode f = node.get(field);
-        return f != null && f.isArray() ? f : List.of();
+        if (f == null || f.isNull()) {
+            return List.of();
+        }
+        if (!f.isArray()) {
+            String of = slot.isEmpty() ? "Frame '" + frameName + "'" : "Slot '" + slot + "' of frame '" + frameName + "'";
+            problems.add(ApiProblem.of(frameName, slot, of + " has " + field + " " + abbreviate(f.toString())
+                    + ", which is not an array."));
+            return List.of();
+        }
+        return f;
     }
 
-    private static List<String> strings(JsonNode node, String field) {
+    private static String abbreviate(String t) {
+        return t.length() <= 40 ? t : t.substring(0, 37) + "...";
+    }
+
+    private List<String> strings(JsonNode node, String field, String slot) {
         List<String> out = new ArrayList<>();
-        for (JsonNode i : array(node, field)) {
+        for (JsonNode i : array(node, field, slot)) {
             if (!i.asText().isBlank()) {
                 out.add(i.asText().strip());
             }

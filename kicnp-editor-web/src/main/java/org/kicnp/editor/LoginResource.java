@@ -27,10 +27,23 @@ final class LoginResource {
         return sessions.editingPossible();
     }
 
+    /**
+     * Whether the request carries a valid session cookie or the right password as a bearer token. A bearer password
+     * is a password guess like a login: a wrong one is refused and counted by the same throttle, or every tool could
+     * guess without limit.
+     *
+     * @throws ApiException 401 for a wrong bearer password, 429 while its address is throttled
+     */
     boolean loggedIn(Request request) {
         String auth = request.getHeaders().get(HttpHeader.AUTHORIZATION);
         if (auth != null && auth.regionMatches(true, 0, "Bearer ", 0, 7)) {
-            return sessions.matches(auth.substring(7).strip());
+            String address = Request.getRemoteAddr(request);
+            refuseWhileThrottled(address);
+            if (!sessions.matches(auth.substring(7).strip())) {
+                refuseWrongPassword(address, "Wrong password in the Authorization header: you were not logged in.");
+            }
+            throttle.succeeded(address);
+            return true;
         }
         return ApiRequest.sessionToken(request).map(sessions::valid).orElse(false);
     }
@@ -50,26 +63,34 @@ final class LoginResource {
             throw new ApiException(401, "Editing is disabled: no editor password is configured (editor.password).");
         }
         String address = r.remoteAddress();
-        long wait = throttle.waitSeconds(address);
-        if (wait > 0) {
-            throw new ApiException(429, "Too many wrong passwords from this address: try again in " + wait
-                    + " seconds.");
-        }
+        refuseWhileThrottled(address);
         String password = FrameInput.text(r.body(), "password").orElse("");
         if (!sessions.matches(password)) {
-            throttle.failed(address);
-            try {
-                Thread.sleep(WRONG_PASSWORD_PAUSE_MS);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-            throw new ApiException(401, "Wrong password: you were not logged in.");
+            refuseWrongPassword(address, "Wrong password: you were not logged in.");
         }
         throttle.succeeded(address);
         HttpCookie cookie = HttpCookie.build(ApiRequest.SESSION_COOKIE, sessions.open())
                 .path("/").httpOnly(true).sameSite(HttpCookie.SameSite.STRICT)
                 .maxAge(sessions.lifetime().toSeconds()).build();
         return Reply.json(200, "{\"loggedIn\":true}").withCookie(cookie);
+    }
+
+    private void refuseWhileThrottled(String address) {
+        long wait = throttle.waitSeconds(address);
+        if (wait > 0) {
+            throw new ApiException(429, "Too many wrong passwords from this address: try again in " + wait
+                    + " seconds.");
+        }
+    }
+
+    private void refuseWrongPassword(String address, String message) {
+        throttle.failed(address);
+        try {
+            Thread.sleep(WRONG_PASSWORD_PAUSE_MS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        throw new ApiException(401, message);
     }
 
     Reply logout(ApiRequest r) {

@@ -192,6 +192,93 @@ class EditorApiTest {
         assertThat(kb.require("AskUserName")).isEqualTo(before);
     }
 
+    @Test void put_withSlotsThatAreNotAnArray_answers422AndKeepsEverySlot() {
+        http.login(PASSWORD);
+        Frame before = kb.require("AskUserName");
+        ObjectNode f = (ObjectNode) json(http.get("/api/frames/AskUserName"));
+        f.put("expectedRevision", f.get("revision").asLong());
+        f.put("slots", "mUser");
+
+        HttpResponse<String> r = http.put("/api/frames/AskUserName", f.toString());
+
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(422);
+        assertThat(json(r).get("problems").get(0).get("message").asText())
+                .isEqualTo("Frame 'AskUserName' has slots \"mUser\", which is not an array.");
+        assertThat(kb.require("AskUserName")).isEqualTo(before);
+    }
+
+    @Test void put_withParentOrConditionThatIsNotAText_answers422AndKeepsTheFrame() {
+        http.login(PASSWORD);
+        Frame before = kb.require("AskUserName");
+        ObjectNode f = (ObjectNode) json(http.get("/api/frames/AskUserName"));
+        f.put("expectedRevision", f.get("revision").asLong());
+        f.putObject("parent").put("name", "Speech");
+        ((ObjectNode) f.get("slots").get(0)).putArray("condition").add("== \"tea\"");
+
+        HttpResponse<String> r = http.put("/api/frames/AskUserName", f.toString());
+
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(422);
+        List<String> messages = new ArrayList<>();
+        json(r).get("problems").forEach(p -> messages.add(p.get("message").asText()));
+        assertThat(messages).containsExactlyInAnyOrder(
+                "Frame 'AskUserName' has parent {\"name\":\"Speech\"}, which is not a text.",
+                "Slot 'mUser' of frame 'AskUserName' has condition [\"== \\\"tea\\\"\"], which is not a text.");
+        assertThat(kb.require("AskUserName")).isEqualTo(before);
+    }
+
+    @Test void create_withFacetThatIsNotABooleanOrPriorityThatIsNotAnInteger_answers422AndAddsNothing() {
+        http.login(PASSWORD);
+
+        HttpResponse<String> r = http.post("/api/frames", """
+                {"name":"Scout","kind":"CLASS","parent":"Robot","priority":"high",
+                 "slots":[{"name":"sonars","type":"TYPE_INT","required":"maybe"}]}""");
+        HttpResponse<String> huge = http.post("/api/frames", """
+                {"name":"Scout","kind":"CLASS","parent":"Robot","priority":1e99}""");
+
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(422);
+        List<String> messages = new ArrayList<>();
+        json(r).get("problems").forEach(p -> messages.add(p.get("message").asText()));
+        assertThat(messages).containsExactlyInAnyOrder(
+                "Frame 'Scout' has priority \"high\", which is not an integer (from -2147483648 to 2147483647).",
+                "Slot 'sonars' of frame 'Scout' has required \"maybe\", which is not true or false.");
+        assertThat(huge.statusCode()).as(huge.body()).isEqualTo(422);
+        assertThat(kb.contains("Scout")).isFalse();
+    }
+
+    @Test void create_withAListValueThatIsAnObject_answers422InsteadOfSavingAnEmptyList() {
+        http.login(PASSWORD);
+
+        HttpResponse<String> r = http.post("/api/frames", """
+                {"name":"Scout","kind":"CLASS","parent":"Robot",
+                 "slots":[{"name":"abilities","type":"TYPE_LIST","value":{"items":["drive"]}},
+                          {"name":"poses","type":"TYPE_LIST","value":["sit",["lie"]]}]}""");
+
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(422);
+        List<String> messages = new ArrayList<>();
+        json(r).get("problems").forEach(p -> messages.add(p.get("message").asText()));
+        assertThat(messages).containsExactlyInAnyOrder(
+                "Slot 'abilities' of frame 'Scout' value is not valid: {\"items\":[\"drive\"]} is not a list: write an "
+                        + "array of texts or comma-separated text.",
+                "Slot 'poses' of frame 'Scout' value is not valid: the item [\"lie\"] is not a text; lists inside lists "
+                        + "are not supported.");
+        assertThat(kb.contains("Scout")).isFalse();
+    }
+
+    @Test void create_withFacetsWrittenAsTheXmlWritesThem_keepsThem() {
+        http.login(PASSWORD);
+
+        HttpResponse<String> r = http.post("/api/frames", """
+                {"name":"Scout","kind":"CLASS","parent":"Robot","priority":"3",
+                 "slots":[{"name":"sonars","type":"TYPE_INT","required":"TRUE","shared":"FALSE"}]}""");
+
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(201);
+        assertThat(kb.require("Scout").priority()).isEqualTo(3);
+        assertThat(kb.require("Scout").ownSlot("sonars")).hasValueSatisfying(slot -> {
+            assertThat(slot.required()).isTrue();
+            assertThat(slot.shared()).isFalse();
+        });
+    }
+
     @Test void create_withIsACycle_answers422() {
         http.login(PASSWORD);
         ObjectNode system = (ObjectNode) json(http.get("/api/frames/System"));
@@ -308,6 +395,25 @@ class EditorApiTest {
 
         assertThat(r.statusCode()).as(r.body()).isEqualTo(200);
         assertThat(kb.contains("Taro")).isFalse();
+    }
+
+    @Test void bearerToken_withWrongPasswords_isRefusedInWordsAndThrottledLikeALogin() {
+        HttpResponse<String> first = null;
+        for (int i = 0; i < LoginThrottle.MAX_FAILURES; i++) {
+            HttpResponse<String> r = http.send(http.jsonRequest("/api/frames/Taro")
+                    .header("Authorization", "Bearer guess " + i).DELETE());
+            first = first == null ? r : first;
+        }
+
+        HttpResponse<String> right = http.send(http.jsonRequest("/api/frames/Taro")
+                .header("Authorization", "Bearer " + PASSWORD).DELETE());
+
+        assertThat(first.statusCode()).isEqualTo(401);
+        assertThat(json(first).get("error").asText())
+                .isEqualTo("Wrong password in the Authorization header: you were not logged in.");
+        assertThat(right.statusCode()).as(right.body()).isEqualTo(429);
+        assertThat(json(right).get("error").asText()).startsWith("Too many wrong passwords from this address");
+        assertThat(kb.contains("Taro")).isTrue();
     }
 
     @Test void writes_notJsonOrFromAnotherOrigin_areRefused() {

@@ -65,6 +65,18 @@ final class KnowledgeAccess implements KnowledgeListener {
                     + frames.size() + " frame(s)" + (frames.size() == 1 ? " of kind class" : "") + ".");
         }
         Frame f = frames.getFirst().toBuilder().provenance(Provenance.RUNTIME).build();
+        // An assert is a runtime fact: replacing a class or declared (or learned) knowledge with it would erase
+        // that knowledge from the store for good, so only runtime instances may be replaced.
+        Optional<Frame> existing = kb.frame(f.name());
+        if (existing.isPresent() && !existing.get().isInstance()) {
+            return ErrorReply.to(a.id(), ErrorCode.FORBIDDEN, "Frame '" + f.name()
+                    + "' is a class; an assert may add or replace runtime instances only.");
+        }
+        if (existing.isPresent() && existing.get().provenance().durable()) {
+            return ErrorReply.to(a.id(), ErrorCode.FORBIDDEN, "Frame '" + f.name() + "' is "
+                    + existing.get().provenance().name().toLowerCase(java.util.Locale.ROOT)
+                    + " knowledge; an assert may add or replace runtime instances only.");
+        }
         return apply(a.id(), List.of(new Change.Put(f)));
     }
 

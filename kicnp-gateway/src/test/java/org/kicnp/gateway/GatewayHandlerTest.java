@@ -182,6 +182,40 @@ class GatewayHandlerTest {
     }
 
     @Test
+    void assert_overAClassOrDeclaredInstance_isForbiddenAndKeepsThem() {
+        kb.add(Frame.classFrame("Cup").build());
+        kb.add(Frame.classFrame("Tea").parent("Cup").build());
+        kb.add(Frame.instance("cup1", "Cup").build());
+        authenticate();
+
+        ch.writeInbound(Wire.frame(new Message.Assert("2",
+                org.kicnp.protocol.FrameText.toXml(Frame.instance("Tea", "Cup").build()))));
+        assertError(ErrorCode.FORBIDDEN, "Frame 'Tea' is a class; an assert may add or replace runtime instances only.");
+        ch.writeInbound(Wire.frame(new Message.Assert("3",
+                org.kicnp.protocol.FrameText.toXml(Frame.instance("cup1", "Cup").build()))));
+        assertError(ErrorCode.FORBIDDEN,
+                "Frame 'cup1' is declared knowledge; an assert may add or replace runtime instances only.");
+
+        assertThat(kb.require("Tea").isInstance()).isFalse();
+        assertThat(kb.require("cup1").provenance()).isEqualTo(org.kicnp.core.Provenance.DECLARED);
+        assertThat(ch.isOpen()).isTrue();
+    }
+
+    @Test
+    void assert_again_replacesTheRuntimeInstance() {
+        kb.add(Frame.classFrame("Cup").build());
+        authenticate();
+        ch.writeInbound(Wire.frame(new Message.Assert("2",
+                org.kicnp.protocol.FrameText.toXml(Frame.instance("cup1", "Cup").build()))));
+        ch.writeInbound(Wire.frame(new Message.Assert("3", org.kicnp.protocol.FrameText.toXml(
+                Frame.instance("cup1", "Cup").slot(org.kicnp.core.Slot.builder("full", org.kicnp.core.DataType.BOOLEAN)
+                        .value(Value.of(true)).build()).build()))));
+
+        assertThat(Wire.written(ch)).containsExactly(new Message.Ack("2"), new Message.Ack("3"));
+        assertThat(kb.value("cup1", "full")).contains(Value.of(true));
+    }
+
+    @Test
     void destroy_ofClass_isForbiddenButConnectionStaysOpen() {
         kb.add(Frame.classFrame("Cup").build());
         authenticate();

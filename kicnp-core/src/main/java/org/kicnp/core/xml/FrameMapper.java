@@ -65,8 +65,9 @@ final class FrameMapper {
             try {
                 b.priority(Integer.parseInt(p.stripped()));
             } catch (NumberFormatException x) {
-                error(p.at(source), "The PRIORITY of frame '" + name + "' is '" + p.stripped()
-                        + "', which is not a whole number.");
+                error(p.at(source), "The PRIORITY of frame '" + name + "' is '" + p.stripped() + "', which is "
+                        + (p.stripped().matches("[+-]?[0-9]+") ? "outside the range of a priority (" + Integer.MIN_VALUE
+                                + " to " + Integer.MAX_VALUE + ")." : "not a whole number."));
             }
         });
         e.present(FrameTag.HASPART).ifPresent(p -> names(p, "HASPART", "PART").forEach(b::part));

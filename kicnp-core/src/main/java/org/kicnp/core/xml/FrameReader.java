@@ -1,8 +1,11 @@
 package org.kicnp.core.xml;
 
+import java.io.CharConversionException;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.List;
+import java.util.Optional;
 import java.util.function.Consumer;
 import javax.xml.stream.Location;
 import javax.xml.stream.XMLStreamConstants;
@@ -30,11 +33,21 @@ final class FrameReader {
 
     /** Reads the document, adding what is wrong to {@code errors} and every readable frame to {@code sink}. */
     static void read(XMLStreamReader reader, String source, List<LoadError> errors, Consumer<FrameElement> sink) {
+        read(reader, source, errors, sink, Optional.empty());
+    }
+
+    /**
+     * As {@link #read(XMLStreamReader, String, List, Consumer)}, for the document in {@code file}: a byte that is not
+     * UTF-8 is then reported where it is in the file, which the parser, decoding ahead, cannot say.
+     */
+    static void read(XMLStreamReader reader, String source, List<LoadError> errors, Consumer<FrameElement> sink,
+            Optional<Path> file) {
         FrameReader fr = new FrameReader(reader, source, errors, sink);
         try {
             fr.document();
         } catch (XMLStreamException e) {
-            errors.add(fr.syntaxError(e));
+            errors.add(file.filter(f -> notUtf8(e)).flatMap(f -> Utf8Check.firstMalformed(f, source))
+                    .orElseGet(() -> fr.syntaxError(e)));
         } finally {
             try {
                 reader.close();
@@ -333,6 +346,18 @@ final class FrameReader {
 
     private void error(Location l, String message) {
         errors.add(new LoadError(source, l.getLineNumber(), l.getColumnNumber(), message));
+    }
+
+    /** Whether the parser stopped at bytes that do not decode as UTF-8 (Woodstox wraps its decoder's exception). */
+    private static boolean notUtf8(XMLStreamException e) {
+        Throwable t = e;
+        for (int depth = 0; t != null && depth < 8; depth++) {
+            if (t instanceof CharConversionException && String.valueOf(t.getMessage()).contains("UTF-8")) {
+                return true;
+            }
+            t = t.getCause() == null && t instanceof XMLStreamException x ? x.getNestedException() : t.getCause();
+        }
+        return false;
     }
 
     private LoadError syntaxError(XMLStreamException e) {

@@ -89,7 +89,7 @@ final class LoadSession {
             }
             // 64 K reads instead of the parser's 4 K ones: fewer trips through the channel's temporary buffers.
             try (InputStream in = new BufferedInputStream(Files.newInputStream(file), 1 << 16)) {
-                read(factory.createXMLStreamReader(source, in), source);
+                FrameReader.read(factory.createXMLStreamReader(source, in), source, readErrors, sink, Optional.of(file));
             }
         } catch (IOException e) {
             readErrors.add(new LoadError(source, 1, 1, "The file cannot be read: " + e.getMessage() + "."));

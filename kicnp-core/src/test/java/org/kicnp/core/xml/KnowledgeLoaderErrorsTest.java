@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.catchThrowableOfType;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -55,6 +56,23 @@ class KnowledgeLoaderErrorsTest {
 
         assertThat(errors).hasSize(1);
         assertThat(errors.getFirst()).startsWith(a + ":3:").contains("The XML is not well-formed");
+    }
+
+    @Test
+    void load_whenAByteIsNotUtf8_reportsItsLineAndColumnAndHowToFixIt() throws IOException {
+        Path a = dir.resolve("latin1.xml");
+        byte[] head = (kb(classFrame("Drink", null)).replace("</KNOWLEDGEBASE>\n", "")
+                + "  <FRAME><NAME>Cafe</NAME><ISA>Drink</ISA><!-- caf").getBytes(StandardCharsets.US_ASCII);
+        byte[] tail = " au lait --></FRAME>\n</KNOWLEDGEBASE>\n".getBytes(StandardCharsets.US_ASCII);
+        byte[] bytes = new byte[head.length + 1 + tail.length];
+        System.arraycopy(head, 0, bytes, 0, head.length);
+        bytes[head.length] = (byte) 0xE9;
+        System.arraycopy(tail, 0, bytes, head.length + 1, tail.length);
+        Files.write(a, bytes);
+
+        assertThat(errors(List.of(a))).containsExactly(a + ":6:51: The file is not valid UTF-8: byte 0xE9 here does "
+                + "not make a UTF-8 character; save the file as UTF-8, or name its encoding in the XML declaration "
+                + "(<?xml version=\"1.0\" encoding=\"ISO-8859-1\"?>).");
     }
 
     @Test
@@ -122,6 +140,31 @@ class KnowledgeLoaderErrorsTest {
         assertThat(errors.get(1)).isEqualTo(a + ":9:7: Slot 's' of frame 'X' has a VALUE that does not fit its "
                 + "type TYPE_INT: 'one' is not an integer.");
         assertThat(errors.get(2)).startsWith(a + ":12:3: Unknown element 'COLOUR' in FRAME; expected NAME, ISA");
+    }
+
+    @Test
+    void load_whenNumbersAreTooLarge_saysSoInsteadOfCallingThemNotNumbersOrMakingThemInfinite() throws IOException {
+        Path a = file("a.xml", """
+                <FRAME>
+                  <NAME>X</NAME>
+                  <PRIORITY>99999999999</PRIORITY>
+                  <SLOTLIST>
+                    <SLOT><NAME>count</NAME><TYPE>TYPE_INT</TYPE><VALUE>99999999999999999999</VALUE></SLOT>
+                    <SLOT><NAME>range</NAME><TYPE>TYPE_FLOAT</TYPE><VALUE>1e999</VALUE></SLOT>
+                    <SLOT><NAME>limit</NAME><TYPE>TYPE_FLOAT</TYPE><VALUE>-Infinity</VALUE></SLOT>
+                  </SLOTLIST>
+                </FRAME>
+                """);
+
+        assertThat(errors(List.of(a))).containsExactly(
+                a + ":3:3: The PRIORITY of frame 'X' is '99999999999', which is outside the range of a priority "
+                        + "(-2147483648 to 2147483647).",
+                a + ":5:50: Slot 'count' of frame 'X' has a VALUE that does not fit its type TYPE_INT: "
+                        + "'99999999999999999999' is too large for an integer: TYPE_INT holds whole numbers from "
+                        + "-9223372036854775808 to 9223372036854775807.",
+                a + ":6:52: Slot 'range' of frame 'X' has a VALUE that does not fit its type TYPE_FLOAT: '1e999' is "
+                        + "too large for a float: TYPE_FLOAT holds numbers up to about 1.8e308 (write Infinity if "
+                        + "that is what you mean).");
     }
 
     @Test
