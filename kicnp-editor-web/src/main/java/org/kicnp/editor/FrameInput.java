@@ -255,7 +255,7 @@ final class FrameInput {
     private Optional<String> field(JsonNode node, String field, String slot) {
         JsonNode f = node.get(field);
         if (f != null && !f.isNull() && !f.isValueNode()) {
-            String of = slot.isEmpty() ? "Frame '" + frameName + "'" : "Slot '" + slot + "' of frame '" + frameName + "'";
+            String of = owner(slot);
             problems.add(ApiProblem.of(frameName, slot, of + " has " + field + " " + abbreviate(f.toString())
                     + ", which is not a text."));
             return Optional.empty();
@@ -282,12 +282,17 @@ final class FrameInput {
             return List.of();
         }
         if (!f.isArray()) {
-            String of = slot.isEmpty() ? "Frame '" + frameName + "'" : "Slot '" + slot + "' of frame '" + frameName + "'";
+            String of = owner(slot);
             problems.add(ApiProblem.of(frameName, slot, of + " has " + field + " " + abbreviate(f.toString())
                     + ", which is not an array."));
             return List.of();
         }
         return f;
+    }
+
+    /** How a message names what an item belongs to: the frame (slot empty) or one of its slots. */
+    private String owner(String slot) {
+        return slot.isEmpty() ? "Frame '" + frameName + "'" : "Slot '" + slot + "' of frame '" + frameName + "'";
     }
 
     private static String abbreviate(String t) {
