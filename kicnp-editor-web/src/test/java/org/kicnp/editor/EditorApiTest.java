@@ -166,8 +166,7 @@ class EditorApiTest {
     @Test void put_withInvalidSlots_answers422WithEveryProblemAndChangesNothing() {
         http.login(PASSWORD);
         Frame before = kb.require("AskUserName");
-        ObjectNode f = (ObjectNode) json(http.get("/api/frames/AskUserName"));
-        f.put("expectedRevision", f.get("revision").asLong());
+        ObjectNode f = forEditing("AskUserName");
         ArrayNode slots = (ArrayNode) f.get("slots");
         ((ObjectNode) slots.get(0)).put("argument", "Martian");
         ObjectNode bad = slots.addObject();
@@ -195,8 +194,7 @@ class EditorApiTest {
     @Test void put_withSlotsThatAreNotAnArray_answers422AndKeepsEverySlot() {
         http.login(PASSWORD);
         Frame before = kb.require("AskUserName");
-        ObjectNode f = (ObjectNode) json(http.get("/api/frames/AskUserName"));
-        f.put("expectedRevision", f.get("revision").asLong());
+        ObjectNode f = forEditing("AskUserName");
         f.put("slots", "mUser");
 
         HttpResponse<String> r = http.put("/api/frames/AskUserName", f.toString());
@@ -210,8 +208,7 @@ class EditorApiTest {
     @Test void put_withParentOrConditionThatIsNotAText_answers422AndKeepsTheFrame() {
         http.login(PASSWORD);
         Frame before = kb.require("AskUserName");
-        ObjectNode f = (ObjectNode) json(http.get("/api/frames/AskUserName"));
-        f.put("expectedRevision", f.get("revision").asLong());
+        ObjectNode f = forEditing("AskUserName");
         f.putObject("parent").put("name", "Speech");
         ((ObjectNode) f.get("slots").get(0)).putArray("condition").add("== \"tea\"");
 
@@ -471,5 +468,12 @@ class EditorApiTest {
             }
         }
         throw new AssertionError("No '" + name + "' in " + array);
+    }
+
+    /** The frame as the page gets it, with the revision it was read at as the expected one: ready to change and PUT. */
+    private ObjectNode forEditing(String frame) {
+        ObjectNode f = (ObjectNode) json(http.get("/api/frames/" + frame));
+        f.put("expectedRevision", f.get("revision").asLong());
+        return f;
     }
 }
