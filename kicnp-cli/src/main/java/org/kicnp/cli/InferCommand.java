@@ -36,12 +36,17 @@ import picocli.CommandLine.Parameters;
  * contacted), optionally the trace as JSON lines and the answers to questions asked by backward chaining.
  */
 @Command(name = "infer", mixinStandardHelpOptions = true,
+        customSynopsis = {"kicnp infer [-hV] KB... [--assert=FILE_OR_XML...]... [--ask=CLASS]...",
+            "                   [--trace] [--max-firings=N]"},
         description = "Run the inference engine on a knowledge base with asserted instances and print what it did.")
 public final class InferCommand implements Callable<Integer> {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
-    @Parameters(arity = "1..*", paramLabel = "KB", description = "Knowledge base XML files or directories.")
+    // Not required at parse time: "--assert X KB" makes --assert take KB too, and picocli would only say that KB is
+    // missing; call() says what happened instead.
+    @Parameters(arity = "0..*", paramLabel = "KB", description = "Knowledge base XML files or directories (required; give them before --assert, which "
+                    + "takes every value after it).")
     List<Path> knowledge = new ArrayList<>();
 
     @Option(names = "--assert", arity = "1..*", paramLabel = "FILE_OR_XML",
@@ -58,6 +63,12 @@ public final class InferCommand implements Callable<Integer> {
     int maxFirings = EngineOptions.defaults().maxFirings();
 
     @Override public Integer call() {
+        if (knowledge.isEmpty()) {
+            throw new CommandLine.ParameterException(spec.commandLine(), "Missing the knowledge base (KB)"
+                    + (asserts.isEmpty() ? "." : ": --assert takes every value after it up to the next option, "
+                    + String.join(" ", asserts) + " here. Give the knowledge base first: kicnp infer KB --assert "
+                    + "FILE_OR_XML..."));
+        }
         if (maxFirings < 1) {
             throw new CommandLine.ParameterException(spec.commandLine(),
                     "--max-firings must be at least 1, not " + maxFirings + ".");

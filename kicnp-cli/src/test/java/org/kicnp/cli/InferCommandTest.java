@@ -64,6 +64,23 @@ class InferCommandTest {
     }
 
     @Test
+    void infer_withAssertBeforeTheKnowledgeBase_saysThatAssertTookItAndHowToWriteIt() {
+        Result r = run("infer", "--assert", "stimulus.xml", TABLE5);
+
+        assertThat(r.code()).isEqualTo(2);
+        assertThat(r.err()).contains("Missing the knowledge base (KB): --assert takes every value after it")
+                .contains("stimulus.xml " + TABLE5 + " here").contains("kicnp infer KB --assert FILE_OR_XML...");
+    }
+
+    @Test
+    void infer_withoutAnyArgument_isAUsageErrorNamingTheKnowledgeBase() {
+        Result r = run("infer");
+
+        assertThat(r.code()).isEqualTo(2);
+        assertThat(r.err()).contains("Missing the knowledge base (KB).");
+    }
+
+    @Test
     void infer_withMaxFiringsBelowOne_isAUsageErrorNamingTheOption() {
         Result r = run("infer", TABLE5, "--max-firings", "-5");
 
