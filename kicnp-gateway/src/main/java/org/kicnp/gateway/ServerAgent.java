@@ -89,11 +89,17 @@ final class ServerAgent {
         List<Change> changes = new ArrayList<>();
         List<String> names = new ArrayList<>();
         try {
+            List<String> forbidden = new ArrayList<>();
             for (String xml : r.capabilities()) {
                 for (Frame f : FrameText.parse(xml, "register from " + s, kb)) {
+                    kb.frame(f.name()).flatMap(old -> Capabilities.whyNotReplaceable(old, f)).ifPresent(forbidden::add);
                     changes.add(new Change.Put(f));
                     names.add(f.name());
                 }
+            }
+            if (!forbidden.isEmpty()) {
+                return ErrorReply.to(r.id(), ErrorCode.FORBIDDEN, "The capabilities of " + s + " were refused: "
+                        + String.join(" ", forbidden));
             }
             if (!changes.isEmpty()) {
                 kb.apply(changes);

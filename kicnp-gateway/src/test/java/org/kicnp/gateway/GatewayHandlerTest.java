@@ -108,6 +108,50 @@ class GatewayHandlerTest {
     }
 
     @Test
+    void register_overAnInstanceABehaviorFrameOrAClassElsewhere_isForbiddenAndChangesNothing() {
+        kb.add(Frame.classFrame("User").build());
+        kb.add(Frame.classFrame("Action").build());
+        kb.add(Frame.classFrame("Greeting").slot(org.kicnp.core.Slot.builder("mUser", org.kicnp.core.DataType.INSTANCE)
+                .argument("User").required(true).build()).build());
+        kb.add(Frame.instance("taro", "User").build());
+        authenticate();
+        List<String> capabilities = org.kicnp.protocol.FrameText.toXml(List.of(
+                Frame.classFrame("Greeting").build(), Frame.classFrame("taro").build(),
+                Frame.classFrame("User").parent("Action").build(), Frame.classFrame("Fetch").parent("Action").build()));
+
+        ch.writeInbound(Wire.frame(new Message.Register("2", capabilities)));
+
+        assertThat(Wire.written(ch)).singleElement().isInstanceOfSatisfying(Message.ErrorReply.class, e -> {
+            assertThat(e.code()).isEqualTo(ErrorCode.FORBIDDEN);
+            assertThat(e.message()).startsWith("The capabilities of ").contains(
+                    "Frame 'Greeting' is a behavior frame of the knowledge base; a capability may not replace it.",
+                    "Frame 'taro' is an instance of the knowledge base; a capability may not replace it.",
+                    "Frame 'User' is a root class; a capability of that name below 'Action' would move it.")
+                    .doesNotContain("'Fetch'");
+        });
+        assertThat(kb.require("Greeting").slots()).hasSize(1);
+        assertThat(kb.require("taro").isInstance()).isTrue();
+        assertThat(kb.require("User").parent()).isEmpty();
+        assertThat(kb.contains("Fetch")).as("all or none").isFalse();
+        assertThat(kb.contains("agent_scout")).isFalse();
+        assertThat(ch.isOpen()).isTrue();
+    }
+
+    @Test
+    void register_again_replacesItsCapabilityFrame() {
+        kb.add(Frame.classFrame("Action").build());
+        authenticate();
+        ch.writeInbound(Wire.frame(new Message.Register("2", List.of(org.kicnp.protocol.FrameText.toXml(
+                Frame.classFrame("Fetch").parent("Action").build())))));
+        ch.writeInbound(Wire.frame(new Message.Register("3", List.of(org.kicnp.protocol.FrameText.toXml(
+                Frame.classFrame("Fetch").parent("Action").slot(org.kicnp.core.Slot.builder("item",
+                        org.kicnp.core.DataType.STRING).build()).build())))));
+
+        assertThat(Wire.written(ch)).containsExactly(new Message.Ack("2"), new Message.Ack("3"));
+        assertThat(kb.require("Fetch").ownSlot("item")).isPresent();
+    }
+
+    @Test
     void register_usesRobotAgentClass_whenTheKnowledgeBaseHasOne() {
         kb.add(Frame.classFrame("Agent").build());
         kb.add(Frame.classFrame("RobotAgent").parent("Agent").build());
