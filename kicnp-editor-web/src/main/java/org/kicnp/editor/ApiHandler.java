@@ -56,6 +56,7 @@ final class ApiHandler extends Handler.Abstract {
             return false;
         }
         Reply reply;
+        ApiRequest api = null;
         try {
             String[] segments = Arrays.stream(path.substring(5).split("/")).filter(s -> !s.isEmpty())
                     .toArray(String[]::new);
@@ -64,7 +65,7 @@ final class ApiHandler extends Handler.Abstract {
                 checkWriteIsSafe(request);
             }
             boolean editor = login.loggedIn(request);
-            ApiRequest api = new ApiRequest(request, json, segments, editor);
+            api = new ApiRequest(request, json, segments, editor);
             if (write && !isLoginRoute(segments) && !editor) {
                 throw new ApiException(401, login.editingPossible()
                         ? "Log in to edit: the editor is read-only without a login."
@@ -85,6 +86,12 @@ final class ApiHandler extends Handler.Abstract {
         } catch (RuntimeException e) {
             LOG.error("Editor API request {} {} failed", request.getMethod(), path, e);
             reply = error(500, "The editor failed on this request: " + e.getMessage(), List.of());
+        }
+        if (reply.status() >= 400 && hasBody(request) && (api == null || !api.bodyRead())) {
+            // Refused before its body was read (not JSON, another origin, too large, not logged in): the server then
+            // closes the connection rather than read a body it refused, so it says so, and no client sends its next
+            // request on a connection that is closing (seen as "header parser received no bytes").
+            reply = reply.withHeader(HttpHeader.CONNECTION.asString(), "close");
         }
         write(response, callback, reply);
         return true;
@@ -204,6 +211,10 @@ final class ApiHandler extends Handler.Abstract {
         if (origin != null && !sameOrigin(origin, request)) {
             throw new ApiException(403, "Changes from another site (" + origin + ") are refused.");
         }
+    }
+
+    private static boolean hasBody(Request request) {
+        return request.getLength() > 0 || request.getHeaders().contains(HttpHeader.TRANSFER_ENCODING);
     }
 
     static boolean sameOrigin(String origin, Request request) {

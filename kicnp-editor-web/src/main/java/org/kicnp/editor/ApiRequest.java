@@ -23,6 +23,7 @@ final class ApiRequest {
     private final ObjectMapper json;
     private final String[] segments;
     private final boolean editor;
+    private boolean bodyRead;
 
     ApiRequest(Request request, ObjectMapper json, String[] segments, boolean editor) {
         this.request = request;
@@ -70,6 +71,11 @@ final class ApiRequest {
         return sessionToken(request);
     }
 
+    /** Whether the body has been read to its end (a refusal before that leaves it on the connection). */
+    boolean bodyRead() {
+        return bodyRead;
+    }
+
     /** The body as text, at most {@link #MAX_BODY} bytes. */
     String text() {
         long length = request.getLength();
@@ -82,6 +88,7 @@ final class ApiRequest {
             if (bytes.length > MAX_BODY) {
                 throw new ApiException(413, "The request body is larger than the " + MAX_BODY + " bytes the editor accepts.");
             }
+            bodyRead = true;
             return new String(bytes, StandardCharsets.UTF_8);
         } catch (IOException e) {
             throw new ApiException(400, "The request body could not be read: " + e.getMessage());

@@ -424,6 +424,9 @@ class EditorApiTest {
         assertThat(form.statusCode()).isEqualTo(415);
         assertThat(foreign.statusCode()).isEqualTo(403);
         assertThat(kb.contains("X")).isFalse();
+        // refused unread, so the server says it closes the connection: no request follows on it and gets nothing
+        assertThat(form.headers().firstValue("Connection")).contains("close");
+        assertThat(foreign.headers().firstValue("Connection")).contains("close");
     }
 
     @Test void request_namingAForeignHost_isRefused_againstDnsRebinding() throws Exception {
