@@ -32,7 +32,7 @@ public final class ReplayCommand implements Callable<Integer> {
     @Option(names = "--name", defaultValue = "Taro", description = "User A's name. Default: ${DEFAULT-VALUE}.")
     String name;
 
-    @Option(names = "--drink", defaultValue = "Tea, please.", description = "User A's answer to the drink question. Default: ${DEFAULT-VALUE}.")
+    @Option(names = "--drink", defaultValue = "Tea, please.", description = "User A's answer to the drink question (default: \"${DEFAULT-VALUE}\")")
     String drink;
 
     @Option(names = "--no-second-visit", description = "Do not play User A's second visit (greeted by name).")
