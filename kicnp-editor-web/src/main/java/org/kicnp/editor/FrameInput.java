@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
+import java.util.function.BiFunction;
 import org.kicnp.core.ConditionParser;
 import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
@@ -19,14 +20,21 @@ import org.kicnp.core.Value;
  * Reads a frame from the JSON the page sends (the shape of {@link FrameViews.Detail}, read leniently) and checks
  * everything that needs no other frame: names, kinds, data types, values against their types, condition syntax,
  * value and default both given. Every problem is collected, naming frame and slot, so the page can show them all
- * at once; only a frame without any problem is returned.
+ * at once; only a frame without any problem is returned. The one thing read from other frames: a slot sent without a
+ * type takes the type its frame's ancestors declare for that slot, as a slot without TYPE does in the XML (a slot
+ * none of them declares is a string).
  */
 final class FrameInput {
     private final JsonNode json;
     private final String frameName;
+    /** The type that frame {@code parent} (or a frame above it) declares for a slot, if any: (parent, slot). */
+    private final BiFunction<String, String, Optional<DataType>> declaredType;
+    private Optional<String> parent = Optional.empty();
     private final List<ApiProblem> problems = new ArrayList<>();
 
-    private FrameInput(JsonNode json, String frameName) {
+    private FrameInput(JsonNode json, String frameName,
+            BiFunction<String, String, Optional<DataType>> declaredType) {
+        this.declaredType = declaredType;
         this.json = json;
         this.frameName = frameName;
     }
@@ -36,12 +44,13 @@ final class FrameInput {
      *
      * @throws ApiException 422 with every problem found
      */
-    static Frame read(JsonNode json, Optional<String> name) {
+    static Frame read(JsonNode json, Optional<String> name,
+            BiFunction<String, String, Optional<DataType>> declaredType) {
         if (json == null || !json.isObject()) {
             throw new ApiException(400, "The request body must be a JSON object describing a frame.");
         }
         String n = name.orElseGet(() -> text(json, "name").orElse(""));
-        FrameInput in = new FrameInput(json, n);
+        FrameInput in = new FrameInput(json, n, declaredType);
         Frame frame = in.build();
         if (!in.problems.isEmpty()) {
             throw ApiException.invalid(in.problems);
@@ -68,7 +77,8 @@ final class FrameInput {
                     + "'; it must be CLASS or INSTANCE."));
         }
         Frame.Builder b = Frame.builder(frameName, kind);
-        field(json, "parent", "").ifPresent(b::parent);
+        parent = field(json, "parent", "");
+        parent.ifPresent(b::parent);
         field(json, "provenance", "").ifPresent(p -> provenance(p).ifPresent(b::provenance));
         if (json.hasNonNull("priority")) {
             priority(json.get("priority")).ifPresent(b::priority);
@@ -145,7 +155,8 @@ final class FrameInput {
             problems.add(ApiProblem.of(frameName, "", "A slot of frame '" + frameName + "' has no name."));
             return Optional.empty();
         }
-        String typeText = field(s, "type", name).orElse("TYPE_STR");
+        String typeText = field(s, "type", name).orElseGet(() -> parent.flatMap(p -> declaredType.apply(p, name))
+                .map(DataType::xmlName).orElse("TYPE_STR"));
         Optional<DataType> type = DataType.parse(typeText);
         if (type.isEmpty()) {
             problems.add(ApiProblem.of(frameName, name, where + " has the unknown data type '" + typeText + "'."));

@@ -6,6 +6,7 @@ import java.util.Locale;
 import java.util.Optional;
 import org.kicnp.core.Change;
 import org.kicnp.core.ChangeSet;
+import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 
@@ -37,8 +38,13 @@ final class FrameResource {
         return FrameViews.detail(kb, kb.require(name));
     }
 
+    /** The type {@code parent} or a frame above it declares for slot {@code slot}, if one does. */
+    private Optional<DataType> declaredType(String parent, String slot) {
+        return kb.contains(parent) ? kb.slot(parent, slot).map(e -> e.slot().type()) : Optional.empty();
+    }
+
     Saved create(JsonNode body) {
-        Frame f = FrameInput.read(body, Optional.empty());
+        Frame f = FrameInput.read(body, Optional.empty(), this::declaredType);
         ChangeSet cs = kb.apply(List.of(new Change.Add(f)));
         return new Saved(cs.version(), get(f.name()));
     }
@@ -54,7 +60,7 @@ final class FrameResource {
                     + "so that a change made in between is not overwritten.");
         }
         kb.require(name);
-        Frame f = FrameInput.read(body, Optional.of(name));
+        Frame f = FrameInput.read(body, Optional.of(name), this::declaredType);
         ChangeSet cs = kb.apply(List.of(new Change.Replace(f, rev.asLong())));
         return new Saved(cs.version(), get(name));
     }

@@ -12,9 +12,11 @@ import java.util.List;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Relation;
+import org.kicnp.core.Slot;
 import org.kicnp.core.Value;
 
 /** The JSON API against a real Jetty on an ephemeral loopback port. */
@@ -274,6 +276,22 @@ class EditorApiTest {
             assertThat(slot.required()).isTrue();
             assertThat(slot.shared()).isFalse();
         });
+    }
+
+    @Test void create_withASlotSentWithoutAType_takesTheTypeItsClassDeclares() {
+        http.login(PASSWORD);
+        HttpResponse<String> cls = http.post("/api/frames", """
+                {"name":"Counter","kind":"CLASS","slots":[{"name":"count","type":"TYPE_INT"}]}""");
+
+        HttpResponse<String> r = http.post("/api/frames", """
+                {"name":"c1","kind":"INSTANCE","parent":"Counter","slots":[{"name":"count","value":"3"},
+                 {"name":"note","value":"new"}]}""");
+
+        assertThat(cls.statusCode()).as(cls.body()).isEqualTo(201);
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(201);
+        assertThat(kb.value("c1", "count")).contains(Value.of(3));
+        assertThat(kb.require("c1").ownSlot("note").map(Slot::type)).as("declared nowhere above: a string")
+                .contains(DataType.STRING);
     }
 
     @Test void create_withIsACycle_answers422() {
