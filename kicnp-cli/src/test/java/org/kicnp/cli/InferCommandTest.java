@@ -81,6 +81,30 @@ class InferCommandTest {
     }
 
     @Test
+    void infer_whenAScriptConditionFails_warnsOnceNamingFrameAndSlot(@TempDir Path dir) throws Exception {
+        Path kb = Files.writeString(dir.resolve("kb.xml"), """
+                <KNOWLEDGEBASE>
+                  <FRAME><NAME>Cup</NAME><ISINSTANCE>FALSE</ISINSTANCE>
+                    <SLOTLIST><SLOT><NAME>size</NAME><TYPE>TYPE_INT</TYPE></SLOT></SLOTLIST></FRAME>
+                  <FRAME><NAME>Spill</NAME><ISINSTANCE>FALSE</ISINSTANCE>
+                    <SLOTLIST><SLOT><NAME>mCup</NAME><TYPE>TYPE_INSTANCE</TYPE><ARGUMENT>Cup</ARGUMENT>
+                      <REQUIRED>TRUE</REQUIRED><CONDITION>js: s.mCup.nothing.size &gt; 1</CONDITION></SLOT></SLOTLIST>
+                  </FRAME>
+                </KNOWLEDGEBASE>
+                """);
+
+        Result r = run("infer", kb.toString(), "--assert",
+                "<FRAME><NAME>cup1</NAME><ISA>Cup</ISA><ISINSTANCE>TRUE</ISINSTANCE></FRAME>",
+                "<FRAME><NAME>cup2</NAME><ISA>Cup</ISA><ISINSTANCE>TRUE</ISINSTANCE></FRAME>");
+
+        assertThat(r.code()).as(r.err()).isZero();
+        String warning = "The script condition of slot 'mCup' of frame 'Spill' failed, so it counts as false";
+        assertThat(r.err()).contains(warning);
+        assertThat(r.err().split(java.util.regex.Pattern.quote(warning), -1)).as("logged once for both cups").hasSize(2);
+        assertThat(r.out()).doesNotContain("(Spill)");
+    }
+
+    @Test
     void infer_withMaxFiringsBelowOne_isAUsageErrorNamingTheOption() {
         Result r = run("infer", TABLE5, "--max-firings", "-5");
 

@@ -2,6 +2,7 @@ package org.kicnp.inference;
 
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -23,6 +24,11 @@ import org.slf4j.LoggerFactory;
  */
 final class ScriptCalls {
     private static final Logger LOG = LoggerFactory.getLogger(ScriptCalls.class);
+    /**
+     * The script conditions (frame.slot) whose failure has been logged: a broken condition fails for every candidate
+     * binding, so it is logged once and traced every time.
+     */
+    private final Set<String> conditionFailuresLogged = new HashSet<>();
 
     /** What applying effects needs from the forward chainer. */
     interface Target {
@@ -145,6 +151,10 @@ final class ScriptCalls {
                     }
                 } catch (RuntimeException e) {
                     trace(new TraceEvent.ScriptFailed(r.frame(), p.slot(), "", message(e)));
+                    if (conditionFailuresLogged.add(r.frame() + "." + p.slot())) {
+                        LOG.warn("The script condition of slot '{}' of frame '{}' failed, so it counts as false (later "
+                                + "failures of it are in the trace only): {}", p.slot(), r.frame(), message(e));
+                    }
                     return Optional.of("the script condition of slot '" + p.slot() + "' failed: " + message(e));
                 }
             }
