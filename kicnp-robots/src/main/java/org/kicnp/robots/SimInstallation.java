@@ -18,6 +18,8 @@ import java.util.concurrent.TimeUnit;
 public record SimInstallation(Path simDir, Path python) {
     private static final Logger LOG = LoggerFactory.getLogger(SimInstallation.class);
     private static final long SETUP_TIMEOUT_MIN = 10;
+    /** The system property the {@code ./kicnp} launcher sets to the repository it runs from. */
+    public static final String HOME_PROPERTY = "kicnp.home";
 
     /** Finds the repository from {@code repoRoot}, or by walking up from the working directory, and the venv. */
     public static SimInstallation locate(Optional<Path> repoRoot) {
@@ -36,16 +38,32 @@ public record SimInstallation(Path simDir, Path python) {
         return new SimInstallation(simDir, python);
     }
 
-    /** Walks up from the working directory to the first folder holding {@code robots-sim/setup-venv.sh}. */
+    /**
+     * The repository: the one the {@code ./kicnp} launcher says it runs from (system property {@value #HOME_PROPERTY}),
+     * so the verbs work from any working directory, else the first folder holding {@code robots-sim/setup-venv.sh}
+     * from the working directory up.
+     */
     static Path findRoot() {
-        Path start = Path.of("").toAbsolutePath();
+        return findRoot(Optional.ofNullable(System.getProperty(HOME_PROPERTY)), Path.of("").toAbsolutePath());
+    }
+
+    static Path findRoot(Optional<String> home, Path start) {
+        Optional<Path> launcherHome = home.filter(h -> !h.isBlank()).map(h -> Path.of(h).toAbsolutePath())
+                .filter(SimInstallation::holdsSimulator);
+        if (launcherHome.isPresent()) {
+            return launcherHome.get();
+        }
         for (Path p = start; p != null; p = p.getParent()) {
-            if (Files.isRegularFile(p.resolve("robots-sim").resolve("setup-venv.sh"))) {
+            if (holdsSimulator(p)) {
                 return p;
             }
         }
         throw new SimulatorException("No robots-sim/ folder in '" + start + "' or above it: "
                 + "run from inside the K-ICNP repository or give the repository root.");
+    }
+
+    private static boolean holdsSimulator(Path root) {
+        return Files.isRegularFile(root.resolve("robots-sim").resolve("setup-venv.sh"));
     }
 
     private static void setUpVenv(Path simDir) {

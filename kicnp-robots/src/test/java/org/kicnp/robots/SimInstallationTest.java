@@ -41,6 +41,19 @@ class SimInstallationTest {
     }
 
     @Test
+    void findRoot_fromOutsideTheRepository_usesTheRepositoryTheLauncherNames(@TempDir Path elsewhere)
+            throws IOException {
+        fakeSim("exit 0\n");
+
+        assertThat(SimInstallation.findRoot(Optional.of(repo.toString()), elsewhere)).isEqualTo(repo.toAbsolutePath());
+        assertThatThrownBy(() -> SimInstallation.findRoot(Optional.empty(), elsewhere))
+                .isInstanceOf(SimulatorException.class).hasMessageContaining("No robots-sim/ folder in '" + elsewhere);
+        // a launcher home without the simulator does not hide the one found from the working directory
+        assertThat(SimInstallation.findRoot(Optional.of(elsewhere.toString()), repo.resolve("robots-sim")))
+                .isEqualTo(repo);
+    }
+
+    @Test
     void locate_whenTheSetupScriptFails_reportsItsExitCodeAndOutput() throws IOException {
         fakeSim("echo 'pip: no network'; exit 3\n");
 

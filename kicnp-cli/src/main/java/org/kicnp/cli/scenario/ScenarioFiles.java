@@ -6,24 +6,44 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Optional;
 import java.util.stream.Stream;
+import org.kicnp.robots.SimInstallation;
 
 /** Finding the scenario in the repository and copying its XML files into a working knowledge-base directory. */
 public final class ScenarioFiles {
     private ScenarioFiles() {
     }
 
-    /** The repository holding {@code scenarios/table5}: the working directory or one above it. */
+    /**
+     * The repository holding {@code scenarios/table5}: the one the {@code ./kicnp} launcher runs from (system property
+     * {@value SimInstallation#HOME_PROPERTY}), so the verbs work from any working directory, else the working
+     * directory or one above it.
+     */
     public static Optional<Path> repoRoot() {
-        Path p = Path.of("").toAbsolutePath();
-        while (p != null && !Files.isDirectory(p.resolve("scenarios/table5"))) {
+        return repoRoot(Optional.ofNullable(System.getProperty(SimInstallation.HOME_PROPERTY)),
+                Path.of("").toAbsolutePath());
+    }
+
+    static Optional<Path> repoRoot(Optional<String> home, Path start) {
+        Optional<Path> launcherHome = home.filter(h -> !h.isBlank()).map(h -> Path.of(h).toAbsolutePath())
+                .filter(ScenarioFiles::holdsTable5);
+        if (launcherHome.isPresent()) {
+            return launcherHome;
+        }
+        Path p = start;
+        while (p != null && !holdsTable5(p)) {
             p = p.getParent();
         }
         return Optional.ofNullable(p);
     }
 
+    private static boolean holdsTable5(Path root) {
+        return Files.isDirectory(root.resolve("scenarios/table5"));
+    }
+
     public static Path table5() {
         return repoRoot().map(r -> r.resolve("scenarios/table5")).orElseThrow(() -> new IllegalStateException(
-                "Cannot find scenarios/table5 in the working directory or above it."));
+                "Cannot find scenarios/table5 in the working directory or above it (run ./kicnp from the K-ICNP "
+                        + "repository, or give the knowledge-base directory)."));
     }
 
     /** Copies the {@code *.xml} files of a scenario directory into {@code to} (created); returns {@code to}. */
