@@ -289,6 +289,7 @@ final class Validator {
         }
         if (!(own.condition() instanceof Condition.Any)) {
             checkPaths(f, own);
+            problems.addAll(ConditionTypes.problems(this::view, f, own));
         }
     }
 

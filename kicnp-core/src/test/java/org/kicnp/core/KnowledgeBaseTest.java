@@ -138,6 +138,44 @@ class KnowledgeBaseTest {
     }
 
     @Test
+    void add_whenAConditionCanNeverHoldBecauseOfTypes_rejectsNamingFrameAndSlot() {
+        KnowledgeBase kb = figure1();
+        Frame bad = Frame.classFrame("Odd").parent("Speech")
+                .slot(Slot.builder("count", DataType.INTEGER).condition(ConditionParser.parse("== \"3\"")).build())
+                .slot(Slot.builder("size", DataType.FLOAT).condition(ConditionParser.parse("between 5 and 1")).build())
+                .slot(Slot.builder("word", DataType.STRING).condition(ConditionParser.parse(".length > 3")).build())
+                .slot(Slot.builder("mUser", DataType.INSTANCE).argument("User")
+                        .condition(ConditionParser.parse(".name == 7")).build())
+                .build();
+
+        assertThatThrownBy(() -> kb.add(bad)).isInstanceOfSatisfying(BatchRejectedException.class, e ->
+                assertThat(e.problems()).extracting(Problem::message).containsExactlyInAnyOrder(
+                        "Slot 'count' of frame 'Odd' has the condition '== \"3\"', which compares a TYPE_INT value "
+                                + "with \"3\": they never compare, so it can never hold.",
+                        "Slot 'size' of frame 'Odd' has the condition 'between 5 and 1', whose low end is above its "
+                                + "high end, so it can never hold.",
+                        "Slot 'word' of frame 'Odd' has the condition '.length > 3' on '.length', but the slot holds "
+                                + "TYPE_STR, not an instance: the path leads nowhere.",
+                        "Slot 'mUser' of frame 'Odd' has the condition '.name == 7', which compares a TYPE_STR value "
+                                + "with 7: they never compare, so it can never hold."));
+        assertThat(kb.contains("Odd")).isFalse();
+    }
+
+    @Test
+    void add_whenConditionsFitTheirTypes_acceptsThem() {
+        KnowledgeBase kb = figure1();
+
+        kb.add(Frame.classFrame("Fine").parent("Speech")
+                .slot(Slot.builder("count", DataType.INTEGER).condition(ConditionParser.parse(">= 2.5")).build())
+                .slot(Slot.builder("size", DataType.FLOAT).condition(ConditionParser.parse("between 1 and 5")).build())
+                .slot(Slot.builder("mUser", DataType.INSTANCE).argument("User")
+                        .condition(ConditionParser.parse(".name in (\"taro\", \"hanako\")")).build())
+                .build());
+
+        assertThat(kb.contains("Fine")).isTrue();
+    }
+
+    @Test
     void add_whenConditionPathNamesUnknownSlot_rejects() {
         KnowledgeBase kb = figure1();
         Slot s = Slot.builder("mUser", DataType.INSTANCE).argument("User")
