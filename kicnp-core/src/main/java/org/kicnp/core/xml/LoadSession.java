@@ -128,7 +128,13 @@ final class LoadSession {
             e.present(FrameTag.DESCENDANTS).ifPresent(d -> descendants.put(name.get(), d));
         }
         if (e.selfTyped()) {
-            mapper.map(e).ifPresent(f -> add(f, e));
+            Optional<Frame> mapped = mapper.map(e);
+            mapped.ifPresent(f -> add(f, e));
+            if (mapped.isEmpty()) {
+                // Its error is reported; the slot types it declares still serve the frames below it, which would
+                // otherwise each report "no frame above it declares" a slot that it does declare.
+                name.ifPresent(n -> unmapped.put(n, e));
+            }
         } else {
             name.ifPresent(n -> unmapped.put(n, e));
             pending.add(e);

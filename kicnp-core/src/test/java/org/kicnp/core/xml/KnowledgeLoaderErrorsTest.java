@@ -143,6 +143,26 @@ class KnowledgeLoaderErrorsTest {
     }
 
     @Test
+    void load_whenAClassHasAnError_itsInstancesStillTakeTheSlotTypesItDeclares() throws IOException {
+        Path a = file("a.xml", """
+                <KNOWLEDGEBASE>
+                  <FRAME>
+                    <NAME>Lamp</NAME>
+                    <PRIORITY>high</PRIORITY>
+                    <SLOTLIST><SLOT><NAME>watts</NAME><TYPE>TYPE_INT</TYPE></SLOT></SLOTLIST>
+                  </FRAME>
+                  <FRAME>
+                    <NAME>lamp1</NAME><ISA>Lamp</ISA><ISINSTANCE>TRUE</ISINSTANCE>
+                    <SLOTLIST><SLOT><NAME>watts</NAME><VALUE>40</VALUE></SLOT></SLOTLIST>
+                  </FRAME>
+                </KNOWLEDGEBASE>
+                """);
+
+        // only the class's own error: not also "no frame above it declares a slot 'watts'" for the instance
+        assertThat(errors(List.of(a))).singleElement().asString().startsWith(a + ":4:5: The PRIORITY of frame 'Lamp'");
+    }
+
+    @Test
     void load_whenNumbersAreTooLarge_saysSoInsteadOfCallingThemNotNumbersOrMakingThemInfinite() throws IOException {
         Path a = file("a.xml", """
                 <FRAME>
