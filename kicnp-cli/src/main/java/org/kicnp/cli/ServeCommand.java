@@ -25,7 +25,7 @@ public final class ServeCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "KB_DIR", description = "The knowledge-base directory (its *.xml files).")
     Path kbDir;
 
-    @Option(names = "--gateway-port", defaultValue = "7777", description = "Port of the agents' gateway (loopback). Default: ${DEFAULT-VALUE}.")
+    @Option(names = "--gateway-port", defaultValue = "" + PlatformConfig.DEFAULT_GATEWAY_PORT, description = "Port of the agents' gateway (loopback). Default: ${DEFAULT-VALUE}.")
     int gatewayPort;
 
     @Option(names = "--http-port", defaultValue = "8080", description = "Port of the knowledge editor (loopback). Default: ${DEFAULT-VALUE}.")

@@ -8,7 +8,7 @@ import java.util.Optional;
 import org.kicnp.protocol.Framing;
 
 /**
- * How a gateway listens and what it bounds. Defaults: loopback only, port 7407, 1 MiB frames, 30 s heartbeat
+ * How a gateway listens and what it bounds. Defaults: loopback only, port {@value #DEFAULT_PORT}, 1 MiB frames, 30 s heartbeat
  * timeout, 64/256 KiB write-buffer water marks, a slow consumer dropped after 1,000 consecutive shed messages,
  * no TLS, one I/O thread per core, the best socket transport available here ({@link Transport#best()}). Immutable;
  * the {@code with…} methods return changed copies.
@@ -47,9 +47,12 @@ public record GatewayConfig(String host, int port, String serverName, int maxFra
         }
     }
 
-    /** The defaults: {@code 127.0.0.1:7407}. */
+    /** The port agents connect to unless configured otherwise; {@code kicnp serve} listens there too. */
+    public static final int DEFAULT_PORT = 7777;
+
+    /** The defaults: {@code 127.0.0.1:}{@value #DEFAULT_PORT}. */
     public static GatewayConfig defaults() {
-        return new GatewayConfig("127.0.0.1", 7407, "kicnp", Framing.DEFAULT_MAX_FRAME_BYTES, Duration.ofSeconds(30),
+        return new GatewayConfig("127.0.0.1", DEFAULT_PORT, "kicnp", Framing.DEFAULT_MAX_FRAME_BYTES, Duration.ofSeconds(30),
                 64 * 1024, 256 * 1024, 1_000, Optional.empty(), Runtime.getRuntime().availableProcessors(),
                 Transport.best());
     }

@@ -48,7 +48,7 @@ public final class TeaRobot extends AgentBase {
     /** Runs Scout against a gateway on this machine until the process is stopped. */
     public static void main(String[] args) throws InterruptedException {
         String token = System.getenv().getOrDefault("KICNP_TOKEN", "");
-        try (TeaRobot scout = new TeaRobot(AgentOptions.of("127.0.0.1", 7407, "scout", AgentKind.ROBOT, token))) {
+        try (TeaRobot scout = new TeaRobot(AgentOptions.of("127.0.0.1", 7777, "scout", AgentKind.ROBOT, token))) {
             scout.start(); // connects, registers, and reconnects by itself whenever the gateway restarts
             Thread.currentThread().join();
         }

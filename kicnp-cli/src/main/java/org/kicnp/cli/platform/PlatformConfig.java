@@ -4,6 +4,7 @@ import static java.util.Objects.requireNonNull;
 
 import java.nio.file.Path;
 import java.util.Optional;
+import org.kicnp.gateway.GatewayConfig;
 import org.kicnp.gateway.Transport;
 
 /**
@@ -15,7 +16,7 @@ import org.kicnp.gateway.Transport;
 public record PlatformConfig(Path kbDir, int gatewayPort, Optional<Integer> httpPort, Optional<Path> agentsFile,
                              Optional<Path> editorPasswordFile, Optional<Path> eventLog,
                              Transport gatewayTransport) {
-    public static final int DEFAULT_GATEWAY_PORT = 7777;
+    public static final int DEFAULT_GATEWAY_PORT = GatewayConfig.DEFAULT_PORT;
     public static final int DEFAULT_HTTP_PORT = 8080;
 
     public PlatformConfig {
