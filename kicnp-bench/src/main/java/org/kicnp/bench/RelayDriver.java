@@ -118,15 +118,13 @@ final class RelayDriver implements AutoCloseable {
             return null;
         });
         Thread.sleep(warmup.toMillis());
-        long clientCpu0 = clientCpuNanos();
-        long hubCpu0 = hubCpu.applyAsLong(clientCpu0);
+        CpuMark cpu0 = mark(hubCpu);
         long before = delivered();
         long t0 = System.nanoTime();
         Thread.sleep(measure.toMillis());
         long after = delivered();
         long t1 = System.nanoTime();
-        long clientCpu1 = clientCpuNanos();
-        long hubCpu1 = hubCpu.applyAsLong(clientCpu1);
+        CpuMark cpu1 = mark(hubCpu);
         onLoops(loop -> {
             loop.stopClosed();
             return null;
@@ -137,8 +135,8 @@ final class RelayDriver implements AutoCloseable {
             Thread.sleep(20);
         }
         long n = Math.max(1, after - before);
-        return new Throughput((after - before) * 1e9 / (t1 - t0), (hubCpu1 - hubCpu0) / 1e3 / n,
-                (clientCpu1 - clientCpu0) / 1e3 / n);
+        return new Throughput((after - before) * 1e9 / (t1 - t0), (cpu1.hub() - cpu0.hub()) / 1e3 / n,
+                (cpu1.clients() - cpu0.clients()) / 1e3 / n);
     }
 
     /**
@@ -146,6 +144,15 @@ final class RelayDriver implements AutoCloseable {
      * delivered message (on a shared machine the CPU cost is steadier than the rate, which depends on the share).
      */
     record Throughput(double msgsPerSecond, double hubCpuMicrosPerMsg, double clientCpuMicrosPerMsg) {
+    }
+
+    /** CPU time so far of the client event loops and of the hub (in nanoseconds), and the machine's idle time. */
+    private record CpuMark(long clients, long hub, ProcessCpu.MachineIdle machine) {
+    }
+
+    private CpuMark mark(java.util.function.LongUnaryOperator hubCpu) throws InterruptedException {
+        long clients = clientCpuNanos();
+        return new CpuMark(clients, hubCpu.applyAsLong(clients), ProcessCpu.MachineIdle.now());
     }
 
     /** CPU time of the client event loops so far, in nanoseconds. */
@@ -174,21 +181,13 @@ final class RelayDriver implements AutoCloseable {
                 loop.executor.execute(loop.tickTask);
             }
         }, start, recordUntil);
-        long clientCpu0;
-        long hubCpu0;
-        ProcessCpu.MachineIdle machine0;
-        long clientCpu1;
-        long hubCpu1;
-        ProcessCpu.MachineIdle machine1;
+        CpuMark cpu0;
+        CpuMark cpu1;
         try {
             TimeUnit.NANOSECONDS.sleep(recordFrom - RelayLoop.now());
-            clientCpu0 = clientCpuNanos();
-            hubCpu0 = hubCpu.applyAsLong(clientCpu0);
-            machine0 = ProcessCpu.MachineIdle.now();
+            cpu0 = mark(hubCpu);
             ticker.awaitEnd(); // every tick up to the window's end has been handed to the loops
-            clientCpu1 = clientCpuNanos();
-            hubCpu1 = hubCpu.applyAsLong(clientCpu1);
-            machine1 = ProcessCpu.MachineIdle.now();
+            cpu1 = mark(hubCpu);
         } finally {
             ticker.stop();
         }
@@ -209,8 +208,8 @@ final class RelayDriver implements AutoCloseable {
             loop.stopOpen();
             return null;
         });
-        return LatencyFigures.of(rate, all, expected, measure, hubCpu1 - hubCpu0, clientCpu1 - clientCpu0,
-                machine1.busyPercentSince(machine0));
+        return LatencyFigures.of(rate, all, expected, measure, cpu1.hub() - cpu0.hub(),
+                cpu1.clients() - cpu0.clients(), cpu1.machine().busyPercentSince(cpu0.machine()));
     }
 
     private long delivered() throws InterruptedException {

@@ -76,18 +76,19 @@ public final class InferCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         try (ScriptRuntime runtime = ScriptRuntime.create(ScriptConfig.defaults())) {
-            if (KnowledgeLoader.expand(knowledge).isEmpty()) {
+            List<Path> files = KnowledgeLoader.expand(knowledge);
+            if (files.isEmpty()) {
                 // As validate says: an empty knowledge base would infer nothing and look like a quiet success.
                 err.println("infer: no knowledge files (*.xml) found in " + knowledge + ".");
                 err.flush();
                 return 1;
             }
             KnowledgeBase kb = KnowledgeBase.create();
-            List<SourcedFrame> declared = KnowledgeLoader.parse(knowledge, kb);
+            List<SourcedFrame> declared = KnowledgeLoader.parse(files, kb);
             if (declared.stream().noneMatch(s -> s.frame().name().equals(InferenceEngine.FEEDBACK_CLASS))) {
                 kb.add(InferenceEngine.feedbackClass());
             }
-            KnowledgeLoader.load(kb, knowledge);
+            KnowledgeLoader.load(kb, files);
             List<Action> sent = new ArrayList<>();
             Map<String, String> created = new LinkedHashMap<>();
             InferenceEngine engine = InferenceEngine.builder(kb).options(EngineOptions.defaults().withMaxFirings(maxFirings))

@@ -3,6 +3,7 @@ package org.kicnp.core;
 import static java.util.Objects.requireNonNull;
 
 import java.util.List;
+import java.util.Optional;
 import java.util.regex.PatternSyntaxException;
 
 /**
@@ -20,6 +21,33 @@ public sealed interface Condition
 
     /** Canonical text of the condition; {@code ConditionParser.parse(c.text())} gives {@code c} back. */
     String text();
+
+    /** What the tested value is compared with: the constants and paths (none for COND_ANY, matches and scripts). */
+    default List<Operand> operands() {
+        return switch (this) {
+            case Compare c -> List.of(c.right());
+            case Between b -> List.of(b.low(), b.high());
+            case OneOf o -> o.options();
+            case Any a -> List.of();
+            case Matches m -> List.of();
+            case Script s -> List.of();
+        };
+    }
+
+    /**
+     * The path the condition tests from the slot's value ({@code .status == "ended"}: [status]; an empty list: the
+     * value itself), or empty for COND_ANY and scripts, which test no path.
+     */
+    default Optional<List<String>> testedPath() {
+        return switch (this) {
+            case Compare c -> Optional.of(c.left());
+            case Between b -> Optional.of(b.left());
+            case OneOf o -> Optional.of(o.left());
+            case Matches m -> Optional.of(m.left());
+            case Any a -> Optional.empty();
+            case Script s -> Optional.empty();
+        };
+    }
 
     /** Comparison operators. */
     enum Op {

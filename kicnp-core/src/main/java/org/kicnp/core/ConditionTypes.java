@@ -19,29 +19,10 @@ final class ConditionTypes {
 
     static List<Problem> problems(Function<String, Frame> lookup, Frame f, Slot own) {
         Condition c = own.condition();
-        List<String> left;
-        List<Operand> operands;
-        switch (c) {
-            case Condition.Compare x -> {
-                left = x.left();
-                operands = List.of(x.right());
-            }
-            case Condition.Between b -> {
-                left = b.left();
-                operands = List.of(b.low(), b.high());
-            }
-            case Condition.OneOf o -> {
-                left = o.left();
-                operands = o.options();
-            }
-            case Condition.Matches m -> {
-                left = m.left();
-                operands = List.of();
-            }
-            default -> {
-                return List.of();
-            }
+        if (c.testedPath().isEmpty()) {
+            return List.of();
         }
+        List<String> left = c.testedPath().get();
         String where = "Slot '" + own.name() + "' of frame '" + f.name() + "'";
         List<Problem> out = new ArrayList<>();
         if (!left.isEmpty() && own.type() != DataType.INSTANCE && own.type() != DataType.FRAME) {
@@ -54,11 +35,11 @@ final class ConditionTypes {
         if (compared.isEmpty()) {
             return out;
         }
-        for (Operand o : operands) {
+        for (Operand o : c.operands()) {
             if (o instanceof Operand.Constant k && !comparable(compared.get(), k.value())) {
-                out.add(Problem.of(f.name(), own.name(), where + " has the condition '" + c.text() + "', which compares a "
-                        + compared.get().xmlName() + " value with " + k.text() + ": they never compare, so it can never "
-                        + "hold."));
+                out.add(Problem.of(f.name(), own.name(), where + " has the condition '" + c.text()
+                        + "', which compares a " + compared.get().xmlName() + " value with " + k.text()
+                        + ": they never compare, so it can never hold."));
             }
         }
         if (c instanceof Condition.Between b && b.low() instanceof Operand.Constant lo

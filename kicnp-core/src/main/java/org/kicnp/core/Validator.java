@@ -294,13 +294,7 @@ final class Validator {
     }
 
     private void checkPaths(Frame f, Slot own) {
-        List<Operand> operands = switch (own.condition()) {
-            case Condition.Compare c -> List.of(c.right());
-            case Condition.Between b -> List.of(b.low(), b.high());
-            case Condition.OneOf o -> o.options();
-            default -> List.of();
-        };
-        for (Operand o : operands) {
+        for (Operand o : own.condition().operands()) {
             if (o instanceof Operand.Path p && Inheritance.slot(this::view, f, p.head()).isEmpty()) {
                 problems.add(Problem.of(f.name(), own.name(), where(own.name(), f.name()) + " has a condition on '"
                         + p.text() + "', but frame '" + f.name() + "' has no slot '" + p.head() + "'."));

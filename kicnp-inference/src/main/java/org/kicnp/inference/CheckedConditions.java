@@ -4,7 +4,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import org.kicnp.core.Condition;
 import org.kicnp.core.Value;
 
 /**
@@ -30,7 +29,7 @@ final class CheckedConditions {
             if (fact == null) {
                 continue;
             }
-            List<String> path = left(p.condition());
+            List<String> path = p.condition().testedPath().orElse(null);
             String value = fact;
             if (path != null) {
                 int at = positionOf(required, p);
@@ -50,17 +49,5 @@ final class CheckedConditions {
             }
         }
         return -1;
-    }
-
-    /** The path a condition tests from the candidate, for the conditions that have one; null for the others. */
-    private static List<String> left(Condition c) {
-        return switch (c) {
-            case Condition.Compare x -> x.left();
-            case Condition.Between x -> x.left();
-            case Condition.OneOf x -> x.left();
-            case Condition.Matches x -> x.left();
-            case Condition.Any x -> null;
-            case Condition.Script x -> null;
-        };
     }
 }

@@ -64,7 +64,7 @@ final class RuleCompiler {
     private static SlotPattern pattern(int index, Slot s, Set<String> instanceSlots) {
         Condition c = s.condition();
         Set<String> joins = new HashSet<>();
-        for (Operand o : operands(c)) {
+        for (Operand o : c.operands()) {
             if (o instanceof Operand.Path p && instanceSlots.contains(p.head()) && !p.head().equals(s.name())) {
                 joins.add(p.head());
             }
@@ -77,16 +77,5 @@ final class RuleCompiler {
         boolean alpha = joins.isEmpty() && !(c instanceof Condition.Script);
         return new SlotPattern(index, s.name(), s.argument().orElseThrow(), c, c.text(), s.required(), s.shared(),
                 s.unique(), alpha, joins, eq);
-    }
-
-    static List<Operand> operands(Condition c) {
-        return switch (c) {
-            case Condition.Compare cmp -> List.of(cmp.right());
-            case Condition.Between b -> List.of(b.low(), b.high());
-            case Condition.OneOf o -> o.options();
-            case Condition.Any a -> List.of();
-            case Condition.Matches m -> List.of();
-            case Condition.Script s -> List.of();
-        };
     }
 }

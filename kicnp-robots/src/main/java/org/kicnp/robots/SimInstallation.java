@@ -18,8 +18,6 @@ import java.util.concurrent.TimeUnit;
 public record SimInstallation(Path simDir, Path python) {
     private static final Logger LOG = LoggerFactory.getLogger(SimInstallation.class);
     private static final long SETUP_TIMEOUT_MIN = 10;
-    /** The system property the {@code ./kicnp} launcher sets to the repository it runs from. */
-    public static final String HOME_PROPERTY = "kicnp.home";
 
     /** Finds the repository from {@code repoRoot}, or by walking up from the working directory, and the venv. */
     public static SimInstallation locate(Optional<Path> repoRoot) {
@@ -38,27 +36,18 @@ public record SimInstallation(Path simDir, Path python) {
         return new SimInstallation(simDir, python);
     }
 
-    /**
-     * The repository: the one the {@code ./kicnp} launcher says it runs from (system property {@value #HOME_PROPERTY}),
-     * so the verbs work from any working directory, else the first folder holding {@code robots-sim/setup-venv.sh}
-     * from the working directory up.
-     */
+    /** The repository holding {@code robots-sim/setup-venv.sh} ({@link RepositoryRoot}). */
     static Path findRoot() {
-        return findRoot(Optional.ofNullable(System.getProperty(HOME_PROPERTY)), Path.of("").toAbsolutePath());
+        return RepositoryRoot.find(SimInstallation::holdsSimulator)
+                .orElseThrow(() -> notFound(Path.of("").toAbsolutePath()));
     }
 
     static Path findRoot(Optional<String> home, Path start) {
-        Optional<Path> launcherHome = home.filter(h -> !h.isBlank()).map(h -> Path.of(h).toAbsolutePath())
-                .filter(SimInstallation::holdsSimulator);
-        if (launcherHome.isPresent()) {
-            return launcherHome.get();
-        }
-        for (Path p = start; p != null; p = p.getParent()) {
-            if (holdsSimulator(p)) {
-                return p;
-            }
-        }
-        throw new SimulatorException("No robots-sim/ folder in '" + start + "' or above it: "
+        return RepositoryRoot.find(home, start, SimInstallation::holdsSimulator).orElseThrow(() -> notFound(start));
+    }
+
+    private static SimulatorException notFound(Path start) {
+        return new SimulatorException("No robots-sim/ folder in '" + start + "' or above it: "
                 + "run from inside the K-ICNP repository or give the repository root.");
     }
 

@@ -6,34 +6,20 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Optional;
 import java.util.stream.Stream;
-import org.kicnp.robots.SimInstallation;
+import org.kicnp.robots.RepositoryRoot;
 
 /** Finding the scenario in the repository and copying its XML files into a working knowledge-base directory. */
 public final class ScenarioFiles {
     private ScenarioFiles() {
     }
 
-    /**
-     * The repository holding {@code scenarios/table5}: the one the {@code ./kicnp} launcher runs from (system property
-     * {@value SimInstallation#HOME_PROPERTY}), so the verbs work from any working directory, else the working
-     * directory or one above it.
-     */
+    /** The repository holding {@code scenarios/table5} ({@link RepositoryRoot}). */
     public static Optional<Path> repoRoot() {
-        return repoRoot(Optional.ofNullable(System.getProperty(SimInstallation.HOME_PROPERTY)),
-                Path.of("").toAbsolutePath());
+        return RepositoryRoot.find(ScenarioFiles::holdsTable5);
     }
 
     static Optional<Path> repoRoot(Optional<String> home, Path start) {
-        Optional<Path> launcherHome = home.filter(h -> !h.isBlank()).map(h -> Path.of(h).toAbsolutePath())
-                .filter(ScenarioFiles::holdsTable5);
-        if (launcherHome.isPresent()) {
-            return launcherHome;
-        }
-        Path p = start;
-        while (p != null && !holdsTable5(p)) {
-            p = p.getParent();
-        }
-        return Optional.ofNullable(p);
+        return RepositoryRoot.find(home, start, ScenarioFiles::holdsTable5);
     }
 
     private static boolean holdsTable5(Path root) {
