@@ -92,7 +92,8 @@ final class ServerAgent {
             List<String> forbidden = new ArrayList<>();
             for (String xml : r.capabilities()) {
                 for (Frame f : FrameText.parse(xml, "register from " + s, kb)) {
-                    kb.frame(f.name()).flatMap(old -> Capabilities.whyNotReplaceable(old, f)).ifPresent(forbidden::add);
+                    kb.frame(f.name()).flatMap(old -> Capabilities.whyNotReplaceable(old, kb.slots(old.name()), f))
+                            .ifPresent(forbidden::add);
                     changes.add(new Change.Put(f));
                     names.add(f.name());
                 }

@@ -138,6 +138,21 @@ class GatewayHandlerTest {
     }
 
     @Test
+    void register_overABehaviorFrameThatInheritsItsRequiredInstanceSlot_isForbidden() {
+        kb.add(Frame.classFrame("User").build());
+        kb.add(Frame.classFrame("Reply").slot(org.kicnp.core.Slot.builder("mUser", org.kicnp.core.DataType.INSTANCE)
+                .argument("User").required(true).build()).build());
+        kb.add(Frame.classFrame("LoudReply").parent("Reply").build());
+        authenticate();
+
+        ch.writeInbound(Wire.frame(new Message.Register("2", List.of(org.kicnp.protocol.FrameText.toXml(
+                Frame.classFrame("LoudReply").parent("Reply").build())))));
+
+        assertError(ErrorCode.FORBIDDEN,
+                "Frame 'LoudReply' is a behavior frame of the knowledge base; a capability may not replace it.");
+    }
+
+    @Test
     void register_again_replacesItsCapabilityFrame() {
         kb.add(Frame.classFrame("Action").build());
         authenticate();
