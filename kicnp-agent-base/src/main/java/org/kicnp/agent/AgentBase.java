@@ -158,6 +158,14 @@ public abstract class AgentBase implements AutoCloseable {
         return registered;
     }
 
+    /**
+     * Why the agent stopped for good — refused by the server, or replaced by a newer connection under its name —
+     * or empty while it runs or is reconnecting.
+     */
+    public final Optional<AgentException> stopped() {
+        return Optional.ofNullable(fatal);
+    }
+
     @Override public void close() {
         closed = true;
         Connection c = connection;
@@ -198,6 +206,14 @@ public abstract class AgentBase implements AutoCloseable {
     /** Adds or replaces an instance frame (stored as a RUNTIME frame). */
     public final void assertFrame(Frame instance) {
         request(new Message.Assert(nextId(), FrameText.toXml(instance)));
+    }
+
+    /** Adds or replaces instance frames (stored as RUNTIME frames) in one batch: the server takes all or none. */
+    public final void assertFrames(List<Frame> instances) {
+        if (instances.isEmpty()) {
+            throw new IllegalArgumentException("Nothing to assert: no frames given.");
+        }
+        request(new Message.Assert(nextId(), FrameText.document(instances)));
     }
 
     /** Removes an instance frame. */
@@ -306,7 +322,9 @@ public abstract class AgentBase implements AutoCloseable {
         c.send(new Message.Hello("hello", name(), kind(), options.token()));
         Message auth = awaitDirect(c, "hello");
         if (auth instanceof Message.AuthResult r && !r.accepted()) {
-            throw new AuthenticationException("Server refused agent '" + name() + "': " + r.reason().orElse("no reason") + ".");
+            String reason = r.reason().orElse("no reason given");
+            throw new AuthenticationException("Server refused agent '" + name() + "': " + reason
+                    + (reason.endsWith(".") ? "" : "."));
         }
         if (!(auth instanceof Message.AuthResult)) {
             throw new AgentException("Expected auth_result, got " + auth + ".");

@@ -45,7 +45,7 @@ final class ApiHandler extends Handler.Abstract {
         this.platform = platform;
         this.kb = kb;
         this.json = json;
-        this.frames = new FrameResource(kb);
+        this.frames = new FrameResource(kb, features.inference());
         this.login = new LoginResource(sessions, new LoginThrottle(java.time.Clock.systemUTC()));
         this.features = features;
     }
@@ -149,7 +149,10 @@ final class ApiHandler extends Handler.Abstract {
             return switch (m) {
                 case "GET" -> ok(frames.get(name));
                 case "PUT" -> ok(frames.replace(name, r.body()));
-                case "DELETE" -> ok(Map.of("version", frames.delete(name), "deleted", name));
+                case "DELETE" -> {
+                    FrameResource.Deleted d = frames.delete(name);
+                    yield ok(Map.of("version", d.version(), "deleted", name, "removed", d.removed()));
+                }
                 default -> notAllowed(m);
             };
         }

@@ -1,6 +1,7 @@
 package org.kicnp.editor;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import java.util.Set;
 import org.kicnp.core.KnowledgeBase;
 
 /**
@@ -47,6 +48,12 @@ record Features(Xml xml, Scripts scripts, Inference inference) {
 
         Object run();
 
+        /**
+         * Destroys an instance through the engine: it and every instance derived from it, in one batch (truth
+         * maintenance); returns the names removed.
+         */
+        Set<String> destroy(String instance);
+
         @Override void close();
     }
 
@@ -76,6 +83,10 @@ record Features(Xml xml, Scripts scripts, Inference inference) {
             }
 
             @Override public Object run() {
+                throw unavailable();
+            }
+
+            @Override public Set<String> destroy(String instance) {
                 throw unavailable();
             }
 

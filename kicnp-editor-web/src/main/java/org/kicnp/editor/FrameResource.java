@@ -1,6 +1,7 @@
 package org.kicnp.editor;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
@@ -20,10 +21,16 @@ final class FrameResource {
     record Saved(long version, FrameViews.Detail frame) {
     }
 
-    private final KnowledgeBase kb;
+    /** The answer to a delete: the version it made, and every frame it removed (the frame, then what rested on it). */
+    record Deleted(long version, List<String> removed) {
+    }
 
-    FrameResource(KnowledgeBase kb) {
+    private final KnowledgeBase kb;
+    private final Features.Inference inference;
+
+    FrameResource(KnowledgeBase kb, Features.Inference inference) {
         this.kb = kb;
+        this.inference = inference;
     }
 
     /** Every frame as a row, optionally only those whose name contains {@code q} (case-insensitive). */
@@ -65,9 +72,17 @@ final class FrameResource {
         return new Saved(cs.version(), get(name));
     }
 
-    long delete(String name) {
-        kb.require(name);
-        return kb.apply(List.of(new Change.Remove(name))).version();
+    /**
+     * Deletes a frame. Where an inference engine runs, an instance is destroyed through it, so that the instances
+     * derived from it go too (truth maintenance); the knowledge base alone refuses to remove what others refer to.
+     */
+    Deleted delete(String name) {
+        if (kb.require(name).isInstance() && inference.available()) {
+            List<String> removed = new ArrayList<>(List.of(name));
+            inference.destroy(name).stream().filter(n -> !n.equals(name)).sorted().forEach(removed::add);
+            return new Deleted(kb.version(), removed);
+        }
+        return new Deleted(kb.apply(List.of(new Change.Remove(name))).version(), List.of(name));
     }
 
     Saved rename(String name, JsonNode body) {

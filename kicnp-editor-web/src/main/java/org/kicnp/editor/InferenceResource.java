@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Provenance;
@@ -79,6 +80,10 @@ final class InferenceResource implements Features.Inference {
     @Override public Object prove(String className) {
         kb.require(className);
         return engine.prove(className, Map.of()).stream().map(InferenceJson::proof).toList();
+    }
+
+    @Override public Set<String> destroy(String instance) {
+        return engine.destroy(instance);
     }
 
     @Override public Object run() {

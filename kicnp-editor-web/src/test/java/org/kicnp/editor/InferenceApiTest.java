@@ -90,6 +90,21 @@ class InferenceApiTest {
         assertThat(derived).containsExactly("AskUserName");
     }
 
+    @Test void delete_ofAnInstance_goesThroughTheEngine_withWhatWasDerivedFromIt() {
+        setUpUserAndMouth();
+        http.post("/api/inference/run", "{}");
+        String made = kb.instancesOf("AskUserName").getFirst().name();
+
+        // The knowledge base alone refuses: AskUserName-… refers to userA. Through the engine both go.
+        HttpResponse<String> deleted = http.delete("/api/frames/userA");
+
+        assertThat(deleted.statusCode()).as(deleted.body()).isEqualTo(200);
+        assertThat(json(deleted).get("removed")).extracting(JsonNode::asText).containsExactly("userA", made);
+        assertThat(kb.contains("userA")).isFalse();
+        assertThat(kb.contains(made)).isFalse();
+        assertThat(kb.contains("mouth1")).isTrue();
+    }
+
     @Test void why_explainsTheDerivedInstanceDownToTheStimuli() {
         setUpUserAndMouth();
         http.post("/api/inference/run", "{}");

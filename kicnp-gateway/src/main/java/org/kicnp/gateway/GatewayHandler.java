@@ -138,7 +138,7 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter {
             case Message.Query q -> reply(kb.query(q));
             case Message.Ask a -> reply(kb.ask(a));
             case Message.Assert a -> reply(kb.assertFrame(session, a));
-            case Message.Destroy d -> reply(kb.destroy(d));
+            case Message.Destroy d -> kb.destroy(d).thenAccept(this::reply);
             case Message.Subscribe s -> reply(kb.subscribe(session, s));
             case Message.Unsubscribe u -> reply(kb.unsubscribe(session, u));
             case Message.Push p -> reply(kb.push(session, p));

@@ -5,6 +5,8 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Optional;
 import java.util.Set;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
 import java.util.concurrent.ConcurrentHashMap;
 import org.kicnp.core.BatchRejectedException;
 import org.kicnp.core.Change;
@@ -32,11 +34,13 @@ final class KnowledgeAccess implements KnowledgeListener {
     private static final org.slf4j.Logger LOG = org.slf4j.LoggerFactory.getLogger(KnowledgeAccess.class);
     private final KnowledgeBase kb;
     private final Outbound out;
+    private final Retraction retraction;
     private final Set<Session> subscribers = ConcurrentHashMap.newKeySet();
 
-    KnowledgeAccess(KnowledgeBase kb, Outbound out) {
+    KnowledgeAccess(KnowledgeBase kb, Outbound out, Retraction retraction) {
         this.kb = kb;
         this.out = out;
+        this.retraction = retraction;
     }
 
     Message query(Message.Query q) {
@@ -53,6 +57,10 @@ final class KnowledgeAccess implements KnowledgeListener {
         return new Message.Answer(a.id(), kb.value(a.frame(), a.slot()));
     }
 
+    /**
+     * One or more instance frames (several under one root element), stored as RUNTIME instances in one batch: all or
+     * none.
+     */
     Message assertFrame(Session from, Message.Assert a) {
         List<Frame> frames;
         try {
@@ -60,36 +68,49 @@ final class KnowledgeAccess implements KnowledgeListener {
         } catch (KnowledgeException | IllegalArgumentException e) {
             return ErrorReply.to(a.id(), ErrorCode.REJECTED, e.getMessage());
         }
-        if (frames.size() != 1 || !frames.getFirst().isInstance()) {
-            return ErrorReply.to(a.id(), ErrorCode.REJECTED, "An assert carries exactly one instance frame, not "
-                    + frames.size() + " frame(s)" + (frames.size() == 1 ? " of kind class" : "") + ".");
+        if (frames.isEmpty()) {
+            return ErrorReply.to(a.id(), ErrorCode.REJECTED, "An assert carries one or more instance frames, not none.");
         }
-        Frame f = frames.getFirst().toBuilder().provenance(Provenance.RUNTIME).build();
-        // An assert is a runtime fact: replacing a class or declared (or learned) knowledge with it would erase
-        // that knowledge from the store for good, so only runtime instances may be replaced.
-        Optional<Frame> existing = kb.frame(f.name());
-        if (existing.isPresent() && !existing.get().isInstance()) {
-            return ErrorReply.to(a.id(), ErrorCode.FORBIDDEN, "Frame '" + f.name()
-                    + "' is a class; an assert may add or replace runtime instances only.");
+        List<Change> puts = new ArrayList<>(frames.size());
+        for (Frame parsed : frames) {
+            if (!parsed.isInstance()) {
+                return ErrorReply.to(a.id(), ErrorCode.REJECTED, "An assert carries instance frames only; '"
+                        + parsed.name() + "' is a class.");
+            }
+            Frame f = parsed.toBuilder().provenance(Provenance.RUNTIME).build();
+            // An assert is a runtime fact: replacing a class or declared (or learned) knowledge with it would erase
+            // that knowledge from the store for good, so only runtime instances may be replaced.
+            Optional<Frame> existing = kb.frame(f.name());
+            if (existing.isPresent() && !existing.get().isInstance()) {
+                return ErrorReply.to(a.id(), ErrorCode.FORBIDDEN, "Frame '" + f.name()
+                        + "' is a class; an assert may add or replace runtime instances only.");
+            }
+            if (existing.isPresent() && existing.get().provenance().durable()) {
+                return ErrorReply.to(a.id(), ErrorCode.FORBIDDEN, "Frame '" + f.name() + "' is "
+                        + existing.get().provenance().name().toLowerCase(java.util.Locale.ROOT)
+                        + " knowledge; an assert may add or replace runtime instances only.");
+            }
+            puts.add(new Change.Put(f));
         }
-        if (existing.isPresent() && existing.get().provenance().durable()) {
-            return ErrorReply.to(a.id(), ErrorCode.FORBIDDEN, "Frame '" + f.name() + "' is "
-                    + existing.get().provenance().name().toLowerCase(java.util.Locale.ROOT)
-                    + " knowledge; an assert may add or replace runtime instances only.");
-        }
-        return apply(a.id(), List.of(new Change.Put(f)));
+        return apply(a.id(), puts);
     }
 
-    Message destroy(Message.Destroy d) {
+    /**
+     * Destroys an instance through the {@link Retraction}, so that what was derived from it goes too (in the platform,
+     * the inference engine's truth maintenance); the answer completes once it is done.
+     */
+    CompletableFuture<Message> destroy(Message.Destroy d) {
         Optional<Frame> f = kb.frame(d.frame());
         if (f.isEmpty()) {
-            return unknown(d.id(), d.frame());
+            return CompletableFuture.completedFuture(unknown(d.id(), d.frame()));
         }
         if (!f.get().isInstance()) {
-            return ErrorReply.to(d.id(), ErrorCode.FORBIDDEN,
-                    "Frame '" + d.frame() + "' is a class; agents may destroy instances only.");
+            return CompletableFuture.completedFuture(ErrorReply.to(d.id(), ErrorCode.FORBIDDEN,
+                    "Frame '" + d.frame() + "' is a class; agents may destroy instances only."));
         }
-        return apply(d.id(), List.of(new Change.Remove(d.frame())));
+        return retraction.destroy(d.frame()).handle((removed, failure) -> failure == null
+                ? new Message.Ack(d.id()) : refusal(d.id(), failure instanceof CompletionException c && c.getCause()
+                != null ? c.getCause() : failure));
     }
 
     Message subscribe(Session s, Message.Subscribe sub) {
@@ -182,15 +203,26 @@ final class KnowledgeAccess implements KnowledgeListener {
         try {
             kb.apply(changes);
             return new Message.Ack(id);
-        } catch (BatchRejectedException e) {
-            StringBuilder sb = new StringBuilder("The knowledge base refused the change:");
-            e.problems().forEach(pr -> sb.append(' ').append(pr));
-            return ErrorReply.to(id, ErrorCode.REJECTED, sb.toString());
-        } catch (UnknownFrameException e) {
-            return ErrorReply.to(id, ErrorCode.UNKNOWN_FRAME, e.getMessage());
         } catch (KnowledgeException e) {
-            return ErrorReply.to(id, ErrorCode.REJECTED, e.getMessage());
+            return refusal(id, e);
         }
+    }
+
+    /** The error answering a change the knowledge base refused. */
+    private static ErrorReply refusal(String id, Throwable e) {
+        return switch (e) {
+            case BatchRejectedException b -> {
+                StringBuilder sb = new StringBuilder("The knowledge base refused the change:");
+                b.problems().forEach(pr -> sb.append(' ').append(pr));
+                yield ErrorReply.to(id, ErrorCode.REJECTED, sb.toString());
+            }
+            case UnknownFrameException u -> ErrorReply.to(id, ErrorCode.UNKNOWN_FRAME, u.getMessage());
+            case KnowledgeException k -> ErrorReply.to(id, ErrorCode.REJECTED, k.getMessage());
+            default -> {
+                LOG.warn("A change failed unexpectedly: {}", e.toString());
+                yield ErrorReply.to(id, ErrorCode.REJECTED, "The change failed: " + e.getMessage());
+            }
+        };
     }
 
     private static ErrorReply unknown(String id, String frame) {

@@ -52,7 +52,7 @@ final class ServerAgent {
         AgentRegistry registry = new AgentRegistry();
         Outbound out = new Outbound(metrics, config.maxShedBeforeDrop());
         RuntimeFrames runtime = new RuntimeFrames(kb, retraction);
-        KnowledgeAccess knowledge = new KnowledgeAccess(kb, out);
+        KnowledgeAccess knowledge = new KnowledgeAccess(kb, out, retraction);
         Commands commands = new Commands(registry, out, runtime, feedback);
         return new ServerAgent(config.serverName(), directory, registry, kb, runtime, out, commands, knowledge);
     }

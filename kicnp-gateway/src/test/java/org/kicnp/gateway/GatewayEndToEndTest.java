@@ -161,7 +161,7 @@ class GatewayEndToEndTest {
         UserAgent mallory = new UserAgent(options("alice", AgentKind.USER).withToken("guess"));
         open.add(mallory);
         assertThatThrownBy(() -> mallory.startAndAwait(WAIT)).isInstanceOf(AuthenticationException.class)
-                .hasMessage("Server refused agent 'alice': Unknown agent 'alice' or wrong token..");
+                .hasMessage("Server refused agent 'alice': Unknown agent 'alice' or wrong token.");
     }
 
     @Test

@@ -261,6 +261,25 @@ class GatewayHandlerTest {
     }
 
     @Test
+    void assert_ofSeveralInstances_storesThemAllOrNone() {
+        kb.add(Frame.classFrame("Cup").build());
+        kb.add(Frame.instance("cup0", "Cup").build());
+        authenticate();
+        String two = org.kicnp.protocol.FrameText.document(List.of(Frame.instance("cup1", "Cup").build(),
+                Frame.instance("cup2", "Cup").build()));
+        String oneForbidden = two.replace("<NAME>cup2</NAME>", "<NAME>cup0</NAME>").replace("cup1", "cup3");
+
+        ch.writeInbound(Wire.frame(new Message.Assert("2", two)));
+        assertThat(Wire.written(ch)).containsExactly(new Message.Ack("2"));
+        assertThat(kb.contains("cup1")).isTrue();
+        assertThat(kb.require("cup2").provenance()).isEqualTo(org.kicnp.core.Provenance.RUNTIME);
+
+        ch.writeInbound(Wire.frame(new Message.Assert("3", oneForbidden)));
+        assertError(ErrorCode.FORBIDDEN, "Frame 'cup0' is declared knowledge");
+        assertThat(kb.contains("cup3")).as("nothing of a refused assert is stored").isFalse();
+    }
+
+    @Test
     void assert_again_replacesTheRuntimeInstance() {
         kb.add(Frame.classFrame("Cup").build());
         authenticate();

@@ -27,6 +27,13 @@ public final class FrameText {
         return frames.stream().map(FrameText::toXml).toList();
     }
 
+    /** One XML text (a KNOWLEDGEBASE document) holding several frames, in order. */
+    public static String document(List<Frame> frames) {
+        java.io.StringWriter w = new java.io.StringWriter();
+        KnowledgeXmlWriter.write(requireNonNull(frames, "frames"), w);
+        return w.toString();
+    }
+
     /**
      * Parses the frames of one XML text, resolving slot types against {@code context}.
      *

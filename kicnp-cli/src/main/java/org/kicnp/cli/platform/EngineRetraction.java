@@ -1,5 +1,7 @@
 package org.kicnp.cli.platform;
 
+import java.util.Set;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.Executor;
 import java.util.concurrent.atomic.AtomicReference;
 import org.kicnp.core.KnowledgeBase;
@@ -29,6 +31,15 @@ final class EngineRetraction implements Retraction {
 
     void attach(InferenceEngine e) {
         engine.set(e);
+    }
+
+    /** An agent's destroy: on the engine's thread, the instance and what rests on it in one batch (or nothing). */
+    @Override public CompletableFuture<Set<String>> destroy(String frame) {
+        InferenceEngine e = engine.get();
+        if (e == null) {
+            return Retraction.super.destroy(frame);
+        }
+        return CompletableFuture.supplyAsync(() -> e.destroy(frame), engineThread);
     }
 
     @Override public void retract(String frame) {

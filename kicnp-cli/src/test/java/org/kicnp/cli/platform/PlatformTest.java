@@ -127,6 +127,27 @@ class PlatformTest {
         }
     }
 
+    @Test
+    void serve_whenAnAgentDestroysAnInstance_whatWasDerivedFromItGoesToo() throws Exception {
+        Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
+        try (Platform platform = Platform.start(PlatformConfig.of(kb).withEphemeralPorts());
+             UserAgent user = new UserAgent(AgentOptions.of("127.0.0.1", platform.gatewayPort(), "user",
+                     AgentKind.USER, platform.token("user")))) {
+            user.startAndAwait(Duration.ofSeconds(10));
+            user.assertFrame(Frame.instance("userA", "NewUser")
+                    .slot(Slot.ofValue("faceText", DataType.STRING, Value.of("0.1,0.2"))).build());
+            await("the engine derives from userA", () -> !platform.kb().referrers("userA").isEmpty());
+            List<String> derived = List.copyOf(platform.kb().referrers("userA"));
+
+            // A plain removal is refused while a derived instance refers to userA; the gateway destroys through
+            // the engine, which takes the derived instances with it, and answers once that is done.
+            user.destroy("userA");
+
+            assertThat(platform.kb().contains("userA")).isFalse();
+            assertThat(derived).isNotEmpty().noneMatch(platform.kb()::contains);
+        }
+    }
+
     private static void await(String what, java.util.function.BooleanSupplier done) throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
         while (!done.getAsBoolean()) {
