@@ -19,7 +19,7 @@ final class CommandFailure implements IExecutionExceptionHandler {
     @Override public int handleExecutionException(Exception e, CommandLine command, ParseResult parsed) {
         LOG.debug("kicnp {} failed", command.getCommandName(), e);
         PrintWriter err = command.getErr();
-        err.println("kicnp " + command.getCommandName() + ": " + sentence(e));
+        err.println(command.getCommandSpec().qualifiedName() + ": " + sentence(e));
         err.flush();
         return 1;
     }

@@ -21,6 +21,7 @@ import picocli.CommandLine.Command;
             ServeCommand.class,
             ReplayCommand.class,
             DemoCommand.class,
+            AgentCommand.class,
         })
 public final class Main implements Runnable {
     @CommandLine.Spec

@@ -1,0 +1,469 @@
+package org.kicnp.cli;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Properties;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.Callable;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import org.kicnp.agent.ActionFailedException;
+import org.kicnp.agent.AgentBase;
+import org.kicnp.agent.AgentOptions;
+import org.kicnp.agent.CommandTicket;
+import org.kicnp.cli.platform.PlatformConfig;
+import org.kicnp.core.Change;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Slot;
+import org.kicnp.core.xml.KnowledgeLoader;
+import org.kicnp.core.xml.SourcedFrame;
+import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.FrameText;
+import org.kicnp.protocol.Message;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.ParentCommand;
+import picocli.CommandLine.ScopeType;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code kicnp agent}: a person's (or a shell script's) way into a running server, in the manner of ROS's
+ * {@code rostopic} and {@code rosservice}: it connects as an agent of the agent file (by default {@code director}, a
+ * user agent the platform itself never uses), does one thing through the {@link AgentBase} SDK — query, ask, assert,
+ * destroy, watch changes, relay a message, command a robot — prints the answer and disconnects. Everything goes
+ * through the gateway's wire protocol with the agent's own token, so the server's checks apply as to any agent.
+ */
+@Command(name = "agent", mixinStandardHelpOptions = true,
+        description = "Talk to a running server as an agent: query and change its knowledge, watch changes, relay "
+                + "messages, send a robot a command. Connects with a token of the agent file (serve writes it to "
+                + "KB_DIR/.kicnp/agents.properties), as 'director' unless --as says otherwise.",
+        subcommands = {
+            AgentCommand.Query.class,
+            AgentCommand.Ask.class,
+            AgentCommand.Assert.class,
+            AgentCommand.Destroy.class,
+            AgentCommand.Watch.class,
+            AgentCommand.Send.class,
+            AgentCommand.Order.class,
+        },
+        exitCodeListHeading = "%nExit codes:%n",
+        exitCodeList = {
+            "0:done",
+            "1:the server refused, did not answer, or a command failed",
+            "2:wrong usage (also an unreadable agent file or an agent missing from it)"
+        })
+public final class AgentCommand {
+    private static final ObjectMapper JSON = new ObjectMapper();
+    private static final String QUIET_SDK = "org.slf4j.simpleLogger.log.org.kicnp.agent";
+
+    @Option(names = "--gateway", paramLabel = "HOST:PORT",
+            defaultValue = "127.0.0.1:" + PlatformConfig.DEFAULT_GATEWAY_PORT, scope = ScopeType.INHERIT,
+            description = "The server, host:port (default ${DEFAULT-VALUE}, where serve listens by default).")
+    String gateway;
+
+    @Option(names = "--tokens", defaultValue = "agents.properties", paramLabel = "FILE", scope = ScopeType.INHERIT,
+            description = "Agent file with NAME.token (and NAME.kinds) lines (default ${DEFAULT-VALUE}; serve writes "
+                    + "it to KB_DIR/.kicnp/agents.properties).")
+    Path tokens;
+
+    @Option(names = "--as", defaultValue = "director", paramLabel = "NAME", scope = ScopeType.INHERIT,
+            description = "The agent to connect as (default ${DEFAULT-VALUE}). A connection under a name already "
+                    + "connected replaces that one, so do not borrow a running robot's or user's name.")
+    String as;
+
+    @Option(names = "--timeout", defaultValue = "10", paramLabel = "SECONDS", scope = ScopeType.INHERIT,
+            description = "How long to wait to connect, and for each answer (default ${DEFAULT-VALUE}).")
+    double timeoutSeconds;
+
+    @Spec
+    CommandSpec spec;
+
+    /** Connects as the chosen agent, with {@code hooks} for what the server pushes. */
+    CliAgent connect(CommandSpec caller, Hooks hooks) {
+        // The SDK logs its connection's life (registered, reconnecting, refused) for a long-running agent; here
+        // the command line says what happened itself.
+        if (System.getProperty(QUIET_SDK) == null) {
+            System.setProperty(QUIET_SDK, "off");
+        }
+        String[] hostPort = gateway.split(":", 2);
+        int port;
+        try {
+            port = Integer.parseInt(hostPort.length == 2 ? hostPort[1] : "");
+        } catch (NumberFormatException e) {
+            throw new ParameterException(caller.commandLine(), "--gateway '" + gateway + "' is not host:port.");
+        }
+        if (timeoutSeconds <= 0) {
+            throw new ParameterException(caller.commandLine(), "--timeout must be above 0 seconds, not "
+                    + timeoutSeconds + ".");
+        }
+        Properties file = new Properties();
+        try (InputStream in = Files.newInputStream(tokens)) {
+            file.load(in);
+        } catch (NoSuchFileException e) {
+            throw new ParameterException(caller.commandLine(), "There is no agent file '" + tokens
+                    + "'; give --tokens KB_DIR/.kicnp/agents.properties of the running server.");
+        } catch (IOException | IllegalArgumentException e) {
+            throw new ParameterException(caller.commandLine(), "Cannot read the agent file '" + tokens + "': "
+                    + e.getMessage());
+        }
+        String token = file.getProperty(as + ".token", "").strip();
+        if (token.isEmpty()) {
+            throw new ParameterException(caller.commandLine(), "The agent file '" + tokens + "' has no '" + as
+                    + ".token'.");
+        }
+        AgentKind kind = kindOf(file.getProperty(as + ".kinds", "user"));
+        Duration timeout = timeout();
+        AgentOptions options = AgentOptions.of(hostPort[0], port, as, kind, token);
+        options = new AgentOptions(options.host(), options.port(), options.name(), options.kind(), options.token(),
+                timeout, options.heartbeatInterval(), options.serverSilence(), options.backoffInitial(),
+                options.backoffMax(), options.maxFrameBytes(), options.socketFactory());
+        CliAgent agent = new CliAgent(options, hooks);
+        try {
+            agent.startAndAwait(timeout);
+        } catch (RuntimeException e) {
+            agent.close();
+            throw e;
+        }
+        return agent;
+    }
+
+    private static AgentKind kindOf(String kinds) {
+        String first = kinds.split(",", 2)[0].strip().toUpperCase(Locale.ROOT);
+        try {
+            return AgentKind.valueOf(first);
+        } catch (IllegalArgumentException e) {
+            return AgentKind.USER;
+        }
+    }
+
+    Duration timeout() {
+        return Duration.ofMillis(Math.round(timeoutSeconds * 1000));
+    }
+
+    /** What the server pushes to the agent: change notifications and relays, on the SDK's event thread. */
+    record Hooks(java.util.function.Consumer<Message.Changed> changed,
+                 java.util.function.Consumer<Message.Relay> relayed) {
+        static final Hooks NONE = new Hooks(c -> { }, r -> { });
+    }
+
+    /** The agent a command line runs as. */
+    static final class CliAgent extends AgentBase {
+        private final Hooks hooks;
+
+        CliAgent(AgentOptions options, Hooks hooks) {
+            super(options);
+            this.hooks = hooks;
+        }
+
+        @Override protected void onChanged(Message.Changed change) {
+            hooks.changed().accept(change);
+        }
+
+        @Override protected void onRelay(Message.Relay relay) {
+            hooks.relayed().accept(relay);
+        }
+    }
+
+    /** One JSON line: a change of a watched class, with the frame's slots where the server sent the frame. */
+    static String json(Message.Changed c) {
+        ObjectNode o = JSON.createObjectNode();
+        o.put("time", Instant.now().toString());
+        o.put("event", c.change().name().toLowerCase(Locale.ROOT));
+        o.put("class", c.ofClass());
+        o.put("name", c.name());
+        c.frame().ifPresent(xml -> {
+            for (Frame f : FrameText.parse(xml, "change of '" + c.name() + "'", KnowledgeBase.create())) {
+                o.put("frame_class", f.parent().orElse(null));
+                ObjectNode slots = o.putObject("slots");
+                for (Slot s : f.slots()) {
+                    s.value().ifPresent(v -> slots.put(s.name(), v.text()));
+                }
+            }
+        });
+        return o.toString();
+    }
+
+    /** One JSON line: a message relayed to this agent. */
+    static String json(Message.Relay r) {
+        ObjectNode o = JSON.createObjectNode();
+        o.put("time", Instant.now().toString());
+        o.put("event", "relay");
+        o.put("from", r.from());
+        o.put("subject", r.subject());
+        o.put("body", r.body());
+        return o.toString();
+    }
+
+    @Command(name = "query", mixinStandardHelpOptions = true,
+            description = "Print every instance of a class (and of the classes below it) as one document in the paper's "
+                    + "XML.")
+    static final class Query implements Callable<Integer> {
+        @ParentCommand AgentCommand agent;
+        @Spec CommandSpec spec;
+
+        @Parameters(paramLabel = "CLASS", description = "The class.")
+        String ofClass;
+
+        @Override public Integer call() {
+            List<Frame> frames;
+            try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
+                frames = a.query(ofClass);
+            }
+            PrintWriter out = spec.commandLine().getOut();
+            out.print(FrameText.document(frames)); // one document, which `agent assert` takes back as it is
+            out.flush();
+            spec.commandLine().getErr().println(frames.size() + " instance" + (frames.size() == 1 ? "" : "s")
+                    + " of '" + ofClass + "'.");
+            return 0;
+        }
+    }
+
+    @Command(name = "ask", mixinStandardHelpOptions = true,
+            description = "Print the effective value of a slot (inherited along IS-A); exit 1 when it has none.")
+    static final class Ask implements Callable<Integer> {
+        @ParentCommand AgentCommand agent;
+        @Spec CommandSpec spec;
+
+        @Parameters(index = "0", paramLabel = "FRAME", description = "The frame.")
+        String frame;
+
+        @Parameters(index = "1", paramLabel = "SLOT", description = "The slot.")
+        String slot;
+
+        @Override public Integer call() {
+            Optional<org.kicnp.core.Value> v;
+            try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
+                v = a.ask(frame, slot);
+            }
+            if (v.isEmpty()) {
+                spec.commandLine().getErr().println("kicnp agent ask: '" + frame + "' has no value in slot '" + slot
+                        + "'.");
+                return 1;
+            }
+            spec.commandLine().getOut().println(v.get().text());
+            return 0;
+        }
+    }
+
+    @Command(name = "assert", mixinStandardHelpOptions = true,
+            description = "Add (or replace) instance frames: XML files, or XML text starting with '<'. The frames are "
+                    + "read here first (a slot without a TYPE takes the type the server's classes declare; a mistake is "
+                    + "reported at its line and nothing is sent), then sent in one assert: the server stores them all "
+                    + "as runtime instances, or none (it refuses to replace classes and declared knowledge).")
+    static final class Assert implements Callable<Integer> {
+        @ParentCommand AgentCommand agent;
+        @Spec CommandSpec spec;
+
+        @Parameters(arity = "1..*", paramLabel = "FILE_OR_XML", description = "Instance frames to assert.")
+        List<String> sources;
+
+        @Override public Integer call() {
+            PrintWriter out = spec.commandLine().getOut();
+            try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
+                // The server's classes, so that a slot written without its type takes the type declared above it,
+                // as the server would read it, and a mistake is reported at its line before anything is sent.
+                KnowledgeBase context = KnowledgeBase.create();
+                context.apply(a.pull(Optional.empty()).stream().map(f -> (Change) new Change.Put(f)).toList());
+                List<Frame> frames = new ArrayList<>();
+                for (String source : sources) {
+                    List<SourcedFrame> parsed = source.stripLeading().startsWith("<")
+                            ? KnowledgeLoader.parseText(source, "argument", context)
+                            : KnowledgeLoader.parse(List.of(Path.of(source)), context);
+                    for (SourcedFrame s : parsed) {
+                        if (!s.frame().isInstance()) {
+                            throw new IllegalArgumentException("'" + s.frame().name() + "' (" + s.location()
+                                    + ") is a class; assert takes instance frames.");
+                        }
+                        frames.add(s.frame());
+                    }
+                }
+                a.assertFrames(frames);
+                for (Frame f : frames) {
+                    out.println("Asserted '" + f.name() + "' (" + f.parent().orElse("?") + ").");
+                }
+            }
+            return 0;
+        }
+    }
+
+    @Command(name = "destroy", mixinStandardHelpOptions = true,
+            description = "Remove instance frames, one after the other (what rests on them goes too).")
+    static final class Destroy implements Callable<Integer> {
+        @ParentCommand AgentCommand agent;
+        @Spec CommandSpec spec;
+
+        @Parameters(arity = "1..*", paramLabel = "NAME", description = "Instances to remove.")
+        List<String> names;
+
+        @Override public Integer call() {
+            try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
+                for (String name : names) {
+                    a.destroy(name);
+                    spec.commandLine().getOut().println("Destroyed '" + name + "'.");
+                }
+            }
+            return 0;
+        }
+    }
+
+    @Command(name = "watch", mixinStandardHelpOptions = true,
+            description = "Print each change to frames of the classes (and below them), and each message relayed to "
+                    + "this agent, as one JSON line: {\"time\", \"event\": added|replaced|removed|relay, \"class\", "
+                    + "\"name\", \"frame_class\", \"slots\": {slot: value}} or {\"time\", \"event\": \"relay\", "
+                    + "\"from\", \"subject\", \"body\"}. Runs until interrupted, --for seconds, or --count events.")
+    static final class Watch implements Callable<Integer> {
+        @ParentCommand AgentCommand agent;
+        @Spec CommandSpec spec;
+
+        @Parameters(arity = "1..*", paramLabel = "CLASS", description = "Classes to watch.")
+        List<String> classes;
+
+        @Option(names = "--for", paramLabel = "SECONDS", description = "Stop after this many seconds.")
+        Double seconds;
+
+        @Option(names = "--count", paramLabel = "N", description = "Stop after N events.")
+        Integer count;
+
+        @Override public Integer call() throws InterruptedException {
+            if (seconds != null && seconds <= 0 || count != null && count < 1) {
+                throw new ParameterException(spec.commandLine(), "--for needs seconds above 0 and --count 1 or more.");
+            }
+            BlockingQueue<String> lines = new LinkedBlockingQueue<>();
+            PrintWriter out = spec.commandLine().getOut();
+            long deadline = seconds == null ? Long.MAX_VALUE : System.nanoTime() + Math.round(seconds * 1e9);
+            try (CliAgent a = agent.connect(spec, new Hooks(c -> lines.add(json(c)), r -> lines.add(json(r))))) {
+                for (String c : classes) {
+                    a.subscribe(c);
+                }
+                spec.commandLine().getErr().println("Watching " + String.join(", ", classes) + " as '" + a.name()
+                        + "'.");
+                spec.commandLine().getErr().flush();
+                int printed = 0;
+                while (count == null || printed < count) {
+                    long left = deadline - System.nanoTime();
+                    if (left <= 0) {
+                        break;
+                    }
+                    String line = lines.poll(Math.min(left, TimeUnit.SECONDS.toNanos(1)), TimeUnit.NANOSECONDS);
+                    if (line != null) {
+                        out.println(line);
+                        out.flush();
+                        printed++;
+                    } else if (a.stopped().isPresent()) {
+                        // Most often another command connected under the same name, which replaces this connection.
+                        spec.commandLine().getErr().println("kicnp agent watch: " + a.stopped().get().getMessage()
+                                + " To watch while other commands run, watch as another agent of the agent file "
+                                + "(--as).");
+                        return 1;
+                    }
+                }
+            }
+            return 0;
+        }
+    }
+
+    @Command(name = "send", mixinStandardHelpOptions = true,
+            description = "Relay a message to an agent by name, or with --kind to every agent of a kind.")
+    static final class Send implements Callable<Integer> {
+        @ParentCommand AgentCommand agent;
+        @Spec CommandSpec spec;
+
+        @Option(names = "--kind", paramLabel = "KIND",
+                description = "Send to every registered agent of this kind (robot, user, service, peer) instead.")
+        AgentKind kind;
+
+        @Parameters(paramLabel = "TO SUBJECT BODY", arity = "2..3",
+                description = "The agent (left out with --kind), the subject and the body.")
+        List<String> words;
+
+        @Override public Integer call() {
+            int want = kind == null ? 3 : 2;
+            if (words.size() != want) {
+                throw new ParameterException(spec.commandLine(), kind == null
+                        ? "send takes AGENT SUBJECT BODY (or --kind KIND SUBJECT BODY)."
+                        : "With --kind, send takes SUBJECT BODY.");
+            }
+            try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
+                if (kind == null) {
+                    a.relayTo(words.get(0), words.get(1), words.get(2));
+                } else {
+                    a.relayToKind(kind, words.get(0), words.get(1));
+                }
+            }
+            spec.commandLine().getOut().println("Relayed to " + (kind == null ? "'" + words.get(0) + "'"
+                    : "every " + kind.name().toLowerCase(Locale.ROOT) + " agent") + ".");
+            return 0;
+        }
+    }
+
+    @Command(name = "command", mixinStandardHelpOptions = true,
+            description = "Send a robot a command and print its feedback as JSON lines until it ends (exit 0) or fails "
+                    + "(exit 1). Arguments are NAME=VALUE.")
+    static final class Order implements Callable<Integer> {
+        @ParentCommand AgentCommand agent;
+        @Spec CommandSpec spec;
+
+        @Parameters(index = "0", paramLabel = "ROBOT", description = "The robot's agent.")
+        String robot;
+
+        @Parameters(index = "1", paramLabel = "ACTION", description = "The action.")
+        String action;
+
+        @Parameters(index = "2..*", paramLabel = "NAME=VALUE", description = "The action's arguments.")
+        List<String> args = new ArrayList<>();
+
+        @Option(names = "--wait", defaultValue = "60", paramLabel = "SECONDS",
+                description = "How long to wait for the action to end (default ${DEFAULT-VALUE}).")
+        double waitSeconds;
+
+        @Override public Integer call() {
+            Map<String, String> named = new LinkedHashMap<>();
+            for (String arg : args) {
+                int eq = arg.indexOf('=');
+                if (eq < 1) {
+                    throw new ParameterException(spec.commandLine(), "Argument '" + arg + "' is not NAME=VALUE.");
+                }
+                named.put(arg.substring(0, eq), arg.substring(eq + 1));
+            }
+            PrintWriter out = spec.commandLine().getOut();
+            try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
+                CommandTicket t = a.command(robot, action, named);
+                try {
+                    t.result(Duration.ofMillis(Math.round(waitSeconds * 1000)));
+                    return 0;
+                } catch (ActionFailedException e) {
+                    return 1;
+                } finally {
+                    for (Message.Feedback f : t.feedback()) {
+                        ObjectNode o = JSON.createObjectNode();
+                        o.put("id", f.id());
+                        o.put("robot", f.robot());
+                        o.put("stage", f.stage().name().toLowerCase(Locale.ROOT));
+                        f.progress().ifPresent(p -> o.put("progress", p));
+                        o.put("detail", f.detail());
+                        out.println(o);
+                    }
+                    out.flush();
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,318 @@
+package org.kicnp.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.kicnp.agent.ActionHandle;
+import org.kicnp.agent.AgentBase;
+import org.kicnp.agent.AgentOptions;
+import org.kicnp.agent.UserAgent;
+import org.kicnp.core.Change;
+import org.kicnp.core.DataType;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Provenance;
+import org.kicnp.core.Slot;
+import org.kicnp.core.Value;
+import org.kicnp.gateway.AgentDirectory;
+import org.kicnp.gateway.FeedbackListener;
+import org.kicnp.gateway.GatewayConfig;
+import org.kicnp.gateway.GatewayServer;
+import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.Message.Command;
+
+/** {@code kicnp agent} against a real gateway on loopback, with real agents on the other end. */
+@Timeout(value = 60, unit = TimeUnit.SECONDS)
+class AgentCommandTest {
+    private static final ObjectMapper JSON = new ObjectMapper();
+    @TempDir Path dir;
+    private KnowledgeBase kb;
+    private GatewayServer server;
+    private Path tokens;
+
+    @BeforeEach
+    void start() throws Exception {
+        kb = KnowledgeBase.create();
+        kb.apply(List.of(
+                new Change.Add(Frame.classFrame("Person").slot(Slot.builder("name", DataType.STRING).build()).build()),
+                new Change.Add(Frame.instance("ken", "Person")
+                        .slot(Slot.ofValue("name", DataType.STRING, Value.of("Ken"))).build())));
+        AgentDirectory agents = AgentDirectory.empty()
+                .with("director", "director-secret", AgentKind.USER)
+                .with("listener", "listener-secret", AgentKind.USER)
+                .with("scout", "scout-secret", AgentKind.ROBOT);
+        tokens = Files.write(dir.resolve("agents.properties"), List.of(
+                "director.token = director-secret", "director.kinds = user",
+                "intruder.token = wrong-secret"));
+        server = GatewayServer.start(GatewayConfig.defaults().withPort(0), agents, kb, FeedbackListener.NONE);
+    }
+
+    @AfterEach
+    void stop() {
+        server.close();
+    }
+
+    private CliRun agent(String... args) {
+        String[] all = new String[args.length + 5];
+        all[0] = "agent";
+        all[1] = "--gateway";
+        all[2] = "127.0.0.1:" + server.port();
+        all[3] = "--tokens";
+        all[4] = tokens.toString();
+        System.arraycopy(args, 0, all, 5, args.length);
+        return CliRun.of(all);
+    }
+
+    private AgentOptions options(String name, AgentKind kind) {
+        return AgentOptions.of("127.0.0.1", server.port(), name, kind, name + "-secret");
+    }
+
+    @Test
+    void query_printsEachInstanceInThePapersXml_andAsk_printsASlotsValue() {
+        CliRun q = agent("query", "Person");
+        assertThat(q.exitCode()).as(q.err()).isZero();
+        assertThat(q.out()).contains("<NAME>ken</NAME>").contains("<ISA>Person</ISA>").contains("Ken");
+        assertThat(q.err()).contains("1 instance of 'Person'.");
+
+        CliRun a = agent("ask", "ken", "name");
+        assertThat(a.exitCode()).isZero();
+        assertThat(a.out().strip()).isEqualTo("Ken");
+
+        CliRun none = agent("ask", "Person", "name");
+        assertThat(none.exitCode()).isEqualTo(1);
+        assertThat(none.err()).contains("'Person' has no value in slot 'name'.");
+    }
+
+    @Test
+    void query_ofAnUnknownClass_exits1WithTheServersReason() {
+        CliRun q = agent("query", "Robot");
+
+        assertThat(q.exitCode()).isEqualTo(1);
+        assertThat(q.err()).contains("kicnp agent query: There is no frame named 'Robot'.");
+    }
+
+    @Test
+    void assert_takesASlotsTypeFromTheServersClass_andDestroy_removesTheInstance() {
+        // No TYPE in the slot: the server's class says name is a string, as a knowledge file would be read.
+        String xml = "<FRAME><NAME>ann</NAME><ISA>Person</ISA><ISINSTANCE>TRUE</ISINSTANCE><SLOTLIST><SLOT>"
+                + "<NAME>name</NAME><VALUE>Ann</VALUE></SLOT></SLOTLIST></FRAME>";
+
+        CliRun a = agent("assert", xml);
+
+        assertThat(a.exitCode()).as(a.err()).isZero();
+        assertThat(a.out()).contains("Asserted 'ann' (Person).");
+        assertThat(kb.frame("ann")).hasValueSatisfying(f -> {
+            assertThat(f.provenance()).isEqualTo(Provenance.RUNTIME);
+            assertThat(f.ownSlot("name").flatMap(Slot::value)).contains(Value.of("Ann"));
+        });
+
+        CliRun d = agent("destroy", "ann");
+        assertThat(d.exitCode()).as(d.err()).isZero();
+        assertThat(d.out()).contains("Destroyed 'ann'.");
+        assertThat(kb.contains("ann")).isFalse();
+    }
+
+    @Test
+    void assert_ofAFileWithAnXmlMistake_sendsNothing_andNamesTheFileAndLine() throws Exception {
+        Path file = Files.writeString(dir.resolve("people.xml"), """
+                <KNOWLEDGEBASE>
+                <FRAME><NAME>bob</NAME><ISA>Person</ISA><ISINSTANCE>TRUE</ISINSTANCE><SLOTLIST></SLOTLIST></FRAME>
+                <FRAME><NAME>eve</NAME><ISA>Person</ISA><ISINSTANCE>MAYBE</ISINSTANCE><SLOTLIST></SLOTLIST></FRAME>
+                </KNOWLEDGEBASE>
+                """);
+
+        CliRun a = agent("assert", file.toString());
+
+        assertThat(a.exitCode()).isEqualTo(1);
+        assertThat(a.err()).contains("kicnp agent assert: ").contains("people.xml:3").contains("MAYBE");
+        assertThat(kb.contains("bob")).as("nothing is sent when a frame cannot be read").isFalse();
+    }
+
+    @Test
+    void assert_ofSeveralFrames_isAllOrNone_atTheServer() throws Exception {
+        Path good = Files.writeString(dir.resolve("good.xml"), """
+                <KNOWLEDGEBASE>
+                <FRAME><NAME>bob</NAME><ISA>Person</ISA><ISINSTANCE>TRUE</ISINSTANCE><SLOTLIST></SLOTLIST></FRAME>
+                <FRAME><NAME>amy</NAME><ISA>Person</ISA><ISINSTANCE>TRUE</ISINSTANCE><SLOTLIST></SLOTLIST></FRAME>
+                </KNOWLEDGEBASE>
+                """);
+        // 'ken' is declared knowledge: the server refuses the batch, and 'eve' before it is not stored either.
+        Path refused = Files.writeString(dir.resolve("refused.xml"), """
+                <KNOWLEDGEBASE>
+                <FRAME><NAME>eve</NAME><ISA>Person</ISA><ISINSTANCE>TRUE</ISINSTANCE><SLOTLIST></SLOTLIST></FRAME>
+                <FRAME><NAME>ken</NAME><ISA>Person</ISA><ISINSTANCE>TRUE</ISINSTANCE><SLOTLIST></SLOTLIST></FRAME>
+                </KNOWLEDGEBASE>
+                """);
+
+        CliRun ok = agent("assert", good.toString());
+        assertThat(ok.exitCode()).as(ok.err()).isZero();
+        assertThat(ok.out()).contains("Asserted 'bob' (Person).").contains("Asserted 'amy' (Person).");
+        assertThat(kb.contains("bob") && kb.contains("amy")).isTrue();
+
+        CliRun no = agent("assert", refused.toString());
+        assertThat(no.exitCode()).isEqualTo(1);
+        assertThat(no.err()).contains("kicnp agent assert: Frame 'ken' is declared knowledge");
+        assertThat(no.out()).doesNotContain("Asserted");
+        assertThat(kb.contains("eve")).isFalse();
+        assertThat(kb.require("ken").provenance()).isEqualTo(Provenance.DECLARED);
+    }
+
+    @Test
+    void assert_ofAClass_isAUsageMistakeNamingIt() {
+        CliRun a = agent("assert", "<FRAME><NAME>Robot</NAME><ISA>NULL</ISA><ISINSTANCE>FALSE</ISINSTANCE>"
+                + "<SLOTLIST></SLOTLIST></FRAME>");
+
+        assertThat(a.exitCode()).isEqualTo(1);
+        assertThat(a.err()).contains("'Robot'").contains("is a class; assert takes instance frames.");
+        assertThat(kb.contains("Robot")).isFalse();
+    }
+
+    @Test
+    void watch_printsEachChangeOfTheClassAsAJsonLine() throws Exception {
+        CompletableFuture<CliRun> watching = CompletableFuture.supplyAsync(() ->
+                agent("watch", "Person", "--count", "2", "--for", "30"));
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+        // Changes are made only once the watcher's subscription is in place (it is registered as 'director').
+        while (!server.registeredAgents().contains("director") && System.nanoTime() < deadline) {
+            Thread.sleep(20);
+        }
+        Thread.sleep(300);
+        kb.apply(List.of(new Change.Add(Frame.instance("joe", "Person").provenance(Provenance.RUNTIME)
+                .slot(Slot.ofValue("name", DataType.STRING, Value.of("Joe"))).build())));
+        kb.apply(List.of(new Change.Remove("joe")));
+
+        CliRun w = watching.get(30, TimeUnit.SECONDS);
+
+        assertThat(w.exitCode()).as(w.err()).isZero();
+        List<String> lines = w.outLines();
+        assertThat(lines).hasSize(2);
+        JsonNode added = JSON.readTree(lines.get(0));
+        assertThat(added.get("event").asText()).isEqualTo("added");
+        assertThat(added.get("class").asText()).isEqualTo("Person");
+        assertThat(added.get("name").asText()).isEqualTo("joe");
+        assertThat(added.at("/slots/name").asText()).isEqualTo("Joe");
+        assertThat(JSON.readTree(lines.get(1)).get("event").asText()).isEqualTo("removed");
+    }
+
+    @Test
+    void watch_replacedByAnotherConnectionUnderItsName_stopsSayingSo() throws Exception {
+        CompletableFuture<CliRun> watching = CompletableFuture.supplyAsync(() -> agent("watch", "Person", "--for", "30"));
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+        while (!server.registeredAgents().contains("director") && System.nanoTime() < deadline) {
+            Thread.sleep(20);
+        }
+        try (UserAgent second = new UserAgent(AgentOptions.of("127.0.0.1", server.port(), "director", AgentKind.USER,
+                "director-secret"))) {
+            second.startAndAwait(Duration.ofSeconds(10));
+
+            CliRun w = watching.get(20, TimeUnit.SECONDS);
+
+            assertThat(w.exitCode()).isEqualTo(1);
+            assertThat(w.err()).contains("kicnp agent watch: ").contains("registered again from a new connection")
+                    .contains("watch as another agent of the agent file (--as)");
+        }
+    }
+
+    @Test
+    void send_relaysToTheNamedAgent() {
+        try (UserAgent listener = new UserAgent(options("listener", AgentKind.USER))) {
+            listener.startAndAwait(Duration.ofSeconds(10));
+
+            CliRun s = agent("send", "listener", "greeting", "hello there");
+
+            assertThat(s.exitCode()).as(s.err()).isZero();
+            assertThat(s.out()).contains("Relayed to 'listener'.");
+            awaitTrue(() -> !listener.relays().isEmpty());
+            assertThat(listener.relays().getFirst().from()).isEqualTo("director");
+            assertThat(listener.relays().getFirst().subject()).isEqualTo("greeting");
+            assertThat(listener.relays().getFirst().body()).isEqualTo("hello there");
+        }
+    }
+
+    @Test
+    void command_printsTheRobotsFeedback_andExits0WhenTheActionEnds_1WhenItFails() throws Exception {
+        try (AgentBase scout = new AgentBase(options("scout", AgentKind.ROBOT)) {
+            @Override protected void onCommand(Command c, ActionHandle h) {
+                if (c.action().equals("bring")) {
+                    h.started();
+                    h.ended("brought " + c.args().get("item"));
+                } else {
+                    h.failed("cannot " + c.action());
+                }
+            }
+        }) {
+            scout.startAndAwait(Duration.ofSeconds(10));
+
+            CliRun ok = agent("command", "scout", "bring", "item=tea");
+
+            assertThat(ok.exitCode()).as(ok.err()).isZero();
+            List<String> lines = ok.outLines();
+            assertThat(lines).hasSize(2);
+            assertThat(JSON.readTree(lines.get(0)).get("stage").asText()).isEqualTo("started");
+            JsonNode ended = JSON.readTree(lines.get(1));
+            assertThat(ended.get("stage").asText()).isEqualTo("ended");
+            assertThat(ended.get("detail").asText()).isEqualTo("brought tea");
+
+            CliRun failed = agent("command", "scout", "fly");
+            assertThat(failed.exitCode()).isEqualTo(1);
+            assertThat(JSON.readTree(failed.outLines().getLast()).get("detail").asText()).isEqualTo("cannot fly");
+
+            CliRun badArg = agent("command", "scout", "bring", "tea");
+            assertThat(badArg.exitCode()).isEqualTo(2);
+            assertThat(badArg.err()).contains("Argument 'tea' is not NAME=VALUE.");
+        }
+    }
+
+    @Test
+    void aWrongToken_isRefusedByTheServer_exit1() {
+        CliRun r = agent("--as", "intruder", "query", "Person");
+
+        assertThat(r.exitCode()).isEqualTo(1);
+        assertThat(r.err()).contains("kicnp agent query: Server refused agent 'intruder': Unknown agent 'intruder' or "
+                + "wrong token.\n");
+        assertThat(server.registeredAgents()).doesNotContain("intruder");
+    }
+
+    @Test
+    void anAgentMissingFromTheFile_orNoFile_isAUsageError() {
+        CliRun missing = agent("--as", "nobody", "query", "Person");
+        assertThat(missing.exitCode()).isEqualTo(2);
+        assertThat(missing.err()).contains("has no 'nobody.token'.");
+
+        CliRun noFile = CliRun.of("agent", "--tokens", dir.resolve("none.properties").toString(), "query", "Person");
+        assertThat(noFile.exitCode()).isEqualTo(2);
+        assertThat(noFile.err()).contains("There is no agent file").contains("none.properties");
+    }
+
+    @Test
+    void noServerThere_exits1SayingSoWithinTheTimeout() throws Exception {
+        int port = server.port();
+        server.close();
+
+        CliRun r = CliRun.of("agent", "--gateway", "127.0.0.1:" + port, "--tokens", tokens.toString(),
+                "--timeout", "1", "query", "Person");
+
+        assertThat(r.exitCode()).isEqualTo(1);
+        assertThat(r.err()).contains("was not registered with 127.0.0.1:" + port);
+    }
+
+    private static void awaitTrue(java.util.function.BooleanSupplier condition) {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (!condition.getAsBoolean() && System.nanoTime() < deadline) {
+            Thread.onSpinWait();
+        }
+        assertThat(condition.getAsBoolean()).isTrue();
+    }
+}
