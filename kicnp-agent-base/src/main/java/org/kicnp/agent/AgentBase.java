@@ -203,6 +203,19 @@ public abstract class AgentBase implements AutoCloseable {
         return ((Message.Answer) request(new Message.Ask(nextId(), frame, slot))).value();
     }
 
+    /**
+     * Backward chaining on the server: every instance of a class that exists or could be derived, whose instance
+     * slots hold the instances {@code bindings} names (slot → instance), each with its proof. Nothing is created.
+     */
+    public final List<Message.ProofNode> prove(String ofClass, Map<String, String> bindings) {
+        return ((Message.Proofs) request(new Message.Prove(nextId(), ofClass, bindings))).proofs();
+    }
+
+    /** Why an instance exists, back to the stimuli. */
+    public final Message.Reason why(String instance) {
+        return ((Message.Explained) request(new Message.Why(nextId(), instance))).reason();
+    }
+
     /** Adds or replaces an instance frame (stored as a RUNTIME frame). */
     public final void assertFrame(Frame instance) {
         request(new Message.Assert(nextId(), FrameText.toXml(instance)));
@@ -402,6 +415,8 @@ public abstract class AgentBase implements AutoCloseable {
                 case Message.Ack a -> complete(a.id(), a);
                 case Message.Frames f -> complete(f.id(), f);
                 case Message.Answer a -> complete(a.id(), a);
+                case Message.Proofs p -> complete(p.id(), p);
+                case Message.Explained x -> complete(x.id(), x);
                 case Message.AuthResult a -> complete(a.id(), a);
                 case Message.Hello h -> LOG.warn("Agent '{}' ignores an unexpected {}.", name(), h);
                 case Message.Register x -> LOG.warn("Agent '{}' ignores an unexpected register.", name());
@@ -414,6 +429,8 @@ public abstract class AgentBase implements AutoCloseable {
                 case Message.Unsubscribe x -> LOG.warn("Agent '{}' ignores an unexpected unsubscribe.", name());
                 case Message.Push x -> LOG.warn("Agent '{}' ignores an unexpected push.", name());
                 case Message.Pull x -> LOG.warn("Agent '{}' ignores an unexpected pull.", name());
+                case Message.Prove x -> LOG.warn("Agent '{}' ignores an unexpected prove.", name());
+                case Message.Why x -> LOG.warn("Agent '{}' ignores an unexpected why.", name());
             }
         }
     }

@@ -1,6 +1,7 @@
 package org.kicnp.cli;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
 import java.io.InputStream;
@@ -58,6 +59,8 @@ import picocli.CommandLine.Spec;
         subcommands = {
             AgentCommand.Query.class,
             AgentCommand.Ask.class,
+            AgentCommand.Prove.class,
+            AgentCommand.Why.class,
             AgentCommand.Assert.class,
             AgentCommand.Destroy.class,
             AgentCommand.Watch.class,
@@ -263,6 +266,92 @@ public final class AgentCommand {
         }
     }
 
+    @Command(name = "prove", mixinStandardHelpOptions = true,
+            description = "Backward chaining on the server: every instance of the class that exists or could be "
+                    + "derived from what exists (slots fixed by SLOT=INSTANCE), each with its proof, as one JSON "
+                    + "array: {ofClass, instance (when it exists), slots: {slot: proof}, assumptions}. Nothing is "
+                    + "created and no script runs.")
+    static final class Prove implements Callable<Integer> {
+        @ParentCommand AgentCommand agent;
+        @Spec CommandSpec spec;
+
+        @Parameters(index = "0", paramLabel = "CLASS", description = "The class.")
+        String ofClass;
+
+        @Parameters(index = "1..*", paramLabel = "SLOT=INSTANCE", description = "Slots the answers must hold.")
+        List<String> bindings = new ArrayList<>();
+
+        @Override public Integer call() throws IOException {
+            Map<String, String> fixed = pairs(spec, bindings);
+            List<Message.ProofNode> proofs;
+            try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
+                proofs = a.prove(ofClass, fixed);
+            }
+            spec.commandLine().getOut().println(JSON.writerWithDefaultPrettyPrinter().writeValueAsString(
+                    proofs.stream().map(AgentCommand::json).toList()));
+            spec.commandLine().getErr().println(proofs.size() + " answer" + (proofs.size() == 1 ? "" : "s") + ".");
+            return 0;
+        }
+    }
+
+    @Command(name = "why", mixinStandardHelpOptions = true,
+            description = "Why an instance exists, back to the stimuli, as one JSON object: {instance, ofClass, "
+                    + "derived, binding, conditions, supports: [...]}.")
+    static final class Why implements Callable<Integer> {
+        @ParentCommand AgentCommand agent;
+        @Spec CommandSpec spec;
+
+        @Parameters(paramLabel = "INSTANCE", description = "The instance.")
+        String instance;
+
+        @Override public Integer call() throws IOException {
+            Message.Reason reason;
+            try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
+                reason = a.why(instance);
+            }
+            spec.commandLine().getOut().println(JSON.writerWithDefaultPrettyPrinter().writeValueAsString(json(reason)));
+            return 0;
+        }
+    }
+
+    private static ObjectNode json(Message.ProofNode p) {
+        ObjectNode o = JSON.createObjectNode();
+        o.put("ofClass", p.ofClass());
+        p.instance().ifPresent(i -> o.put("instance", i));
+        ObjectNode slots = o.putObject("slots");
+        p.slots().forEach((slot, sub) -> slots.set(slot, json(sub)));
+        ArrayNode assumed = o.putArray("assumptions");
+        p.assumptions().forEach(assumed::add);
+        return o;
+    }
+
+    private static ObjectNode json(Message.Reason r) {
+        ObjectNode o = JSON.createObjectNode();
+        o.put("instance", r.instance());
+        o.put("ofClass", r.ofClass());
+        o.put("derived", r.derived());
+        ObjectNode binding = o.putObject("binding");
+        r.binding().forEach(binding::put);
+        ArrayNode conditions = o.putArray("conditions");
+        r.conditions().forEach(conditions::add);
+        ArrayNode supports = o.putArray("supports");
+        r.supports().forEach(s -> supports.add(json(s)));
+        return o;
+    }
+
+    /** NAME=VALUE arguments as a map, in order; a usage error names one that is not. */
+    static Map<String, String> pairs(CommandSpec spec, List<String> args) {
+        Map<String, String> named = new LinkedHashMap<>();
+        for (String arg : args) {
+            int eq = arg.indexOf('=');
+            if (eq < 1) {
+                throw new ParameterException(spec.commandLine(), "Argument '" + arg + "' is not NAME=VALUE.");
+            }
+            named.put(arg.substring(0, eq), arg.substring(eq + 1));
+        }
+        return named;
+    }
+
     @Command(name = "assert", mixinStandardHelpOptions = true,
             description = "Add (or replace) instance frames: XML files, or XML text starting with '<'. The frames are "
                     + "read here first (a slot without a TYPE takes the type the server's classes declare; a mistake is "
@@ -435,14 +524,7 @@ public final class AgentCommand {
         double waitSeconds;
 
         @Override public Integer call() {
-            Map<String, String> named = new LinkedHashMap<>();
-            for (String arg : args) {
-                int eq = arg.indexOf('=');
-                if (eq < 1) {
-                    throw new ParameterException(spec.commandLine(), "Argument '" + arg + "' is not NAME=VALUE.");
-                }
-                named.put(arg.substring(0, eq), arg.substring(eq + 1));
-            }
+            Map<String, String> named = pairs(spec, args);
             PrintWriter out = spec.commandLine().getOut();
             try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
                 CommandTicket t = a.command(robot, action, named);

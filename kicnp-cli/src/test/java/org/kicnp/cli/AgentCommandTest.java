@@ -276,6 +276,21 @@ class AgentCommandTest {
     }
 
     @Test
+    void proveAndWhy_onAGatewayWithoutAnEngine_sayThereIsNone() {
+        CliRun prove = agent("prove", "Person", "name=ken");
+        assertThat(prove.exitCode()).isEqualTo(1);
+        assertThat(prove.err()).contains("kicnp agent prove: This server runs no inference engine, so it cannot "
+                + "prove or explain.");
+
+        CliRun why = agent("why", "ken");
+        assertThat(why.exitCode()).isEqualTo(1);
+        assertThat(why.err()).contains("kicnp agent why: This server runs no inference engine");
+
+        CliRun unknown = agent("why", "nobody");
+        assertThat(unknown.err()).contains("There is no frame named 'nobody'.");
+    }
+
+    @Test
     void aWrongToken_isRefusedByTheServer_exit1() {
         CliRun r = agent("--as", "intruder", "query", "Person");
 

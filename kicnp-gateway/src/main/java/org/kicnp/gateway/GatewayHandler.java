@@ -143,12 +143,16 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter {
             case Message.Unsubscribe u -> reply(kb.unsubscribe(session, u));
             case Message.Push p -> reply(kb.push(session, p));
             case Message.Pull p -> reply(kb.pull(p));
+            case Message.Prove p -> kb.prove(p).thenAccept(this::reply);
+            case Message.Why w -> kb.why(w).thenAccept(this::reply);
             case Message.ErrorReply e -> LOG.info("Agent {} reports {}: {}", session, e.code(), e.message());
             case Message.AuthResult m -> serverOnly("auth_result");
             case Message.Ack m -> serverOnly("ack");
             case Message.Frames m -> serverOnly("frames");
             case Message.Answer m -> serverOnly("answer");
             case Message.Changed m -> serverOnly("changed");
+            case Message.Proofs m -> serverOnly("proofs");
+            case Message.Explained m -> serverOnly("explained");
         }
     }
 

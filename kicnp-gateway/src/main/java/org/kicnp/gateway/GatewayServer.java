@@ -70,6 +70,17 @@ public final class GatewayServer implements AutoCloseable {
      */
     public static GatewayServer start(GatewayConfig config, AgentDirectory agents, KnowledgeBase kb,
                                       FeedbackListener feedback, Retraction retraction) {
+        return start(config, agents, kb, feedback, retraction, Reasoning.NONE);
+    }
+
+    /**
+     * Starts a gateway over a knowledge base whose agents may also ask an inference engine to prove and explain
+     * ({@code prove}, {@code why}) through {@code reasoning}.
+     *
+     * @throws GatewayException when the address cannot be bound, or the configured transport does not work here
+     */
+    public static GatewayServer start(GatewayConfig config, AgentDirectory agents, KnowledgeBase kb,
+                                      FeedbackListener feedback, Retraction retraction, Reasoning reasoning) {
         requireNonNull(config, "config");
         Transport transport = config.transport();
         try {
@@ -79,7 +90,8 @@ public final class GatewayServer implements AutoCloseable {
         }
         GatewayMetrics metrics = new GatewayMetrics();
         ServerAgent server = ServerAgent.create(config, requireNonNull(agents, "agents"), requireNonNull(kb, "kb"),
-                requireNonNull(feedback, "feedback"), requireNonNull(retraction, "retraction"), metrics);
+                requireNonNull(feedback, "feedback"), requireNonNull(retraction, "retraction"),
+                requireNonNull(reasoning, "reasoning"), metrics);
         ChannelGroup connections = new DefaultChannelGroup("kicnp-agents", GlobalEventExecutor.INSTANCE);
         EventLoopGroup boss = new MultiThreadIoEventLoopGroup(1, transport.ioHandlerFactory());
         EventLoopGroup workers = new MultiThreadIoEventLoopGroup(config.ioThreads(), transport.ioHandlerFactory());

@@ -35,12 +35,14 @@ final class KnowledgeAccess implements KnowledgeListener {
     private final KnowledgeBase kb;
     private final Outbound out;
     private final Retraction retraction;
+    private final Reasoning reasoning;
     private final Set<Session> subscribers = ConcurrentHashMap.newKeySet();
 
-    KnowledgeAccess(KnowledgeBase kb, Outbound out, Retraction retraction) {
+    KnowledgeAccess(KnowledgeBase kb, Outbound out, Retraction retraction, Reasoning reasoning) {
         this.kb = kb;
         this.out = out;
         this.retraction = retraction;
+        this.reasoning = reasoning;
     }
 
     Message query(Message.Query q) {
@@ -109,8 +111,34 @@ final class KnowledgeAccess implements KnowledgeListener {
                     "Frame '" + d.frame() + "' is a class; agents may destroy instances only."));
         }
         return retraction.destroy(d.frame()).handle((removed, failure) -> failure == null
-                ? new Message.Ack(d.id()) : refusal(d.id(), failure instanceof CompletionException c && c.getCause()
-                != null ? c.getCause() : failure));
+                ? new Message.Ack(d.id()) : refusal(d.id(), cause(failure)));
+    }
+
+    /** Backward chaining through the {@link Reasoning}: every answer with its proof, nothing created. */
+    CompletableFuture<Message> prove(Message.Prove p) {
+        if (!kb.contains(p.ofClass())) {
+            return CompletableFuture.completedFuture(unknown(p.id(), p.ofClass()));
+        }
+        return reasoning.prove(p.ofClass(), p.bindings()).handle((proofs, failure) -> failure == null
+                ? new Message.Proofs(p.id(), proofs) : refusal(p.id(), cause(failure)));
+    }
+
+    /** Why an instance exists, through the {@link Reasoning}. */
+    CompletableFuture<Message> why(Message.Why w) {
+        if (!kb.contains(w.instance())) {
+            return CompletableFuture.completedFuture(unknown(w.id(), w.instance()));
+        }
+        return reasoning.why(w.instance()).handle((reason, failure) -> failure == null
+                ? new Message.Explained(w.id(), reason) : refusal(w.id(), cause(failure)));
+    }
+
+    /** Whether an exception's message is a sentence for the agent (the platform's refusals are), not a JDK detail. */
+    private static boolean isSentence(Throwable e) {
+        return e.getMessage() != null && e.getMessage().endsWith(".");
+    }
+
+    private static Throwable cause(Throwable failure) {
+        return failure instanceof CompletionException c && c.getCause() != null ? c.getCause() : failure;
     }
 
     Message subscribe(Session s, Message.Subscribe sub) {
@@ -208,7 +236,7 @@ final class KnowledgeAccess implements KnowledgeListener {
         }
     }
 
-    /** The error answering a change the knowledge base refused. */
+    /** The error answering a request the knowledge base (or the engine) refused. */
     private static ErrorReply refusal(String id, Throwable e) {
         return switch (e) {
             case BatchRejectedException b -> {
@@ -218,6 +246,8 @@ final class KnowledgeAccess implements KnowledgeListener {
             }
             case UnknownFrameException u -> ErrorReply.to(id, ErrorCode.UNKNOWN_FRAME, u.getMessage());
             case KnowledgeException k -> ErrorReply.to(id, ErrorCode.REJECTED, k.getMessage());
+            case IllegalStateException x when isSentence(x) -> ErrorReply.to(id, ErrorCode.REJECTED, x.getMessage());
+            case IllegalArgumentException x when isSentence(x) -> ErrorReply.to(id, ErrorCode.REJECTED, x.getMessage());
             default -> {
                 LOG.warn("A change failed unexpectedly: {}", e.toString());
                 yield ErrorReply.to(id, ErrorCode.REJECTED, "The change failed: " + e.getMessage());

@@ -48,11 +48,12 @@ final class ServerAgent {
 
     /** Wires the server agent and its parts over a knowledge base. */
     static ServerAgent create(GatewayConfig config, AgentDirectory directory, KnowledgeBase kb,
-                              FeedbackListener feedback, Retraction retraction, GatewayMetrics metrics) {
+                              FeedbackListener feedback, Retraction retraction, Reasoning reasoning,
+                              GatewayMetrics metrics) {
         AgentRegistry registry = new AgentRegistry();
         Outbound out = new Outbound(metrics, config.maxShedBeforeDrop());
         RuntimeFrames runtime = new RuntimeFrames(kb, retraction);
-        KnowledgeAccess knowledge = new KnowledgeAccess(kb, out, retraction);
+        KnowledgeAccess knowledge = new KnowledgeAccess(kb, out, retraction, reasoning);
         Commands commands = new Commands(registry, out, runtime, feedback);
         return new ServerAgent(config.serverName(), directory, registry, kb, runtime, out, commands, knowledge);
     }

@@ -23,7 +23,8 @@ final class Wire {
     /** A channel with the real pipeline over a fresh server agent. */
     static EmbeddedChannel channel(GatewayConfig config, AgentDirectory agents, KnowledgeBase kb,
                                    FeedbackListener feedback, GatewayMetrics metrics, ServerAgent[] serverOut) {
-        ServerAgent server = ServerAgent.create(config, agents, kb, feedback, Retraction.removeFrom(kb), metrics);
+        ServerAgent server = ServerAgent.create(config, agents, kb, feedback, Retraction.removeFrom(kb), Reasoning.NONE,
+                metrics);
         kb.addListener(server.knowledge());
         serverOut[0] = server;
         return channel(config, server, metrics);

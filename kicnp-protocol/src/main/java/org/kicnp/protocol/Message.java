@@ -20,7 +20,7 @@ public sealed interface Message {
 
     /** A message that expects an answer echoing its {@link #id()}. */
     sealed interface Request extends Message permits Hello, Register, Relay, Command, Query, Ask, Assert, Destroy,
-            Subscribe, Unsubscribe, Push, Pull {
+            Subscribe, Unsubscribe, Push, Pull, Prove, Why {
         /** The correlation id, chosen by the sender and echoed by the answer. */
         String id();
     }
@@ -233,6 +233,74 @@ public sealed interface Message {
         }
     }
 
+    /**
+     * Backward chaining: every instance of {@code ofClass} (or a class below it) that exists, or that behavior frames
+     * could derive from what exists, whose instance slots hold the instances {@code bindings} names (slot → instance).
+     * Nothing is created and no script runs on the server.
+     */
+    record Prove(String id, String ofClass, Map<String, String> bindings) implements Request {
+        public Prove {
+            requireNonNull(id, "id");
+            requireNonNull(ofClass, "ofClass");
+            bindings = Map.copyOf(bindings);
+        }
+    }
+
+    /** The answers to a {@code prove}, each with its proof. */
+    record Proofs(String id, List<ProofNode> proofs) implements Message {
+        public Proofs {
+            requireNonNull(id, "id");
+            proofs = List.copyOf(proofs);
+        }
+    }
+
+    /**
+     * One step of a proof: an instance that exists ({@code instance} present), or an instance the behavior frame
+     * {@code ofClass} could create, with a proof for each of its required slots and the script conditions the proof
+     * assumes (backward chaining runs no script).
+     */
+    record ProofNode(String ofClass, Optional<String> instance, Map<String, ProofNode> slots, List<String> assumptions) {
+        public ProofNode {
+            requireNonNull(ofClass, "ofClass");
+            requireNonNull(instance, "instance");
+            slots = ordered(slots);
+            assumptions = List.copyOf(assumptions);
+        }
+    }
+
+    /** Why an instance exists. */
+    record Why(String id, String instance) implements Request {
+        public Why {
+            requireNonNull(id, "id");
+            requireNonNull(instance, "instance");
+        }
+    }
+
+    /** The answer to a {@code why}. */
+    record Explained(String id, Reason reason) implements Message {
+        public Explained {
+            requireNonNull(id, "id");
+            requireNonNull(reason, "reason");
+        }
+    }
+
+    /**
+     * Why one instance exists: put in from outside (a stimulus, or knowledge loaded: {@code derived} false, nothing
+     * else), or made by its behavior frame {@code ofClass} firing on {@code binding} (slot → instance), with each
+     * slot condition as it was tested ({@code "slot: condition = value"}) and the reasons of the instances it rests
+     * on, back to the stimuli.
+     */
+    record Reason(String instance, String ofClass, boolean derived, Map<String, String> binding,
+                  List<String> conditions, List<Reason> supports) {
+        public Reason {
+            requireNonNull(instance, "instance");
+            requireNonNull(ofClass, "ofClass");
+            binding = ordered(binding);
+            conditions = List.copyOf(conditions);
+            supports = List.copyOf(supports);
+        }
+    }
+
     /** An error: the answer to the request {@code id} names, or (without an id) about the connection itself. */
     record ErrorReply(Optional<String> id, ErrorCode code, String message) implements Message {
         public ErrorReply {
@@ -250,6 +318,13 @@ public sealed interface Message {
         public static ErrorReply of(ErrorCode code, String message) {
             return new ErrorReply(Optional.empty(), code, message);
         }
+    }
+
+    /** An unmodifiable copy that keeps the given order (a frame's slot order), which {@link Map#copyOf} does not. */
+    private static <V> Map<String, V> ordered(Map<String, V> map) {
+        Map<String, V> copy = new java.util.LinkedHashMap<>(map.size() * 2);
+        map.forEach((k, v) -> copy.put(requireNonNull(k, "key"), requireNonNull(v, "value")));
+        return java.util.Collections.unmodifiableMap(copy);
     }
 
     private static void checkName(String name, String what) {

@@ -29,6 +29,10 @@ public enum MessageType {
     CHANGED(Message.Changed.class),
     PUSH(Message.Push.class),
     PULL(Message.Pull.class),
+    PROVE(Message.Prove.class),
+    PROOFS(Message.Proofs.class),
+    WHY(Message.Why.class),
+    EXPLAINED(Message.Explained.class),
     ERROR(Message.ErrorReply.class);
 
     private static final Map<String, MessageType> BY_WIRE_NAME =

@@ -41,6 +41,16 @@ final class Samples {
                 new Message.Push("11", List.of(FRAME)),
                 new Message.Pull("12", Optional.of("Robot")),
                 new Message.Pull("12", Optional.empty()),
+                new Message.Prove("13", "AskUserName", Map.of("mUser", "userA")),
+                new Message.Proofs("13", List.of(new Message.ProofNode("AskUserName", Optional.empty(), Map.of(
+                        "mUser", new Message.ProofNode("NewUser", Optional.of("userA"), Map.of(), List.of()),
+                        "mMouth", new Message.ProofNode("Mouth", Optional.of("mouth1"), Map.of(), List.of())),
+                        List.of("mMouth: js: s.mMouth.open")))),
+                new Message.Proofs("13", List.of()),
+                new Message.Why("14", "AskUserName-1"),
+                new Message.Explained("14", new Message.Reason("AskUserName-1", "AskUserName", true,
+                        Map.of("mUser", "userA"), List.of("mUser: Any = userA"), List.of(new Message.Reason("userA",
+                        "NewUser", false, Map.of(), List.of(), List.of())))),
                 Message.ErrorReply.to("3", ErrorCode.UNKNOWN_AGENT, "No agent 'pino' is connected."),
                 Message.ErrorReply.of(ErrorCode.BAD_JSON, "The frame is not valid JSON."));
     }

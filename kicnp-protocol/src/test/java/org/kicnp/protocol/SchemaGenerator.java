@@ -82,18 +82,54 @@ final class SchemaGenerator {
             Arrays.stream(c.getEnumConstants()).forEach(e -> values.add(e.toString().toLowerCase(Locale.ROOT)));
         } else if (c == Value.class) {
             n.put("$ref", "#/$defs/value");
+        } else if (NESTED.contains(c)) {
+            n.put("$ref", "#/$defs/" + defName(c));
         } else {
             throw new IllegalStateException("No schema for " + c);
         }
         return n;
     }
 
-    /** Adds the definition of a slot value where a schema refers to it. */
+    /** The records that are parts of messages, not messages: each defined once under {@code $defs}. */
+    private static final java.util.List<Class<?>> NESTED = java.util.List.of(Message.ProofNode.class,
+            Message.Reason.class);
+
+    private static String defName(Class<?> c) {
+        return Character.toLowerCase(c.getSimpleName().charAt(0)) + c.getSimpleName().substring(1);
+    }
+
+    /** The schema of a record that is part of a message: its components, those not optional required. */
+    private static ObjectNode recordSchema(Class<?> c) {
+        ObjectNode s = JSON.createObjectNode();
+        s.put("type", "object");
+        ObjectNode props = s.putObject("properties");
+        ArrayNode required = JSON.createArrayNode();
+        for (RecordComponent rc : c.getRecordComponents()) {
+            Type t = rc.getGenericType();
+            if (rc.getType() == Optional.class) {
+                t = ((ParameterizedType) t).getActualTypeArguments()[0];
+            } else {
+                required.add(rc.getName());
+            }
+            props.set(rc.getName(), typeSchema(t));
+        }
+        s.set("required", required);
+        return s;
+    }
+
+    /** Adds the definitions of a slot value and of the records a schema refers to. */
     static ObjectNode withDefinitions(ObjectNode schema) {
+        for (Class<?> c : NESTED) {
+            if (schema.toString().contains("#/$defs/" + defName(c))) {
+                ObjectNode defs = schema.has("$defs") ? (ObjectNode) schema.get("$defs") : schema.putObject("$defs");
+                defs.set(defName(c), recordSchema(c));
+            }
+        }
         if (!schema.toString().contains("#/$defs/value")) {
             return schema;
         }
-        ObjectNode value = schema.putObject("$defs").putObject("value");
+        ObjectNode defs = schema.has("$defs") ? (ObjectNode) schema.get("$defs") : schema.putObject("$defs");
+        ObjectNode value = defs.putObject("value");
         ArrayNode any = value.putArray("oneOf");
         any.addObject().put("type", "string");
         any.addObject().put("type", "number");

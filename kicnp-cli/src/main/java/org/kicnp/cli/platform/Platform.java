@@ -121,12 +121,14 @@ public final class Platform implements AutoCloseable {
             CommandBridge bridge = new CommandBridge(kb, log);
             TraceLog traceLog = new TraceLog(log);
             EngineRetraction retraction = new EngineRetraction(kb, engineThread);
+            EngineReasoning reasoning = new EngineReasoning(engineThread);
             gateway = GatewayServer.start(GatewayConfig.defaults().withPort(config.gatewayPort())
                     .withTransport(config.gatewayTransport()), directory, kb, bridge,
-                    retraction);
+                    retraction, reasoning);
             engine = InferenceEngine.builder(kb).scripts(new GraalScriptHost(scripts)).actionSink(bridge)
                     .runOn(engineThread).build();
             retraction.attach(engine);
+            reasoning.attach(engine);
             engine.addTraceListener(traceLog);
             kb.addListener(traceLog);
             bridge.connect(gateway.actionSink(), engine);

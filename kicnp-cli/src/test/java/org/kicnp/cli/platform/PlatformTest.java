@@ -1,11 +1,13 @@
 package org.kicnp.cli.platform;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
@@ -14,6 +16,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.kicnp.agent.ActionHandle;
 import org.kicnp.agent.AgentBase;
 import org.kicnp.agent.AgentOptions;
+import org.kicnp.agent.RequestRefusedException;
 import org.kicnp.agent.UserAgent;
 import org.kicnp.cli.scenario.ScenarioFiles;
 import org.kicnp.core.DataType;
@@ -22,6 +25,7 @@ import org.kicnp.core.Slot;
 import org.kicnp.core.Value;
 import org.kicnp.gateway.Transport;
 import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.Message;
 import org.kicnp.protocol.Message.Command;
 
 /**
@@ -145,6 +149,34 @@ class PlatformTest {
 
             assertThat(platform.kb().contains("userA")).isFalse();
             assertThat(derived).isNotEmpty().noneMatch(platform.kb()::contains);
+        }
+    }
+
+    @Test
+    void serve_agentsProveAndAskWhy_throughTheEngine() throws Exception {
+        Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
+        try (Platform platform = Platform.start(PlatformConfig.of(kb).withEphemeralPorts());
+             UserAgent user = new UserAgent(AgentOptions.of("127.0.0.1", platform.gatewayPort(), "user",
+                     AgentKind.USER, platform.token("user")))) {
+            user.startAndAwait(Duration.ofSeconds(10));
+            user.assertFrame(Frame.instance("userA", "NewUser")
+                    .slot(Slot.ofValue("faceText", DataType.STRING, Value.of("0.1,0.2"))).build());
+            await("AskUserName fires for userA", () -> !platform.kb().instancesOf("AskUserName").isEmpty());
+            String asked = platform.kb().instancesOf("AskUserName").getFirst().name();
+
+            // The existing AskUserName is an answer of backward chaining, proved by its own existence.
+            List<Message.ProofNode> proofs = user.prove("AskUserName", Map.of());
+            assertThat(proofs).anySatisfy(p -> assertThat(p.instance()).contains(asked));
+
+            Message.Reason why = user.why(asked);
+            assertThat(why.derived()).isTrue();
+            assertThat(why.ofClass()).isEqualTo("AskUserName");
+            assertThat(why.binding()).containsValue("userA");
+            assertThat(why.supports()).extracting(Message.Reason::instance).contains("userA");
+            assertThat(why).isEqualTo(EngineReasoning.reason(platform.engine().why(asked)));
+
+            assertThatThrownBy(() -> user.why("nobody")).isInstanceOf(RequestRefusedException.class)
+                    .hasMessageContaining("'nobody'");
         }
     }
 
