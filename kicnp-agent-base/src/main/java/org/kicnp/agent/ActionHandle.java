@@ -10,7 +10,8 @@ import org.kicnp.protocol.Message.Feedback;
 
 /**
  * How a robot reports on one command: {@link #started()}, any number of {@link #progress}, then exactly one of
- * {@link #ended} or {@link #failed}. May be used from any thread, also after {@code onCommand} returned.
+ * {@link #ended}, {@link #failed} or {@link #cancelled}. May be used from any thread, also after {@code onCommand}
+ * returned. A cancel asked for while it runs shows in {@link #isCancelRequested()}.
  */
 public final class ActionHandle {
     /** Where feedback goes: the agent's current connection. */
@@ -22,6 +23,9 @@ public final class ActionHandle {
     private final Command command;
     private final Sender sender;
     private final AtomicBoolean done = new AtomicBoolean();
+    /** Why a cancel was asked for, or null; once the command is reported cancelled, later reports are ignored. */
+    private volatile String cancelReason;
+    private volatile boolean reportedCancelled;
 
     ActionHandle(Command command, Sender sender) {
         this.command = requireNonNull(command, "command");
@@ -51,19 +55,54 @@ public final class ActionHandle {
         finish(FeedbackStage.FAILED, reason);
     }
 
+    /**
+     * Reports the command stopped because it was cancelled: {@code failed} with "cancelled: " and the reason. The
+     * robot's work on the command may still be winding down: its later reports (progress, ended, failed) are ignored.
+     */
+    public void cancelled(String reason) {
+        if (done.compareAndSet(false, true)) {
+            reportedCancelled = true;
+            sender.send(new Feedback(command.id(), command.robot(), FeedbackStage.FAILED, Optional.empty(),
+                    "cancelled: " + requireNonNull(reason, "reason")));
+        }
+    }
+
+    /** Whether a cancel was asked for: a long command checks this between its steps and stops early. */
+    public boolean isCancelRequested() {
+        return cancelReason != null;
+    }
+
+    /** Why a cancel was asked for, once one was. */
+    public Optional<String> cancelReason() {
+        return Optional.ofNullable(cancelReason);
+    }
+
+    void cancelRequested(String reason) {
+        cancelReason = reason;
+    }
+
     /** Whether {@link #ended} or {@link #failed} was called. */
     public boolean isDone() {
         return done.get();
     }
 
     private void finish(FeedbackStage stage, String detail) {
+        if (reportedCancelled) {
+            return; // the command was reported cancelled; the robot's work on it has just wound down
+        }
         if (!done.compareAndSet(false, true)) {
+            if (cancelReason != null) {
+                return; // a cancel was asked for: the robot's program and its onCancel may both report the end
+            }
             throw new IllegalStateException("Command '" + command.id() + "' was already reported as done.");
         }
         sender.send(new Feedback(command.id(), command.robot(), stage, Optional.empty(), requireNonNull(detail, "detail")));
     }
 
     private void report(FeedbackStage stage, Optional<Double> fraction, String note) {
+        if (reportedCancelled) {
+            return;
+        }
         if (done.get()) {
             throw new IllegalStateException("Command '" + command.id() + "' is done; no more " 
                     + stage.name().toLowerCase(java.util.Locale.ROOT) + " reports.");

@@ -52,6 +52,8 @@ public abstract class AgentBase implements AutoCloseable {
     private final MessageCodec codec = new MessageCodec();
     private final Map<String, CompletableFuture<Message>> pending = new ConcurrentHashMap<>();
     private final Map<String, CommandTicket> tickets = new ConcurrentHashMap<>();
+    /** The commands this (robot) agent is running, by id, so that a cancel finds its handle. */
+    private final Map<String, ActionHandle> running = new ConcurrentHashMap<>();
     private final Set<String> subscriptions = ConcurrentHashMap.newKeySet();
     private final AtomicLong ids = new AtomicLong();
     /** Relays and changes, in order; when full, the reader waits, so TCP pushes back on the server (which sheds). */
@@ -86,6 +88,16 @@ public abstract class AgentBase implements AutoCloseable {
     /** A command for this robot. Report through {@code handle}, now or later from any thread. */
     protected void onCommand(Command command, ActionHandle handle) {
         handle.failed("Agent '" + name() + "' does not take commands.");
+    }
+
+    /**
+     * A request to stop a command this robot is running ({@code handle.command()}), from a user or service agent or
+     * the platform. Stop the robot, then report through the handle — {@link ActionHandle#cancelled} for the usual
+     * answer. By default the command is reported cancelled at once; the robot's own work on it is not interrupted,
+     * so override this where the robot can stop. Runs on a virtual thread of its own.
+     */
+    protected void onCancel(ActionHandle handle, String reason) {
+        handle.cancelled(reason);
     }
 
     /** A message relayed from another agent. */
@@ -283,6 +295,17 @@ public abstract class AgentBase implements AutoCloseable {
         return ticket;
     }
 
+    /**
+     * Asks that a command in flight on a robot be stopped (a user or service agent: an operator may stop a command
+     * whoever sent it). The outcome arrives as the command's last feedback, on its {@link CommandTicket} for the
+     * agent that sent it.
+     *
+     * @throws RequestRefusedException when no such command is in flight, or this agent may not cancel
+     */
+    public final void cancel(String robot, String commandId, String reason) {
+        request(new Message.Cancel(nextId(), robot, commandId, reason));
+    }
+
     /** Sends frames to the server (a peer agent's push); stored all or none. */
     public final void push(List<Frame> frames) {
         request(new Message.Push(nextId(), FrameText.toXml(frames)));
@@ -429,14 +452,39 @@ public abstract class AgentBase implements AutoCloseable {
                 case Message.Unsubscribe x -> LOG.warn("Agent '{}' ignores an unexpected unsubscribe.", name());
                 case Message.Push x -> LOG.warn("Agent '{}' ignores an unexpected push.", name());
                 case Message.Pull x -> LOG.warn("Agent '{}' ignores an unexpected pull.", name());
+                case Message.Cancel x -> {
+                    ActionHandle h = running.get(x.command());
+                    if (h == null || h.isDone()) {
+                        LOG.debug("Agent '{}': cancel of '{}', which is not running.", name(), x.command());
+                    } else {
+                        h.cancelRequested(x.reason());
+                        Thread.ofVirtual().name("cancel-" + x.command()).start(() -> runCancel(h, x.reason()));
+                    }
+                }
                 case Message.Prove x -> LOG.warn("Agent '{}' ignores an unexpected prove.", name());
                 case Message.Why x -> LOG.warn("Agent '{}' ignores an unexpected why.", name());
             }
         }
     }
 
+    private void runCancel(ActionHandle handle, String reason) {
+        try {
+            onCancel(handle, reason);
+        } catch (NotConnectedException e) {
+            LOG.info("Agent '{}' lost its connection while cancelling '{}'.", name(), handle.command().id());
+        } catch (RuntimeException e) {
+            LOG.warn("Agent '{}' failed to cancel '{}'.", name(), handle.command().id(), e);
+        }
+    }
+
     private void runCommand(Command cmd) {
-        ActionHandle handle = new ActionHandle(cmd, this::send);
+        ActionHandle handle = new ActionHandle(cmd, f -> {
+            if (f.stage().terminal()) {
+                running.remove(cmd.id());
+            }
+            send(f);
+        });
+        running.put(cmd.id(), handle);
         try {
             onCommand(cmd, handle);
         } catch (NotConnectedException e) {

@@ -66,6 +66,7 @@ import picocli.CommandLine.Spec;
             AgentCommand.Watch.class,
             AgentCommand.Send.class,
             AgentCommand.Order.class,
+            AgentCommand.Cancel.class,
         },
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {
@@ -523,29 +524,106 @@ public final class AgentCommand {
                 description = "How long to wait for the action to end (default ${DEFAULT-VALUE}).")
         double waitSeconds;
 
-        @Override public Integer call() {
+        @Override public Integer call() throws InterruptedException {
             Map<String, String> named = pairs(spec, args);
             PrintWriter out = spec.commandLine().getOut();
+            PrintWriter err = spec.commandLine().getErr();
+            long deadline = System.nanoTime() + Math.round(waitSeconds * 1e9);
             try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
                 CommandTicket t = a.command(robot, action, named);
+                err.println("Command '" + t.command().id() + "' sent to '" + robot + "'; Ctrl-C cancels it.");
+                err.flush();
+                // Ctrl-C while it runs cancels it, as a goal is cancelled in ROS, and shows how it ended.
+                Thread onInterrupt = new Thread(() -> cancelAndReport(a, t, "interrupted at the terminal", out),
+                        "kicnp-agent-cancel");
+                Runtime.getRuntime().addShutdownHook(onInterrupt);
+                Printed printed = new Printed();
                 try {
-                    t.result(Duration.ofMillis(Math.round(waitSeconds * 1000)));
-                    return 0;
-                } catch (ActionFailedException e) {
-                    return 1;
-                } finally {
-                    for (Message.Feedback f : t.feedback()) {
-                        ObjectNode o = JSON.createObjectNode();
-                        o.put("id", f.id());
-                        o.put("robot", f.robot());
-                        o.put("stage", f.stage().name().toLowerCase(Locale.ROOT));
-                        f.progress().ifPresent(p -> o.put("progress", p));
-                        o.put("detail", f.detail());
-                        out.println(o);
+                    while (true) {
+                        try {
+                            t.result(Duration.ofMillis(100));
+                            printed.upTo(t, out);
+                            return 0;
+                        } catch (ActionFailedException e) {
+                            printed.upTo(t, out);
+                            return 1;
+                        } catch (org.kicnp.agent.AgentTimeoutException e) {
+                            printed.upTo(t, out);
+                            if (System.nanoTime() > deadline) {
+                                err.println("kicnp agent command: '" + t.command().id() + "' did not end within "
+                                        + waitSeconds + " s; cancelling it.");
+                                cancelAndReport(a, t, "the command line stopped waiting after " + waitSeconds + " s",
+                                        out);
+                                return 1;
+                            }
+                        }
                     }
-                    out.flush();
+                } finally {
+                    try {
+                        Runtime.getRuntime().removeShutdownHook(onInterrupt);
+                    } catch (IllegalStateException shuttingDown) {
+                        // The hook is running: it cancels and reports.
+                    }
                 }
             }
+        }
+
+        /** Cancels the command unless it ended, then prints its feedback up to the end (waiting up to 5 s for it). */
+        private void cancelAndReport(CliAgent a, CommandTicket t, String reason, PrintWriter out) {
+            Printed printed = new Printed();
+            try {
+                a.cancel(robot, t.command().id(), reason);
+                t.result(Duration.ofSeconds(5));
+            } catch (RuntimeException ended) {
+                // Ended or failed meanwhile, refused because it is no longer in flight, or no answer in time.
+            }
+            printed.upTo(t, out);
+        }
+    }
+
+    /** Prints a command's feedback as JSON lines, each once. */
+    private static final class Printed {
+        private int count;
+
+        synchronized void upTo(CommandTicket t, PrintWriter out) {
+            List<Message.Feedback> all = t.feedback();
+            for (; count < all.size(); count++) {
+                Message.Feedback f = all.get(count);
+                ObjectNode o = JSON.createObjectNode();
+                o.put("id", f.id());
+                o.put("robot", f.robot());
+                o.put("stage", f.stage().name().toLowerCase(Locale.ROOT));
+                f.progress().ifPresent(p -> o.put("progress", p));
+                o.put("detail", f.detail());
+                out.println(o);
+            }
+            out.flush();
+        }
+    }
+
+    @Command(name = "cancel", mixinStandardHelpOptions = true,
+            description = "Ask a robot to stop a command in flight (any user agent may, whoever sent it); the command "
+                    + "then ends with feedback 'failed: cancelled: …' to whoever sent it.")
+    static final class Cancel implements Callable<Integer> {
+        @ParentCommand AgentCommand agent;
+        @Spec CommandSpec spec;
+
+        @Parameters(index = "0", paramLabel = "ROBOT", description = "The robot's agent.")
+        String robot;
+
+        @Parameters(index = "1", paramLabel = "COMMAND_ID", description = "The command's id.")
+        String command;
+
+        @Option(names = "--reason", defaultValue = "cancelled from the command line", paramLabel = "TEXT",
+                description = "Why (default: ${DEFAULT-VALUE}).")
+        String reason;
+
+        @Override public Integer call() {
+            try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
+                a.cancel(robot, command, reason);
+            }
+            spec.commandLine().getOut().println("Asked '" + robot + "' to stop '" + command + "'.");
+            return 0;
         }
     }
 }

@@ -291,6 +291,34 @@ class AgentCommandTest {
     }
 
     @Test
+    void command_thatDoesNotEndInTime_isCancelled_andCancelOfNothing_isRefused() throws Exception {
+        try (AgentBase scout = new AgentBase(options("scout", AgentKind.ROBOT)) {
+            @Override protected void onCommand(Command c, ActionHandle h) {
+                h.started();
+                while (!h.isCancelRequested()) {
+                    Thread.onSpinWait();
+                }
+            }
+        }) {
+            scout.startAndAwait(Duration.ofSeconds(10));
+
+            CliRun slow = agent("command", "scout", "walk", "--wait", "1");
+
+            assertThat(slow.exitCode()).isEqualTo(1);
+            assertThat(slow.err()).contains("Ctrl-C cancels it.").contains("did not end within 1.0 s; cancelling it.");
+            JsonNode last = JSON.readTree(slow.outLines().getLast());
+            assertThat(last.get("stage").asText()).isEqualTo("failed");
+            assertThat(last.get("detail").asText())
+                    .isEqualTo("cancelled: the command line stopped waiting after 1.0 s (asked by 'director')");
+            assertThat(server.commandsInFlight()).isZero();
+
+            CliRun none = agent("cancel", "scout", "director-99");
+            assertThat(none.exitCode()).isEqualTo(1);
+            assertThat(none.err()).contains("kicnp agent cancel: No command 'director-99' to 'scout' is in flight.");
+        }
+    }
+
+    @Test
     void aWrongToken_isRefusedByTheServer_exit1() {
         CliRun r = agent("--as", "intruder", "query", "Person");
 

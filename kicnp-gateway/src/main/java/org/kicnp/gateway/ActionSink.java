@@ -16,4 +16,14 @@ public interface ActionSink {
      * @throws IllegalArgumentException when a command with the same id is already in flight on that robot
      */
     void send(Command command);
+
+    /**
+     * Asks the robot to stop a command in flight; its answer is the command's last feedback ({@code failed}, with a
+     * reason that starts with "cancelled", or {@code ended} if it finished first). Never blocks on the network.
+     *
+     * @return false when no such command is in flight (it ended already, or was never sent)
+     */
+    default boolean cancel(String robot, String commandId, String reason) {
+        return false;
+    }
 }

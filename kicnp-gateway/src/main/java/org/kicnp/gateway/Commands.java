@@ -4,6 +4,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 import org.kicnp.core.KnowledgeException;
+import org.kicnp.protocol.AgentKind;
 import org.kicnp.protocol.ErrorCode;
 import org.kicnp.protocol.FeedbackStage;
 import org.kicnp.protocol.Message;
@@ -79,6 +80,28 @@ final class Commands implements ActionSink {
                     "Command '" + c.id() + "' could not be sent: agent '" + c.robot() + "' is not reading."));
         }
         return Optional.empty();
+    }
+
+    @Override public boolean cancel(String robot, String commandId, String reason) {
+        InFlight entry = inFlight.get(key(robot, commandId));
+        return entry != null && out.send(entry.robot(), new Message.Cancel("", robot, commandId, reason));
+    }
+
+    /**
+     * A cancel from an agent: user and service agents may cancel any command in flight (an operator stops a robot
+     * whoever started it); a robot stops its own commands by failing them. Answers {@code ack} once the cancel is on
+     * its way to the robot, whose answer is the command's last feedback.
+     */
+    Message cancelFromAgent(Session from, Message.Cancel c) {
+        if (from.kind() == AgentKind.ROBOT || from.kind() == AgentKind.PEER) {
+            return ErrorReply.to(c.id(), ErrorCode.FORBIDDEN, "Only user and service agents may cancel commands; "
+                    + from + " is a " + from.kind().name().toLowerCase(java.util.Locale.ROOT) + " agent.");
+        }
+        if (!cancel(c.robot(), c.command(), c.reason() + " (asked by '" + from.agent() + "')")) {
+            return ErrorReply.to(c.id(), ErrorCode.REJECTED, "No command '" + c.command() + "' to '" + c.robot()
+                    + "' is in flight.");
+        }
+        return new Message.Ack(c.id());
     }
 
     /** Feedback from a robot's agent. Feedback for no command in flight is logged and dropped. */

@@ -134,6 +134,7 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter {
             case Message.Relay r -> server.relay(session, r).ifPresent(this::reply);
             case Message.Command c -> reply(server.commands().fromAgent(session, c));
             case Message.Feedback f -> server.commands().feedback(session, f);
+            case Message.Cancel c -> reply(server.commands().cancelFromAgent(session, c));
             case Message.SensorSignal s -> server.sensor(session, s).ifPresent(this::reply);
             case Message.Query q -> reply(kb.query(q));
             case Message.Ask a -> reply(kb.ask(a));

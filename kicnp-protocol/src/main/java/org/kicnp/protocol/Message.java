@@ -20,7 +20,7 @@ public sealed interface Message {
 
     /** A message that expects an answer echoing its {@link #id()}. */
     sealed interface Request extends Message permits Hello, Register, Relay, Command, Query, Ask, Assert, Destroy,
-            Subscribe, Unsubscribe, Push, Pull, Prove, Why {
+            Subscribe, Unsubscribe, Push, Pull, Prove, Why, Cancel {
         /** The correlation id, chosen by the sender and echoed by the answer. */
         String id();
     }
@@ -108,6 +108,20 @@ public sealed interface Message {
                 throw new IllegalArgumentException("A command needs an action.");
             }
             args = Map.copyOf(args);
+        }
+    }
+
+    /**
+     * Asks that a command in flight be stopped (a user or service agent to the server; the server to the robot's
+     * agent, with the same command id). The robot decides how to stop and answers with the command's last feedback,
+     * {@code failed} with a reason that starts with "cancelled" (or {@code ended}, when it had already finished).
+     */
+    record Cancel(String id, String robot, String command, String reason) implements Request {
+        public Cancel {
+            requireNonNull(id, "id");
+            checkName(robot, "robot");
+            requireNonNull(command, "command");
+            requireNonNull(reason, "reason");
         }
     }
 

@@ -17,6 +17,7 @@ public enum MessageType {
     RELAY(Message.Relay.class),
     COMMAND(Message.Command.class),
     FEEDBACK(Message.Feedback.class),
+    CANCEL(Message.Cancel.class),
     SENSOR(Message.SensorSignal.class),
     QUERY(Message.Query.class),
     FRAMES(Message.Frames.class),

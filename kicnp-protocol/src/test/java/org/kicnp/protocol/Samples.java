@@ -25,6 +25,7 @@ final class Samples {
                 new Message.Command("c-9", "scout", "fetch", Map.of("item", "tea")),
                 new Message.Feedback("c-9", "scout", FeedbackStage.PROGRESS, Optional.of(0.5), "halfway"),
                 new Message.Feedback("c-9", "scout", FeedbackStage.ENDED, Optional.empty(), "cup delivered"),
+                new Message.Cancel("c-10", "scout", "c-9", "the user changed her mind"),
                 new Message.SensorSignal("scout", "sonar", List.of(Value.of(1.25), Value.of(3L), Value.of(true),
                         Value.of("near"), Value.ref("user1"), new Value.Lst(List.of(Value.of(1L))))),
                 new Message.Query("5", "Robot"),

@@ -11,7 +11,10 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 import java.util.List;
+import java.util.Map;
 import java.util.Objects;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Consumer;
 import java.util.function.Function;
 
@@ -25,6 +28,8 @@ public abstract sealed class RobotAgent extends AgentBase permits RobovieAgent, 
     private static final Logger LOG = LoggerFactory.getLogger(RobotAgent.class);
 
     private final RobotDriver driver;
+    /** The commands running in the simulator, by command id, so that a cancel can halt the robot. */
+    private final Map<String, CompletableFuture<Feedback>> commands = new ConcurrentHashMap<>();
 
     /** {@code driverFor} makes the driver given where its signals go (this agent). */
     RobotAgent(AgentOptions options, Function<Consumer<SensorSignal>, RobotDriver> driverFor) {
@@ -43,7 +48,20 @@ public abstract sealed class RobotAgent extends AgentBase permits RobovieAgent, 
 
     @Override protected void onCommand(Command command, ActionHandle handle) {
         LOG.info("Agent '{}' runs command '{}': {} {}", name(), command.id(), command.action(), command.args());
-        driver.execute(command.action(), command.args(), f -> report(command, handle, f));
+        CompletableFuture<Feedback> running = driver.execute(command.action(), command.args(),
+                f -> report(command, handle, f));
+        if (!running.isDone()) {
+            commands.put(command.id(), running);
+            running.whenComplete((f, e) -> commands.remove(command.id(), running));
+        }
+    }
+
+    /** Halts the robot in the simulator, which ends the action; it is then reported cancelled (see {@link #report}). */
+    @Override protected void onCancel(ActionHandle handle, String reason) {
+        CompletableFuture<Feedback> running = commands.get(handle.command().id());
+        if (running == null || !driver.cancel(running)) {
+            super.onCancel(handle, reason);
+        }
     }
 
     private void report(Command command, ActionHandle handle, Feedback feedback) {
@@ -52,6 +70,11 @@ public abstract sealed class RobotAgent extends AgentBase permits RobovieAgent, 
                 case Feedback.Started s -> handle.started();
                 case Feedback.Progress p -> handle.progress(p.fraction(), p.note());
                 case Feedback.Ended e -> handle.ended(e.result());
+                case Feedback.Failed f when handle.isCancelRequested() -> {
+                    LOG.info("Agent '{}': command '{}' ({}) stopped on a cancel: {}", name(), command.id(),
+                            command.action(), f.reason());
+                    handle.cancelled(handle.cancelReason().orElse(f.reason()));
+                }
                 case Feedback.Failed f -> {
                     LOG.warn("Agent '{}': command '{}' ({}) failed: {}", name(), command.id(), command.action(), f.reason());
                     handle.failed(f.reason());

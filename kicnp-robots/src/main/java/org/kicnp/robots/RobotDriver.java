@@ -33,6 +33,8 @@ public final class RobotDriver implements AutoCloseable {
     private final Consumer<SensorSignal> signals;
     private final Map<String, String> trackNames = new ConcurrentHashMap<>();
     private final AutoCloseable subscription;
+    /** The simulator action behind each command this driver runs, until it ends. */
+    private final Map<CompletableFuture<Feedback>, SimAction> actions = new ConcurrentHashMap<>();
     private volatile FaceVector lastFace;
 
     private RobotDriver(SimWorld world, RobotModel model, Optional<FaceRecognizer> faces, Consumer<SensorSignal> signals) {
@@ -107,17 +109,38 @@ public final class RobotDriver implements AutoCloseable {
         ProgressMeter meter = new ProgressMeter();
         CompletableFuture<Feedback> done = new CompletableFuture<>();
         try {
-            world.command(command, update -> {
+            SimAction running = world.command(command, update -> {
                 Feedback f = toFeedback(update, meter);
                 feedback.accept(f);
                 if (f.terminal()) {
                     done.complete(f);
                 }
             });
+            actions.put(done, running);
+            done.whenComplete((f, e) -> actions.remove(done));
         } catch (SimulatorExitedException e) {
             return finish(feedback, new Feedback.Failed(world.deathReason().orElse(e.getMessage())));
         }
         return done;
+    }
+
+    /**
+     * Stops a command {@link #execute} is running: the simulator halts the robot and ends the action as failed.
+     *
+     * @param command the future {@link #execute} returned
+     * @return false when it is not running (it has ended, or the simulator is gone)
+     */
+    public boolean cancel(CompletableFuture<Feedback> command) {
+        SimAction running = actions.get(command);
+        if (running == null || !world.alive()) {
+            return false;
+        }
+        try {
+            world.request(new SimRequest.Cancel(name(), running.id()));
+            return true;
+        } catch (SimulatorExitedException e) {
+            return false;
+        }
     }
 
     private static CompletableFuture<Feedback> finish(Consumer<Feedback> feedback, Feedback terminal) {

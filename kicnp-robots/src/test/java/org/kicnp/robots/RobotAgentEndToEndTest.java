@@ -136,6 +136,23 @@ class RobotAgentEndToEndTest {
     }
 
     @Test
+    void aUserCancelsScoutsGoTo_theSimulatorHaltsScout_andTheCommandFailsAsCancelled() throws Exception {
+        connect(new ScoutAgent(options("scout", AgentKind.ROBOT), world));
+        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
+        world.call(new SimRequest.SetTimeScale(1));
+        CommandTicket go = alice.command("scout", "ScoutGoTo", Map.of("x", "1", "y", "1"));
+        waitUntil(() -> go.feedback().stream().anyMatch(f -> f.stage() == FeedbackStage.PROGRESS));
+
+        alice.cancel("scout", go.command().id(), "the user changed her mind");
+
+        assertThatThrownBy(() -> go.result(WAIT)).isInstanceOf(ActionFailedException.class)
+                .hasMessage("cancelled: the user changed her mind (asked by 'alice')");
+        // Halted: Scout takes new commands at once (a robot still driving would refuse a second go_to as busy).
+        assertThat(alice.command("scout", "ScoutGoTo", Map.of("x", "6.2", "y", "3.5")).result(WAIT))
+                .contains("\"distance_error_m\"");
+    }
+
+    @Test
     void simulatorKilledMidAction_theCommandFailsWithTheReasonThroughTheGateway() throws Exception {
         connect(new ScoutAgent(options("scout", AgentKind.ROBOT), world));
         UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
