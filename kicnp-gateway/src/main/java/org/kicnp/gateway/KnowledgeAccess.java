@@ -89,6 +89,13 @@ final class KnowledgeAccess implements KnowledgeListener {
             return ErrorReply.to(d.id(), ErrorCode.FORBIDDEN,
                     "Frame '" + d.frame() + "' is a class; agents may destroy instances only.");
         }
+        // The same rule as assert: declared (XML, editor) and learned instances are durable knowledge, and removing
+        // one would erase it from the store for good, so only runtime instances may be destroyed.
+        if (f.get().provenance().durable()) {
+            return ErrorReply.to(d.id(), ErrorCode.FORBIDDEN, "Frame '" + d.frame() + "' is "
+                    + f.get().provenance().name().toLowerCase(java.util.Locale.ROOT)
+                    + " knowledge; agents may destroy runtime instances only.");
+        }
         return apply(d.id(), List.of(new Change.Remove(d.frame())));
     }
 
