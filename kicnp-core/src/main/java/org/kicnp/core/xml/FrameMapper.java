@@ -35,6 +35,9 @@ final class FrameMapper {
     private final TypeLookup types;
     private final List<LoadError> errors;
     private String source;
+    /** The frame being mapped, once its NAME is read, and the slot being mapped: what each error is about. */
+    private String frameName;
+    private String slotName;
 
     FrameMapper(Interner interner, TypeLookup types, List<LoadError> errors) {
         this.interner = interner;
@@ -45,6 +48,8 @@ final class FrameMapper {
     /** Maps the frame, or answers empty after adding what is wrong to the errors. */
     Optional<Frame> map(FrameElement e) {
         source = e.location().source();
+        frameName = null;
+        slotName = null;
         int before = errors.size();
         Optional<Located> nameItem = e.present(FrameTag.NAME);
         if (nameItem.isEmpty()) {
@@ -52,6 +57,7 @@ final class FrameMapper {
             return Optional.empty();
         }
         String name = interner.intern(nameItem.get().stripped());
+        frameName = name;
         boolean instance = flag(e.items().get(FrameTag.ISINSTANCE), new Owner(name, null), "ISINSTANCE", false);
         Frame.Builder b = Frame.builder(name, instance ? FrameKind.INSTANCE : FrameKind.CLASS);
         e.present(FrameTag.ISA).ifPresent(p -> b.parent(interner.intern(p.stripped())));
@@ -90,8 +96,8 @@ final class FrameMapper {
                 slotNames[named++] = slot.name();
                 b.slot(slot);
             } else {
-                error(slotAt(s), "Frame '" + name + "' has a second slot named '" + slot.name()
-                        + "'; slot names must be unique within a frame.");
+                errors.add(LoadError.at(slotAt(s), "Frame '" + name + "' has a second slot named '" + slot.name()
+                        + "'; slot names must be unique within a frame.", name, slot.name()));
             }
         }
         if (errors.size() > before) {
@@ -138,6 +144,15 @@ final class FrameMapper {
         }
         String name = interner.intern(nameItem.get().stripped());
         Owner where = new Owner(frame, name);
+        slotName = name;
+        try {
+            return slot(fe, s, name, where);
+        } finally {
+            slotName = null;
+        }
+    }
+
+    private Slot slot(FrameElement fe, SlotElement s, String name, Owner where) {
         int before = errors.size();
         DataType type = type(fe, s, name, where);
         if (type == null) {
@@ -261,7 +276,7 @@ final class FrameMapper {
         try {
             return Optional.of(ConditionParser.parse(c.text()));
         } catch (ConditionSyntaxException x) {
-            errors.add(LoadError.at(conditionAt(c, x.column()), where + ": " + x.getMessage()));
+            error(conditionAt(c, x.column()), where + ": " + x.getMessage());
             return Optional.empty();
         }
     }
@@ -369,7 +384,7 @@ final class FrameMapper {
     }
 
     private void error(SourceLocation at, String message) {
-        errors.add(LoadError.at(at, message));
+        errors.add(LoadError.at(at, message, frameName, slotName));
     }
 
     /** The frame or slot an error is about; its text is only built when an error is reported. */

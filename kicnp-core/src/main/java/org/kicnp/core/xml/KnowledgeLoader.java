@@ -155,7 +155,7 @@ public final class KnowledgeLoader {
             } else {
                 at = p.sourced().location();
             }
-            errors.add(LoadError.at(at, problem.message()));
+            errors.add(LoadError.at(at, problem));
         }
         errors.sort(java.util.Comparator.comparing(LoadError::source).thenComparingInt(LoadError::line)
                 .thenComparingInt(LoadError::column));

@@ -122,7 +122,7 @@ final class LoadSession {
             SourceLocation first = seen.putIfAbsent(name.get(), e.location());
             if (first != null) {
                 errors.add(LoadError.at(e.location(), "Frame '" + name.get() + "' is defined twice: here and at "
-                        + first + "."));
+                        + first + ".", name.get(), null));
                 return;
             }
             e.present(FrameTag.DESCENDANTS).ifPresent(d -> descendants.put(name.get(), d));
@@ -232,7 +232,7 @@ final class LoadSession {
         }
         if (declared.items().isEmpty()) {
             errors.add(LoadError.at(declared.at(sourceOf(name)), "DESCENDANTS of frame '" + name
-                    + "' lists its frames as FRAME or ITEM elements, not as text."));
+                    + "' lists its frames as FRAME or ITEM elements, not as text.", name, null));
             return;
         }
         Set<String> derived = new LinkedHashSet<>();
@@ -247,7 +247,7 @@ final class LoadSession {
         if (!new HashSet<>(listed).equals(new HashSet<>(derived))) {
             errors.add(LoadError.at(declared.at(sourceOf(name)), "Frame '" + name + "' lists DESCENDANTS "
                     + quote(listed) + ", but the frames that are a kind of it are " + quote(derived)
-                    + "; descendants are derived from ISA, so list them exactly or leave DESCENDANTS empty."));
+                    + "; descendants are derived from ISA, so list them exactly or leave DESCENDANTS empty.", name, null));
         }
     }
 
