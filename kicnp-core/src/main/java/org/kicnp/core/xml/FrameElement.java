@@ -4,9 +4,13 @@ import java.util.EnumMap;
 import java.util.List;
 import java.util.Optional;
 
-/** A FRAME element as read, before mapping: its simple items by tag, its links and slots, and where it starts. */
+/**
+ * A FRAME element as read, before mapping: its simple items by tag, its links and slots, where it starts, and whether
+ * reading it found structural mistakes (unknown, repeated or misplaced elements, which are skipped), so that what was
+ * read may not be all the frame says.
+ */
 record FrameElement(SourceLocation location, EnumMap<FrameTag, Located> items, List<LinkElement> linksTo,
-        List<LinkElement> linksFrom, List<SlotElement> slots) {
+        List<LinkElement> linksFrom, List<SlotElement> slots, boolean damaged) {
 
     /** The item if it is given and not empty or NULL. */
     Optional<Located> present(FrameTag tag) {

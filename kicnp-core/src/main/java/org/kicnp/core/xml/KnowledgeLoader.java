@@ -14,7 +14,10 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.function.Function;
 import org.kicnp.core.BatchRejectedException;
+import org.kicnp.core.Change;
+import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Problem;
 import org.kicnp.core.StagedBatch;
@@ -72,7 +75,7 @@ public final class KnowledgeLoader {
      * @throws KnowledgeXmlException listing every error found
      */
     public static List<SourcedFrame> parse(List<Path> filesOrDirs, KnowledgeBase context) {
-        return sourced(parseFiles(filesOrDirs, context, null));
+        return sourced(parseFiles(filesOrDirs, context, null, null));
     }
 
     /**
@@ -96,7 +99,9 @@ public final class KnowledgeLoader {
 
     /**
      * Reads all the files and adds their frames to {@code kb} in one batch. On any error (in the XML, in a value, or
-     * against the frame model, such as an unknown parent or an IS-A cycle) nothing is added.
+     * against the frame model, such as an unknown parent or an IS-A cycle) nothing is added. When some frames have
+     * errors in the XML, the others are still checked against the frame model and their problems reported too,
+     * except those that may only follow from a frame with errors (see {@link LoadSession}).
      *
      * @return the frames added, in file order
      * @throws KnowledgeXmlException listing every error, each at the element it concerns
@@ -105,7 +110,11 @@ public final class KnowledgeLoader {
         requireNonNull(kb, "kb");
         // Frames go to the batch as they are mapped, so the knowledge base checks them while the files are read.
         StagedBatch batch = kb.stagedBatch();
-        List<ParsedFrame> parsed = parseFiles(filesOrDirs, kb, batch);
+        List<ParsedFrame> parsed = parseFiles(filesOrDirs, kb, batch, frames -> {
+            List<Change> adds = new ArrayList<>(frames.size());
+            frames.forEach(f -> adds.add(new Change.Add(f)));
+            return kb.problems(adds);
+        });
         try {
             batch.commit();
         } catch (BatchRejectedException e) {
@@ -114,7 +123,8 @@ public final class KnowledgeLoader {
         return sourced(parsed);
     }
 
-    private static List<ParsedFrame> parseFiles(List<Path> filesOrDirs, KnowledgeBase context, StagedBatch target) {
+    private static List<ParsedFrame> parseFiles(List<Path> filesOrDirs, KnowledgeBase context, StagedBatch target,
+            Function<List<Frame>, List<Problem>> check) {
         requireNonNull(context, "context");
         List<Path> files = expand(filesOrDirs);
         long bytes = 0;
@@ -125,7 +135,7 @@ public final class KnowledgeLoader {
                 // Reported with its location when the file is read.
             }
         }
-        LoadSession session = new LoadSession(context, bytes > PIPELINE_CHARS, target);
+        LoadSession session = new LoadSession(context, bytes > PIPELINE_CHARS, target, check);
         try {
             for (Path f : files) {
                 session.readFile(f);
@@ -144,22 +154,30 @@ public final class KnowledgeLoader {
         }
         List<LoadError> errors = new ArrayList<>(e.problems().size());
         for (Problem problem : e.problems()) {
-            ParsedFrame p = byName.get(problem.frame());
-            SourceLocation at;
-            if (p == null) {
-                at = new SourceLocation("(knowledge base)", 1, 1);
-            } else if (problem.slot().isPresent()) {
-                at = p.slot(problem.slot().get());
-            } else if (problem.message().contains("' is a kind of '") && p.isa().isPresent()) {
-                at = p.isa().get();
-            } else {
-                at = p.sourced().location();
-            }
-            errors.add(LoadError.at(at, problem));
+            errors.add(locate(problem, byName.get(problem.frame())));
         }
         errors.sort(java.util.Comparator.comparing(LoadError::source).thenComparingInt(LoadError::line)
                 .thenComparingInt(LoadError::column));
         return new KnowledgeXmlException(errors);
+    }
+
+    /**
+     * A problem of the frame model at the element it concerns: the slot, the ISA, or the frame.
+     *
+     * @param p the frame the problem is about, or null when it was not read
+     */
+    static LoadError locate(Problem problem, ParsedFrame p) {
+        SourceLocation at;
+        if (p == null) {
+            at = new SourceLocation("(knowledge base)", 1, 1);
+        } else if (problem.slot().isPresent()) {
+            at = p.slot(problem.slot().get());
+        } else if (problem.message().contains("' is a kind of '") && p.isa().isPresent()) {
+            at = p.isa().get();
+        } else {
+            at = p.sourced().location();
+        }
+        return LoadError.at(at, problem);
     }
 
     private static List<SourcedFrame> sourced(List<ParsedFrame> parsed) {
