@@ -69,6 +69,11 @@ public final class InferCommand implements Callable<Integer> {
                     + String.join(" ", asserts) + " here. Give the knowledge base first: kicnp infer KB --assert "
                     + "FILE_OR_XML..."));
         }
+        if (asserts.stream().anyMatch(String::isBlank)) {
+            // Taken as a path, an empty value would be the working directory, and every file in it asserted.
+            throw new CommandLine.ParameterException(spec.commandLine(), "--assert got an empty value; give an XML "
+                    + "file or XML text starting with '<'.");
+        }
         if (maxFirings < 1) {
             throw new CommandLine.ParameterException(spec.commandLine(),
                     "--max-firings must be at least 1, not " + maxFirings + ".");

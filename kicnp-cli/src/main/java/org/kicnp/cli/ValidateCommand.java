@@ -55,9 +55,11 @@ public final class ValidateCommand implements Callable<Integer> {
     }
 
     private int validate(PrintWriter out) {
-        List<Path> missing = paths.stream().filter(p -> !Files.exists(p)).toList();
+        // An empty argument would be the working directory to Files.exists and expand.
+        List<Path> missing = paths.stream().filter(p -> p.toString().isEmpty() || !Files.exists(p)).toList();
         if (!missing.isEmpty()) {
-            missing.forEach(p -> out.println(p + ": no such file or directory."));
+            missing.forEach(p -> out.println(p.toString().isEmpty() ? "'': " + KnowledgeLoader.EMPTY_PATH
+                    : p + ": no such file or directory."));
             out.println("FAILED: " + plural(missing.size(), "path") + " not found; nothing was loaded.");
             return 1;
         }
@@ -66,6 +68,10 @@ public final class ValidateCommand implements Callable<Integer> {
             files = KnowledgeLoader.expand(paths);
         } catch (UncheckedIOException e) {
             out.println("FAILED: the knowledge files could not be listed: " + e.getCause().getMessage());
+            return 1;
+        } catch (KnowledgeXmlException e) { // a path removed since it was looked at, or a directory not readable
+            e.errors().forEach(err -> out.println(err.format()));
+            out.println("FAILED: the knowledge files could not be listed; nothing was loaded.");
             return 1;
         }
         if (files.isEmpty()) {

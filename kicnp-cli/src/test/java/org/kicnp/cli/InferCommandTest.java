@@ -105,6 +105,25 @@ class InferCommandTest {
     }
 
     @Test
+    void infer_withAnEmptyAssert_isAUsageErrorRatherThanAssertingTheWorkingDirectory() {
+        Result r = run("infer", TABLE5, "--assert", NEW_USER, "");
+
+        assertThat(r.code()).isEqualTo(2);
+        assertThat(r.err()).contains("--assert got an empty value; give an XML file or XML text starting with '<'.");
+        assertThat(r.out()).doesNotContain("Created");
+    }
+
+    @Test
+    void infer_withAnEmptyKnowledgeBasePath_failsRatherThanLoadingTheWorkingDirectory() {
+        Result r = run("infer", TABLE5, "", "--assert", NEW_USER);
+
+        assertThat(r.code()).isEqualTo(1);
+        assertThat(r.err()).contains("infer: '':1:1: An empty path names no file or directory; write '.' for the "
+                + "current directory.");
+        assertThat(r.out()).doesNotContain("Created");
+    }
+
+    @Test
     void infer_withMaxFiringsBelowOne_isAUsageErrorNamingTheOption() {
         Result r = run("infer", TABLE5, "--max-firings", "-5");
 

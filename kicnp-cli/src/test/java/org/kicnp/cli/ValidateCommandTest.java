@@ -146,6 +146,17 @@ class ValidateCommandTest {
     }
 
     @Test
+    void validate_whenAPathIsEmpty_saysSoInsteadOfCheckingTheWorkingDirectory() throws IOException {
+        Files.writeString(dir.resolve("base.xml"), BASE);
+
+        CliRun run = CliRun.of("validate", dir.toString(), "");
+
+        assertThat(run.exitCode()).isEqualTo(1);
+        assertThat(run.out()).contains("'': An empty path names no file or directory; write '.' for the current "
+                + "directory.").contains("FAILED: 1 path not found; nothing was loaded.").doesNotContain("OK");
+    }
+
+    @Test
     void validate_whenDirectoryHasNoKnowledgeFiles_fails() {
         CliRun run = CliRun.of("validate", dir.toString());
 

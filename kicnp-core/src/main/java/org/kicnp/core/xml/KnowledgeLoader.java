@@ -30,6 +30,9 @@ import org.kicnp.core.StagedBatch;
  * column in one {@link KnowledgeXmlException}.
  */
 public final class KnowledgeLoader {
+    /** What an empty path, which Java would take for the working directory, is told. */
+    public static final String EMPTY_PATH = "An empty path names no file or directory; write '.' for the current "
+            + "directory.";
     /** Inputs larger than this are mapped on a second thread while they are read. */
     static final long PIPELINE_CHARS = 4L * 1024 * 1024;
 
@@ -40,7 +43,7 @@ public final class KnowledgeLoader {
      * The knowledge files named by the arguments: a file stands for itself, a directory for every {@code *.xml}
      * file below it (recursively, sorted by path, skipping hidden files and directories such as {@code .kicnp}).
      *
-     * @throws KnowledgeXmlException naming every path that does not exist
+     * @throws KnowledgeXmlException naming every path that does not exist, and any empty path
      */
     public static List<Path> expand(List<Path> filesOrDirs) {
         requireNonNull(filesOrDirs, "filesOrDirs");
@@ -48,7 +51,10 @@ public final class KnowledgeLoader {
         List<LoadError> errors = new ArrayList<>();
         Set<Path> seen = new HashSet<>();
         for (Path p : filesOrDirs) {
-            if (Files.isDirectory(p)) {
+            if (p.toString().isEmpty()) {
+                // Path.of("") is the working directory: an empty argument (an unset shell variable) would load it.
+                errors.add(new LoadError("''", 1, 1, EMPTY_PATH));
+            } else if (Files.isDirectory(p)) {
                 for (Path f : xmlFilesBelow(p, errors)) {
                     if (seen.add(f.toAbsolutePath().normalize())) {
                         out.add(f);

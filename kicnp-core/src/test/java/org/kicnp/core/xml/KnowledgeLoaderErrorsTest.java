@@ -432,6 +432,15 @@ class KnowledgeLoaderErrorsTest {
     }
 
     @Test
+    void expand_whenAPathIsEmpty_refusesItRatherThanListingTheWorkingDirectory() throws IOException {
+        Path a = file("a.xml", kb(classFrame("A", null)));
+
+        assertThatThrownBy(() -> KnowledgeLoader.expand(List.of(a, Path.of(""))))
+                .isInstanceOf(KnowledgeXmlException.class)
+                .hasMessage("'':1:1: An empty path names no file or directory; write '.' for the current directory.");
+    }
+
+    @Test
     void expand_whenPathMissing_namesIt() {
         Path missing = dir.resolve("nope.xml");
 
