@@ -116,13 +116,24 @@ public final class InferCommand implements Callable<Integer> {
                 assertInstances(kb, a);
                 engine.runToQuiescence();
             }
-            print(out, kb, created, sent);
+            // Every question is answered before anything is printed, so a class that is not there fails the
+            // command without leaving half its report (an "Answers for" heading with nothing under it) on stdout.
+            Map<String, List<Answer>> answers = new LinkedHashMap<>();
             for (String cls : asks) {
+                Frame asked = kb.frame(cls).orElseThrow(() -> new IllegalArgumentException("--ask names '" + cls
+                        + "', which is not a frame of the knowledge base."));
+                if (asked.isInstance()) {
+                    throw new IllegalArgumentException("--ask takes a class, but '" + cls + "' is an instance.");
+                }
+                answers.put(cls, engine.ask(cls, Map.of()));
+            }
+            print(out, kb, created, sent);
+            answers.forEach((cls, list) -> {
                 out.println("Answers for " + cls + ":");
-                for (Answer a : engine.ask(cls, Map.of())) {
+                for (Answer a : list) {
                     out.println("  " + a.instance().orElse("(derivable " + a.className() + ")") + " " + a.slots());
                 }
-            }
+            });
             out.flush();
             return 0;
         } catch (KnowledgeException | InferenceException | IllegalArgumentException e) {

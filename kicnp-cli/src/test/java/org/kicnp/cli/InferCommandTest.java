@@ -124,6 +124,19 @@ class InferCommandTest {
     }
 
     @Test
+    void infer_askingForAFrameThatIsNotAClass_failsWithAMessageAndNoHalfReport() {
+        Result unknown = run("infer", TABLE5, "--assert", NEW_USER, "--ask", "AskUserName", "--ask", "Nope");
+        Result instance = run("infer", TABLE5, "--ask", "RobovieMouth");
+
+        assertThat(unknown.code()).isEqualTo(1);
+        assertThat(unknown.err()).contains("infer: --ask names 'Nope', which is not a frame of the knowledge base.");
+        assertThat(unknown.out()).doesNotContain("Answers for");
+        assertThat(instance.code()).isEqualTo(1);
+        assertThat(instance.err()).contains("infer: --ask takes a class, but 'RobovieMouth' is an instance.");
+        assertThat(instance.out()).doesNotContain("Answers for");
+    }
+
+    @Test
     void infer_withMaxFiringsBelowOne_isAUsageErrorNamingTheOption() {
         Result r = run("infer", TABLE5, "--max-firings", "-5");
 
