@@ -164,7 +164,7 @@ public final class KnowledgeLoader {
         }
         errors.sort(java.util.Comparator.comparing(LoadError::source).thenComparingInt(LoadError::line)
                 .thenComparingInt(LoadError::column));
-        return new KnowledgeXmlException(errors);
+        return new KnowledgeXmlException(errors, sourced(parsed));
     }
 
     /**

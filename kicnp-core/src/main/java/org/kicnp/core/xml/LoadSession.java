@@ -233,7 +233,13 @@ final class LoadSession {
             if (check != null && whole) {
                 errors.addAll(problemsOfTheRest());
             }
-            throw new KnowledgeXmlException(inDocumentOrder());
+            List<SourcedFrame> read = new ArrayList<>(parsed.size());
+            for (ParsedFrame p : parsed) {
+                if (p != null && !failed.contains(p.sourced().frame().name())) {
+                    read.add(p.sourced());
+                }
+            }
+            throw new KnowledgeXmlException(inDocumentOrder(), read);
         }
         if (target != null) {
             stream();
