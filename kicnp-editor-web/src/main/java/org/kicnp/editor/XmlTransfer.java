@@ -44,7 +44,7 @@ final class XmlTransfer implements Features.Xml {
                 new ApiException(400, "Importing needs the XML text in the field 'xml'."));
         List<SourcedFrame> frames;
         try {
-            frames = KnowledgeLoader.parseText(xml, SOURCE, kb);
+            frames = KnowledgeLoader.parseTextToPut(xml, SOURCE, kb);
         } catch (KnowledgeXmlException e) {
             throw located(e.errors());
         }

@@ -91,10 +91,31 @@ public final class KnowledgeLoader {
      * @throws KnowledgeXmlException listing every error found
      */
     public static List<SourcedFrame> parseText(String xml, String sourceName, KnowledgeBase context) {
+        return parseText(xml, sourceName, context, null);
+    }
+
+    /**
+     * Reads frames from text that the caller is to put (add, or replace where the name exists) into {@code kb} in
+     * one batch, as the editor's import does. When some frames have errors in the XML, the others are checked as
+     * such a batch would be and their problems reported with the errors, as {@link #load} does.
+     *
+     * @throws KnowledgeXmlException listing every error found
+     */
+    public static List<SourcedFrame> parseTextToPut(String xml, String sourceName, KnowledgeBase kb) {
+        requireNonNull(kb, "kb");
+        return parseText(xml, sourceName, kb, frames -> {
+            List<Change> puts = new ArrayList<>(frames.size());
+            frames.forEach(f -> puts.add(new Change.Put(f)));
+            return kb.problems(puts);
+        });
+    }
+
+    private static List<SourcedFrame> parseText(String xml, String sourceName, KnowledgeBase context,
+            Function<List<Frame>, List<Problem>> check) {
         requireNonNull(xml, "xml");
         requireNonNull(sourceName, "sourceName");
         requireNonNull(context, "context");
-        LoadSession session = new LoadSession(context, xml.length() > PIPELINE_CHARS, null);
+        LoadSession session = new LoadSession(context, xml.length() > PIPELINE_CHARS, null, check);
         try {
             session.readText(xml, sourceName);
             return sourced(session.finish());
