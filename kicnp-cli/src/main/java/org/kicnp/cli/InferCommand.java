@@ -15,6 +15,7 @@ import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.KnowledgeException;
 import org.kicnp.core.Provenance;
 import org.kicnp.core.xml.KnowledgeLoader;
+import org.kicnp.core.xml.KnowledgeXmlException;
 import org.kicnp.core.xml.SourcedFrame;
 import org.kicnp.inference.Action;
 import org.kicnp.inference.Answer;
@@ -89,7 +90,13 @@ public final class InferCommand implements Callable<Integer> {
                 return 1;
             }
             KnowledgeBase kb = KnowledgeBase.create();
-            List<SourcedFrame> declared = KnowledgeLoader.parse(files, kb);
+            List<SourcedFrame> declared;
+            try {
+                declared = KnowledgeLoader.parse(files, kb);
+            } catch (KnowledgeXmlException e) {
+                // The load below fails too, and reports these errors with the frame-model problems of the others.
+                declared = e.framesRead();
+            }
             if (declared.stream().noneMatch(s -> s.frame().name().equals(InferenceEngine.FEEDBACK_CLASS))) {
                 kb.add(InferenceEngine.feedbackClass());
             }

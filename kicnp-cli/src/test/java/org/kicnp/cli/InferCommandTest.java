@@ -137,6 +137,22 @@ class InferCommandTest {
     }
 
     @Test
+    void infer_whenTheKnowledgeBaseHasXmlErrorsAndFrameProblems_reportsBothAtOnce(@TempDir Path dir) throws Exception {
+        Path kb = Files.writeString(dir.resolve("kb.xml"), """
+                <KNOWLEDGEBASE>
+                  <FRAME><NAME>Cup</NAME><ISINSTANCE>perhaps</ISINSTANCE></FRAME>
+                  <FRAME><NAME>Spill</NAME><ISA>Acident</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>
+                </KNOWLEDGEBASE>
+                """);
+
+        Result r = run("infer", kb.toString(), "--assert", NEW_USER);
+
+        assertThat(r.code()).isEqualTo(1);
+        assertThat(r.err()).contains(kb + ":2:26: Frame 'Cup' has ISINSTANCE 'perhaps', which is not a boolean")
+                .contains(kb + ":3:28: Frame 'Spill' is a kind of 'Acident', which is not defined.");
+    }
+
+    @Test
     void infer_withMaxFiringsBelowOne_isAUsageErrorNamingTheOption() {
         Result r = run("infer", TABLE5, "--max-firings", "-5");
 
