@@ -230,6 +230,23 @@ class KnowledgeLoaderErrorsTest {
     }
 
     @Test
+    void load_whenAListedDescendantHasXmlErrors_doesNotAlsoCallTheListWrong() throws IOException {
+        Path a = file("a.xml", """
+                <KNOWLEDGEBASE>
+                  <FRAME><NAME>Robot</NAME><DESCENDANTS><FRAME>Scout</FRAME><FRAME>Pino</FRAME></DESCENDANTS></FRAME>
+                  <FRAME><NAME>Scout</NAME><ISA>Robot</ISA><ISINSTANCE>maybe</ISINSTANCE></FRAME>
+                  <FRAME><NAME>Pino</NAME><ISA>Robot</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>
+                  <FRAME><NAME>Aibo</NAME><DESCENDANTS><FRAME>Pino</FRAME></DESCENDANTS></FRAME>
+                </KNOWLEDGEBASE>
+                """);
+
+        assertThat(errors(List.of(a))).containsExactly(
+                a + ":3:44: Frame 'Scout' has ISINSTANCE 'maybe', which is not a boolean; write TRUE or FALSE.",
+                a + ":5:27: Frame 'Aibo' lists DESCENDANTS 'Pino', but the frames that are a kind of it are none; "
+                        + "descendants are derived from ISA, so list them exactly or leave DESCENDANTS empty.");
+    }
+
+    @Test
     void load_whenAFileIsNotWellFormed_reportsOnlyTheXmlErrors() throws IOException {
         Path a = file("a.xml", "<KNOWLEDGEBASE>\n  <FRAME>\n    <NAME>Machine</NAM>\n  </FRAME>\n</KNOWLEDGEBASE>\n");
         Path b = file("b.xml", kb(classFrame("Robot", "Machine")));
