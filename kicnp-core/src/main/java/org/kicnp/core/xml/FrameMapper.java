@@ -24,9 +24,13 @@ import org.kicnp.core.Value;
  */
 final class FrameMapper {
 
-    /** Finds the type a slot is declared with on a frame or above it. */
+    /** Finds how a slot is declared on a frame or above it. */
     interface TypeLookup {
+        /** The type of the nearest declaration of the slot at or above the frame. */
         Optional<DataType> declaredType(String frame, String slot);
+
+        /** The nearest ARGUMENT given for the slot at or above the frame. */
+        Optional<String> declaredArgument(String frame, String slot);
     }
 
     private static final List<DataType> TYPES = List.of(DataType.values());
@@ -173,16 +177,22 @@ final class FrameMapper {
         }
         Located value = present(s, SlotTag.VALUE, type);
         Located dflt = present(s, SlotTag.DEFAULT, type);
+        // A list's items take the type its ARGUMENT names; a slot that gives none inherits the nearest one above, as
+        // the knowledge base's declarations do (an instance's face list of its class's TYPE_FLOAT items).
+        Optional<String> itemArgument = argument;
+        if (type == DataType.LIST && argument.isEmpty() && (value != null || dflt != null)) {
+            itemArgument = fe.present(FrameTag.ISA).flatMap(p -> types.declaredArgument(p.stripped(), name));
+        }
         if (value != null && dflt != null) {
             error(dflt.at(source), where + " has both a VALUE and a DEFAULT; the paper allows one or the other "
                     + "(Table 2).");
         } else if (value != null) {
-            Value v = value(value, type, argument, where, "VALUE");
+            Value v = value(value, type, itemArgument, where, "VALUE");
             if (v != null) {
                 b.value(v);
             }
         } else if (dflt != null) {
-            Value v = value(dflt, type, argument, where, "DEFAULT");
+            Value v = value(dflt, type, itemArgument, where, "DEFAULT");
             if (v != null) {
                 b.defaultValue(v);
             }

@@ -52,7 +52,15 @@ final class LoadSession {
     private final Consumer<FrameElement> sink;
     private final MappingPipeline pipeline;
     private final Interner interner = new Interner();
-    private final FrameMapper mapper = new FrameMapper(interner, this::declaredType, errors);
+    private final FrameMapper mapper = new FrameMapper(interner, new FrameMapper.TypeLookup() {
+        @Override public Optional<DataType> declaredType(String frame, String slot) {
+            return LoadSession.this.declaredType(frame, slot);
+        }
+
+        @Override public Optional<String> declaredArgument(String frame, String slot) {
+            return LoadSession.this.declaredArgument(frame, slot);
+        }
+    }, errors);
     private final List<ParsedFrame> parsed = new ArrayList<>();
     private final List<FrameElement> pending = new ArrayList<>();
     private final List<Integer> pendingSlots = new ArrayList<>();
@@ -372,6 +380,43 @@ final class LoadSession {
 
     private static String quote(Set<String> names) {
         return names.isEmpty() ? "none" : "'" + String.join("', '", names) + "'";
+    }
+
+    /**
+     * The nearest ARGUMENT given for {@code slot} on {@code frame} or above it, among the frames read (mapped or not)
+     * and then the context: what the knowledge base's declarations give the slot.
+     */
+    private Optional<String> declaredArgument(String frame, String slot) {
+        Set<String> visited = new HashSet<>();
+        String current = frame;
+        while (current != null && visited.add(current)) {
+            Frame f = byName.get(current);
+            if (f == null && !unmapped.containsKey(current)) {
+                f = context.frame(current).orElse(null);
+            }
+            if (f != null) {
+                Optional<String> own = f.ownSlot(slot).flatMap(Slot::argument);
+                if (own.isPresent()) {
+                    return own;
+                }
+                current = f.parent().orElse(null);
+                continue;
+            }
+            FrameElement e = unmapped.get(current);
+            if (e == null) {
+                return Optional.empty();
+            }
+            for (SlotElement s : e.slots()) {
+                if (s.present(SlotTag.NAME).filter(n -> n.stripped().equals(slot)).isPresent()) {
+                    Optional<Located> a = s.present(SlotTag.ARGUMENT);
+                    if (a.isPresent()) {
+                        return Optional.of(a.get().stripped());
+                    }
+                }
+            }
+            current = e.present(FrameTag.ISA).map(Located::stripped).orElse(null);
+        }
+        return Optional.empty();
     }
 
     /** The type of {@code slot} as declared on {@code frame} or the nearest frame above it that declares it. */
