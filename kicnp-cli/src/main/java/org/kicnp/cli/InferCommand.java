@@ -158,6 +158,12 @@ public final class InferCommand implements Callable<Integer> {
         List<SourcedFrame> frames = source.stripLeading().startsWith("<")
                 ? KnowledgeLoader.parseText(source, "--assert", kb)
                 : KnowledgeLoader.parse(List.of(Path.of(source)), kb);
+        if (frames.isEmpty()) {
+            // As the editor's import says: asserting nothing would run the engine on no stimulus and look like a
+            // quiet success.
+            throw new IllegalArgumentException("--assert " + abbreviate(source.strip())
+                    + " holds no FRAME element; nothing was asserted.");
+        }
         List<Change> adds = new ArrayList<>();
         for (SourcedFrame s : frames) {
             Frame f = s.frame();
@@ -168,6 +174,10 @@ public final class InferCommand implements Callable<Integer> {
             adds.add(new Change.Add(f.toBuilder().provenance(Provenance.RUNTIME).build()));
         }
         kb.apply(adds);
+    }
+
+    private static String abbreviate(String text) {
+        return text.length() <= 60 ? text : text.substring(0, 57) + "...";
     }
 
     private static void print(PrintWriter out, KnowledgeBase kb, Map<String, String> created, List<Action> sent) {

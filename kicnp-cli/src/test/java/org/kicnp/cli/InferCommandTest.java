@@ -153,6 +153,20 @@ class InferCommandTest {
     }
 
     @Test
+    void infer_whenAnAssertHoldsNoFrame_failsRatherThanRunningOnNothing(@TempDir Path dir) throws Exception {
+        Path empty = Files.writeString(dir.resolve("none.xml"), "<KNOWLEDGEBASE>\n</KNOWLEDGEBASE>\n");
+
+        Result text = run("infer", TABLE5, "--assert", "<KNOWLEDGEBASE/>");
+        Result file = run("infer", TABLE5, "--assert", NEW_USER, empty.toString());
+
+        assertThat(text.code()).isEqualTo(1);
+        assertThat(text.err()).contains("infer: --assert <KNOWLEDGEBASE/> holds no FRAME element; nothing was asserted.");
+        assertThat(text.out()).doesNotContain("Created");
+        assertThat(file.code()).isEqualTo(1);
+        assertThat(file.err()).contains("infer: --assert " + empty + " holds no FRAME element");
+    }
+
+    @Test
     void infer_withMaxFiringsBelowOne_isAUsageErrorNamingTheOption() {
         Result r = run("infer", TABLE5, "--max-firings", "-5");
 
