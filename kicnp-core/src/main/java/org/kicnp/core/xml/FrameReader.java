@@ -23,7 +23,7 @@ final class FrameReader {
     private final List<LoadError> errors;
     private final Consumer<FrameElement> sink;
     private final TextCache texts = new TextCache();
-    /** Whether reading stopped before the end of the document, so frames after that point were never seen. */
+    /** Whether reading stopped before the end of the document or skipped a FRAME, so frames were never seen. */
     private boolean cut;
 
     private FrameReader(XMLStreamReader r, String source, List<LoadError> errors, Consumer<FrameElement> sink) {
@@ -37,7 +37,8 @@ final class FrameReader {
      * Reads the document, adding what is wrong to {@code errors} and every readable frame to {@code sink}.
      *
      * @return whether the whole document was read: false when malformed XML, a DTD or a root element that is not
-     *     KNOWLEDGEBASE or FRAME stopped the reading, so frames it holds may be missing
+     *     KNOWLEDGEBASE or FRAME stopped the reading, or a FRAME in the wrong place was skipped, so frames it holds
+     *     may be missing
      */
     static boolean read(XMLStreamReader reader, String source, List<LoadError> errors, Consumer<FrameElement> sink) {
         return read(reader, source, errors, sink, Optional.empty());
@@ -321,13 +322,22 @@ final class FrameReader {
         skip();
     }
 
-    /** Skips the current element and everything inside it. */
+    /**
+     * Skips the current element and everything inside it. A FRAME skipped this way (one put inside another, say)
+     * is a frame never read, so the document counts as not read whole.
+     */
     private void skip() throws XMLStreamException {
+        if (r.getLocalName().equals("FRAME")) {
+            cut = true;
+        }
         int depth = 1;
         while (depth > 0) {
             int event = r.next();
             if (event == XMLStreamConstants.START_ELEMENT) {
                 depth++;
+                if (r.getLocalName().equals("FRAME")) {
+                    cut = true;
+                }
             } else if (event == XMLStreamConstants.END_ELEMENT) {
                 depth--;
             }

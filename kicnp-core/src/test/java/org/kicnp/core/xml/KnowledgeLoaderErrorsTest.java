@@ -230,6 +230,23 @@ class KnowledgeLoaderErrorsTest {
     }
 
     @Test
+    void load_whenAFrameIsPutInsideAnother_doesNotCallTheFramesThatNameItUndefined() throws IOException {
+        Path a = file("a.xml", """
+                <KNOWLEDGEBASE>
+                  <FRAME><NAME>Machine</NAME>
+                  <FRAME><NAME>Robot</NAME><ISINSTANCE>FALSE</ISINSTANCE></FRAME>
+                  </FRAME>
+                  <FRAME><NAME>Scout</NAME><ISA>Robot</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>
+                </KNOWLEDGEBASE>
+                """);
+
+        // Robot was skipped, never read: "Scout is a kind of 'Robot', which is not defined" would send the user
+        // looking for a frame that is there
+        assertThat(errors(List.of(a))).singleElement().asString()
+                .startsWith(a + ":3:3: Unknown element 'FRAME' in FRAME;");
+    }
+
+    @Test
     void load_whenAListedDescendantHasXmlErrors_doesNotAlsoCallTheListWrong() throws IOException {
         Path a = file("a.xml", """
                 <KNOWLEDGEBASE>
