@@ -15,6 +15,7 @@ import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.KnowledgeException;
 import org.kicnp.core.Provenance;
 import org.kicnp.core.xml.KnowledgeLoader;
+import org.kicnp.core.xml.KnowledgeXmlException;
 import org.kicnp.core.xml.SourcedFrame;
 import org.kicnp.inference.Action;
 import org.kicnp.inference.Answer;
@@ -69,6 +70,11 @@ public final class InferCommand implements Callable<Integer> {
                     + String.join(" ", asserts) + " here. Give the knowledge base first: kicnp infer KB --assert "
                     + "FILE_OR_XML..."));
         }
+        if (asserts.stream().anyMatch(String::isBlank)) {
+            // Taken as a path, an empty value would be the working directory, and every file in it asserted.
+            throw new CommandLine.ParameterException(spec.commandLine(), "--assert got an empty value; give an XML "
+                    + "file or XML text starting with '<'.");
+        }
         if (maxFirings < 1) {
             throw new CommandLine.ParameterException(spec.commandLine(),
                     "--max-firings must be at least 1, not " + maxFirings + ".");
@@ -84,7 +90,13 @@ public final class InferCommand implements Callable<Integer> {
                 return 1;
             }
             KnowledgeBase kb = KnowledgeBase.create();
-            List<SourcedFrame> declared = KnowledgeLoader.parse(files, kb);
+            List<SourcedFrame> declared;
+            try {
+                declared = KnowledgeLoader.parse(files, kb);
+            } catch (KnowledgeXmlException e) {
+                // The load below fails too, and reports these errors with the frame-model problems of the others.
+                declared = e.framesRead();
+            }
             if (declared.stream().noneMatch(s -> s.frame().name().equals(InferenceEngine.FEEDBACK_CLASS))) {
                 kb.add(InferenceEngine.feedbackClass());
             }
@@ -111,13 +123,24 @@ public final class InferCommand implements Callable<Integer> {
                 assertInstances(kb, a);
                 engine.runToQuiescence();
             }
-            print(out, kb, created, sent);
+            // Every question is answered before anything is printed, so a class that is not there fails the
+            // command without leaving half its report (an "Answers for" heading with nothing under it) on stdout.
+            Map<String, List<Answer>> answers = new LinkedHashMap<>();
             for (String cls : asks) {
+                Frame asked = kb.frame(cls).orElseThrow(() -> new IllegalArgumentException("--ask names '" + cls
+                        + "', which is not a frame of the knowledge base."));
+                if (asked.isInstance()) {
+                    throw new IllegalArgumentException("--ask takes a class, but '" + cls + "' is an instance.");
+                }
+                answers.put(cls, engine.ask(cls, Map.of()));
+            }
+            print(out, kb, created, sent);
+            answers.forEach((cls, list) -> {
                 out.println("Answers for " + cls + ":");
-                for (Answer a : engine.ask(cls, Map.of())) {
+                for (Answer a : list) {
                     out.println("  " + a.instance().orElse("(derivable " + a.className() + ")") + " " + a.slots());
                 }
-            }
+            });
             out.flush();
             return 0;
         } catch (KnowledgeException | InferenceException | IllegalArgumentException e) {
@@ -135,6 +158,12 @@ public final class InferCommand implements Callable<Integer> {
         List<SourcedFrame> frames = source.stripLeading().startsWith("<")
                 ? KnowledgeLoader.parseText(source, "--assert", kb)
                 : KnowledgeLoader.parse(List.of(Path.of(source)), kb);
+        if (frames.isEmpty()) {
+            // As the editor's import says: asserting nothing would run the engine on no stimulus and look like a
+            // quiet success.
+            throw new IllegalArgumentException("--assert " + abbreviate(source.strip())
+                    + " holds no FRAME element; nothing was asserted.");
+        }
         List<Change> adds = new ArrayList<>();
         for (SourcedFrame s : frames) {
             Frame f = s.frame();
@@ -145,6 +174,10 @@ public final class InferCommand implements Callable<Integer> {
             adds.add(new Change.Add(f.toBuilder().provenance(Provenance.RUNTIME).build()));
         }
         kb.apply(adds);
+    }
+
+    private static String abbreviate(String text) {
+        return text.length() <= 60 ? text : text.substring(0, 57) + "...";
     }
 
     private static void print(PrintWriter out, KnowledgeBase kb, Map<String, String> created, List<Action> sent) {

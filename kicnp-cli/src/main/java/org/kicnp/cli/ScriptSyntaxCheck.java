@@ -61,7 +61,8 @@ final class ScriptSyntaxCheck {
                 } catch (ScriptSyntaxException e) {
                     SourceLocation at = s.where().location();
                     errors.add(new LoadError(at.source(), at.line(), at.column(), s.what() + " has a syntax error at line "
-                            + e.line() + ", column " + e.column() + ": " + e.parserMessage() + "."));
+                            + e.line() + ", column " + e.column() + ": " + e.parserMessage() + ".",
+                            Optional.of(s.frame()), Optional.of(s.slot())));
                 }
             }
         }

@@ -4,7 +4,11 @@ import java.io.PrintWriter;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import org.kicnp.core.FrameKind;
 import org.kicnp.core.KnowledgeBase;
@@ -55,9 +59,11 @@ public final class ValidateCommand implements Callable<Integer> {
     }
 
     private int validate(PrintWriter out) {
-        List<Path> missing = paths.stream().filter(p -> !Files.exists(p)).toList();
+        // An empty argument would be the working directory to Files.exists and expand.
+        List<Path> missing = paths.stream().filter(p -> p.toString().isEmpty() || !Files.exists(p)).toList();
         if (!missing.isEmpty()) {
-            missing.forEach(p -> out.println(p + ": no such file or directory."));
+            missing.forEach(p -> out.println(p.toString().isEmpty() ? "'': " + KnowledgeLoader.EMPTY_PATH
+                    : p + ": no such file or directory."));
             out.println("FAILED: " + plural(missing.size(), "path") + " not found; nothing was loaded.");
             return 1;
         }
@@ -66,6 +72,10 @@ public final class ValidateCommand implements Callable<Integer> {
             files = KnowledgeLoader.expand(paths);
         } catch (UncheckedIOException e) {
             out.println("FAILED: the knowledge files could not be listed: " + e.getCause().getMessage());
+            return 1;
+        } catch (KnowledgeXmlException e) { // a path removed since it was looked at, or a directory not readable
+            e.errors().forEach(err -> out.println(err.format()));
+            out.println("FAILED: the knowledge files could not be listed; nothing was loaded.");
             return 1;
         }
         if (files.isEmpty()) {
@@ -84,7 +94,14 @@ public final class ValidateCommand implements Callable<Integer> {
                     plural(files.size(), "file"));
             return 0;
         } catch (KnowledgeXmlException e) {
-            return failed(out, e.errors(), files);
+            // The scripts of the frames that were read are checked too, so one run reports every error.
+            List<LoadError> all = new ArrayList<>(e.errors());
+            all.addAll(ScriptSyntaxCheck.errors(e.framesRead()));
+            Map<String, Integer> order = new HashMap<>();
+            files.forEach(f -> order.putIfAbsent(f.toString(), order.size()));
+            all.sort(Comparator.comparingInt((LoadError err) -> order.getOrDefault(err.source(), Integer.MAX_VALUE))
+                    .thenComparingInt(LoadError::line).thenComparingInt(LoadError::column));
+            return failed(out, all, files);
         } catch (UncheckedIOException e) {
             out.println("FAILED: a knowledge file could not be read: " + e.getCause().getMessage());
             return 1;

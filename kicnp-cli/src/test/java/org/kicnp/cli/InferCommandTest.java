@@ -105,6 +105,68 @@ class InferCommandTest {
     }
 
     @Test
+    void infer_withAnEmptyAssert_isAUsageErrorRatherThanAssertingTheWorkingDirectory() {
+        Result r = run("infer", TABLE5, "--assert", NEW_USER, "");
+
+        assertThat(r.code()).isEqualTo(2);
+        assertThat(r.err()).contains("--assert got an empty value; give an XML file or XML text starting with '<'.");
+        assertThat(r.out()).doesNotContain("Created");
+    }
+
+    @Test
+    void infer_withAnEmptyKnowledgeBasePath_failsRatherThanLoadingTheWorkingDirectory() {
+        Result r = run("infer", TABLE5, "", "--assert", NEW_USER);
+
+        assertThat(r.code()).isEqualTo(1);
+        assertThat(r.err()).contains("infer: '':1:1: An empty path names no file or directory; write '.' for the "
+                + "current directory.");
+        assertThat(r.out()).doesNotContain("Created");
+    }
+
+    @Test
+    void infer_askingForAFrameThatIsNotAClass_failsWithAMessageAndNoHalfReport() {
+        Result unknown = run("infer", TABLE5, "--assert", NEW_USER, "--ask", "AskUserName", "--ask", "Nope");
+        Result instance = run("infer", TABLE5, "--ask", "RobovieMouth");
+
+        assertThat(unknown.code()).isEqualTo(1);
+        assertThat(unknown.err()).contains("infer: --ask names 'Nope', which is not a frame of the knowledge base.");
+        assertThat(unknown.out()).doesNotContain("Answers for");
+        assertThat(instance.code()).isEqualTo(1);
+        assertThat(instance.err()).contains("infer: --ask takes a class, but 'RobovieMouth' is an instance.");
+        assertThat(instance.out()).doesNotContain("Answers for");
+    }
+
+    @Test
+    void infer_whenTheKnowledgeBaseHasXmlErrorsAndFrameProblems_reportsBothAtOnce(@TempDir Path dir) throws Exception {
+        Path kb = Files.writeString(dir.resolve("kb.xml"), """
+                <KNOWLEDGEBASE>
+                  <FRAME><NAME>Cup</NAME><ISINSTANCE>perhaps</ISINSTANCE></FRAME>
+                  <FRAME><NAME>Spill</NAME><ISA>Acident</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>
+                </KNOWLEDGEBASE>
+                """);
+
+        Result r = run("infer", kb.toString(), "--assert", NEW_USER);
+
+        assertThat(r.code()).isEqualTo(1);
+        assertThat(r.err()).contains(kb + ":2:26: Frame 'Cup' has ISINSTANCE 'perhaps', which is not a boolean")
+                .contains(kb + ":3:28: Frame 'Spill' is a kind of 'Acident', which is not defined.");
+    }
+
+    @Test
+    void infer_whenAnAssertHoldsNoFrame_failsRatherThanRunningOnNothing(@TempDir Path dir) throws Exception {
+        Path empty = Files.writeString(dir.resolve("none.xml"), "<KNOWLEDGEBASE>\n</KNOWLEDGEBASE>\n");
+
+        Result text = run("infer", TABLE5, "--assert", "<KNOWLEDGEBASE/>");
+        Result file = run("infer", TABLE5, "--assert", NEW_USER, empty.toString());
+
+        assertThat(text.code()).isEqualTo(1);
+        assertThat(text.err()).contains("infer: --assert <KNOWLEDGEBASE/> holds no FRAME element; nothing was asserted.");
+        assertThat(text.out()).doesNotContain("Created");
+        assertThat(file.code()).isEqualTo(1);
+        assertThat(file.err()).contains("infer: --assert " + empty + " holds no FRAME element");
+    }
+
+    @Test
     void infer_withMaxFiringsBelowOne_isAUsageErrorNamingTheOption() {
         Result r = run("infer", TABLE5, "--max-firings", "-5");
 

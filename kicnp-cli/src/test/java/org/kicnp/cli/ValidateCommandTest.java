@@ -125,6 +125,32 @@ class ValidateCommandTest {
     }
 
     @Test
+    void validate_whenXmlErrorsFrameProblemsAndScriptErrorsMix_reportsThemAllInOneRun() throws IOException {
+        Files.writeString(dir.resolve("base.xml"), BASE);
+        Path greeting = dir.resolve("greeting.xml");
+        Files.writeString(greeting, GREETING.formatted("Speech").replace("Sendmsg(s.mMouth, “Hi!", "Sendmsg(s.mMouth, (“Hi!"));
+        Path more = dir.resolve("more.xml");
+        Files.writeString(more, """
+                <KNOWLEDGEBASE>
+                  <FRAME><NAME>Farewell</NAME><ISA>Speach</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>
+                  <FRAME><NAME>Cup</NAME><ISINSTANCE>perhaps</ISINSTANCE></FRAME>
+                </KNOWLEDGEBASE>
+                """);
+
+        CliRun run = CliRun.of("validate", dir.toString());
+
+        assertThat(run.exitCode()).as(run.out()).isEqualTo(1);
+        assertThat(run.outLines()).hasSize(4);
+        assertThat(run.outLines().get(0)).startsWith(greeting + ":1:1: The script in slot 'onInstantiate' of frame "
+                + "'Greeting' has a syntax error at line 1, column ");
+        assertThat(run.outLines().get(1)).isEqualTo(more + ":2:31: Frame 'Farewell' is a kind of 'Speach', which is "
+                + "not defined.");
+        assertThat(run.outLines().get(2)).isEqualTo(more + ":3:26: Frame 'Cup' has ISINSTANCE 'perhaps', which is not "
+                + "a boolean; write TRUE or FALSE.");
+        assertThat(run.outLines().get(3)).isEqualTo("FAILED: 3 errors in 2 files (of 3 files checked)");
+    }
+
+    @Test
     void validate_whenXmlMalformed_reportsTheLineAndFails() throws IOException {
         Path broken = dir.resolve("broken.xml");
         Files.writeString(broken, "<FRAME>\n  <NAME>Oops</NAME>\n  <ISINSTANCE>FALSE</ISINST>\n</FRAME>\n");
@@ -143,6 +169,17 @@ class ValidateCommandTest {
 
         assertThat(run.exitCode()).isEqualTo(1);
         assertThat(run.out()).contains(missing + ": no such file or directory.");
+    }
+
+    @Test
+    void validate_whenAPathIsEmpty_saysSoInsteadOfCheckingTheWorkingDirectory() throws IOException {
+        Files.writeString(dir.resolve("base.xml"), BASE);
+
+        CliRun run = CliRun.of("validate", dir.toString(), "");
+
+        assertThat(run.exitCode()).isEqualTo(1);
+        assertThat(run.out()).contains("'': An empty path names no file or directory; write '.' for the current "
+                + "directory.").contains("FAILED: 1 path not found; nothing was loaded.").doesNotContain("OK");
     }
 
     @Test

@@ -281,6 +281,28 @@ public final class KnowledgeBase {
     }
 
     /**
+     * The problems {@link #apply} would report for this batch now, without applying it or changing anything: empty
+     * when it would be applied. For reporting a batch's problems together with others found before it could be
+     * applied, such as a loader's errors in the XML of other frames.
+     *
+     * @throws StaleRevisionException when a replace expects a revision the frame no longer has
+     */
+    public List<Problem> problems(List<? extends Change> changes) {
+        requireNonNull(changes, "changes");
+        return read(() -> {
+            Batch batch;
+            try {
+                batch = Batch.stage(changes, nodes);
+            } catch (BatchRejectedException e) {
+                return e.problems();
+            }
+            // Its own class memo and scratch list (never the knowledge base's): this runs under the read lock only.
+            return List.copyOf(new Validator(batch.staged(), nodes, HashMap.newHashMap(batch.staged().size()),
+                    new ArrayList<>()).validate());
+        });
+    }
+
+    /**
      * Starts a batch of adds given in parts, as a loader reads them, and checked part by part while the caller goes on
      * reading: see {@link StagedBatch}. Its {@link StagedBatch#commit()} is equivalent to {@link #apply} of all the adds.
      */

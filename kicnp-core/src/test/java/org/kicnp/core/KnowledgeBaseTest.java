@@ -22,6 +22,26 @@ class KnowledgeBaseTest {
     }
 
     @Test
+    void problems_listsWhatApplyWouldRefuse_andChangesNothing() {
+        KnowledgeBase kb = figure1();
+        long version = kb.version();
+        int size = kb.size();
+
+        List<Problem> problems = kb.problems(List.of(new Change.Add(cls("Greeting", "Speach")),
+                new Change.Add(cls("Speech", "System")), new Change.Add(cls("Farewell", "Speech"))));
+        List<Problem> ok = kb.problems(List.of(new Change.Add(cls("Farewell", "Speech"))));
+        List<Problem> bad = kb.problems(List.of(new Change.Add(cls("Greeting", "Speach"))));
+
+        assertThat(problems).extracting(Problem::message).containsExactly("A frame named 'Speech' already exists.");
+        assertThat(ok).isEmpty();
+        assertThat(bad).extracting(Problem::message)
+                .containsExactly("Frame 'Greeting' is a kind of 'Speach', which is not defined.");
+        assertThat(kb.version()).isEqualTo(version);
+        assertThat(kb.size()).isEqualTo(size);
+        assertThat(kb.contains("Farewell")).isFalse();
+    }
+
+    @Test
     void add_whenNameTaken_rejectsDuplicate() {
         KnowledgeBase kb = figure1();
         assertThatThrownBy(() -> kb.add(cls("Speech", "System")))

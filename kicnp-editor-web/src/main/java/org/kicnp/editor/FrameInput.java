@@ -29,12 +29,16 @@ final class FrameInput {
     private final String frameName;
     /** The type that frame {@code parent} (or a frame above it) declares for a slot, if any: (parent, slot). */
     private final BiFunction<String, String, Optional<DataType>> declaredType;
+    /** The nearest ARGUMENT that frame {@code parent} or a frame above it gives a slot, if any: (parent, slot). */
+    private final BiFunction<String, String, Optional<String>> declaredArgument;
     private Optional<String> parent = Optional.empty();
     private final List<ApiProblem> problems = new ArrayList<>();
 
     private FrameInput(JsonNode json, String frameName,
-            BiFunction<String, String, Optional<DataType>> declaredType) {
+            BiFunction<String, String, Optional<DataType>> declaredType,
+            BiFunction<String, String, Optional<String>> declaredArgument) {
         this.declaredType = declaredType;
+        this.declaredArgument = declaredArgument;
         this.json = json;
         this.frameName = frameName;
     }
@@ -45,12 +49,13 @@ final class FrameInput {
      * @throws ApiException 422 with every problem found
      */
     static Frame read(JsonNode json, Optional<String> name,
-            BiFunction<String, String, Optional<DataType>> declaredType) {
+            BiFunction<String, String, Optional<DataType>> declaredType,
+            BiFunction<String, String, Optional<String>> declaredArgument) {
         if (json == null || !json.isObject()) {
             throw new ApiException(400, "The request body must be a JSON object describing a frame.");
         }
         String n = name.orElseGet(() -> text(json, "name").orElse(""));
-        FrameInput in = new FrameInput(json, n, declaredType);
+        FrameInput in = new FrameInput(json, n, declaredType, declaredArgument);
         Frame frame = in.build();
         if (!in.problems.isEmpty()) {
             throw ApiException.invalid(in.problems);
@@ -182,6 +187,10 @@ final class FrameInput {
             }
         });
         Optional<String> argument = text(s, "argument");
+        if (type.get() == DataType.LIST && argument.isEmpty()) {
+            // The items take the nearest ARGUMENT above, as the XML loader and the knowledge base's declarations do.
+            argument = parent.flatMap(p -> declaredArgument.apply(p, name));
+        }
         value(s.get("value"), type.get(), argument, name, where + " value").ifPresent(b::value);
         value(s.get("defaultValue"), type.get(), argument, name, where + " default").ifPresent(b::defaultValue);
         if (problems.size() > before) {

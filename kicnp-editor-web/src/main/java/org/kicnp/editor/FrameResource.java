@@ -10,6 +10,7 @@ import org.kicnp.core.ChangeSet;
 import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Slot;
 
 /**
  * The frame operations of the API: list, read (with effective slots), create, replace with an expected revision,
@@ -50,8 +51,24 @@ final class FrameResource {
         return kb.contains(parent) ? kb.slot(parent, slot).map(e -> e.slot().type()) : Optional.empty();
     }
 
+    private Optional<String> declaredArgument(String parent, String slot) {
+        if (!kb.contains(parent)) {
+            return Optional.empty();
+        }
+        List<String> chain = new ArrayList<>();
+        chain.add(parent);
+        chain.addAll(kb.ancestors(parent));
+        for (String c : chain) {
+            Optional<String> a = kb.frame(c).flatMap(f -> f.ownSlot(slot)).flatMap(Slot::argument);
+            if (a.isPresent()) {
+                return a;
+            }
+        }
+        return Optional.empty();
+    }
+
     Saved create(JsonNode body) {
-        Frame f = FrameInput.read(body, Optional.empty(), this::declaredType);
+        Frame f = FrameInput.read(body, Optional.empty(), this::declaredType, this::declaredArgument);
         ChangeSet cs = kb.apply(List.of(new Change.Add(f)));
         return new Saved(cs.version(), get(f.name()));
     }
@@ -67,7 +84,7 @@ final class FrameResource {
                     + "so that a change made in between is not overwritten.");
         }
         kb.require(name);
-        Frame f = FrameInput.read(body, Optional.of(name), this::declaredType);
+        Frame f = FrameInput.read(body, Optional.of(name), this::declaredType, this::declaredArgument);
         ChangeSet cs = kb.apply(List.of(new Change.Replace(f, rev.asLong())));
         return new Saved(cs.version(), get(name));
     }

@@ -44,7 +44,7 @@ final class XmlTransfer implements Features.Xml {
                 new ApiException(400, "Importing needs the XML text in the field 'xml'."));
         List<SourcedFrame> frames;
         try {
-            frames = KnowledgeLoader.parseText(xml, SOURCE, kb);
+            frames = KnowledgeLoader.parseTextToPut(xml, SOURCE, kb);
         } catch (KnowledgeXmlException e) {
             throw located(e.errors());
         }
@@ -69,7 +69,8 @@ final class XmlTransfer implements Features.Xml {
 
     private static ApiException located(List<LoadError> errors) {
         List<ApiProblem> problems = errors.stream()
-                .map(e -> new ApiProblem("", "", e.message(), e.line(), e.column())).toList();
+                .map(e -> new ApiProblem(e.frame().orElse(""), e.slot().orElse(""), e.message(), e.line(),
+                        e.column())).toList();
         return new ApiException(422, problems.size() == 1 ? problems.getFirst().message()
                 : problems.size() + " errors in the XML; nothing was imported.", problems);
     }

@@ -294,6 +294,23 @@ class EditorApiTest {
                 .contains(DataType.STRING);
     }
 
+    @Test void create_withAListSentWithoutAnArgument_readsItsItemsAsTheClassDeclares() {
+        kb.add(Frame.classFrame("Sighting").slot(Slot.builder("face", DataType.LIST).argument("TYPE_FLOAT").build())
+                .build());
+        http.login(PASSWORD);
+
+        HttpResponse<String> r = http.post("/api/frames", """
+                {"name":"seen1","kind":"INSTANCE","parent":"Sighting","slots":[{"name":"face","value":["0.5","2"]}]}""");
+        HttpResponse<String> bad = http.post("/api/frames", """
+                {"name":"seen2","kind":"INSTANCE","parent":"Sighting","slots":[{"name":"face","value":["wide"]}]}""");
+
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(201);
+        assertThat(kb.value("seen1", "face")).contains(new Value.Lst(List.of(Value.of(0.5), Value.of(2.0))));
+        assertThat(bad.statusCode()).as(bad.body()).isEqualTo(422);
+        assertThat(json(bad).get("problems").get(0).get("slot").asText()).isEqualTo("face");
+        assertThat(kb.contains("seen2")).isFalse();
+    }
+
     @Test void create_withIsACycle_answers422() {
         http.login(PASSWORD);
         ObjectNode system = (ObjectNode) json(http.get("/api/frames/System"));

@@ -91,6 +91,55 @@ class TransferApiTest {
         assertThat(kb.contains("AIBO")).isFalse();
     }
 
+    @Test void import_withMappingErrors_namesTheFrameAndSlotOfEachProblem() {
+        http.login(PASSWORD);
+        String xml = """
+                <KNOWLEDGEBASE>
+                  <FRAME><NAME>Cup</NAME><ISINSTANCE>FALSE</ISINSTANCE>
+                    <SLOTLIST><SLOT><NAME>content</NAME><TYPE>TYPE_STR</TYPE><REQUIRED>maybe</REQUIRED></SLOT></SLOTLIST>
+                  </FRAME>
+                  <FRAME><NAME>Mug</NAME><ISINSTANCE>perhaps</ISINSTANCE></FRAME>
+                  <FRAME><NAME>Cup</NAME><ISINSTANCE>FALSE</ISINSTANCE></FRAME>
+                </KNOWLEDGEBASE>""";
+
+        HttpResponse<String> r = http.post("/api/import", importBody(xml));
+
+        assertThat(r.statusCode()).isEqualTo(422);
+        JsonNode problems = json(r).get("problems");
+        assertThat(problems).as(r.body()).hasSize(3);
+        assertThat(problems.get(0).get("message").asText()).contains("REQUIRED 'maybe'");
+        assertThat(problems.get(0).get("frame").asText()).isEqualTo("Cup");
+        assertThat(problems.get(0).get("slot").asText()).isEqualTo("content");
+        assertThat(problems.get(1).get("message").asText()).contains("ISINSTANCE 'perhaps'");
+        assertThat(problems.get(1).get("frame").asText()).isEqualTo("Mug");
+        assertThat(problems.get(1).get("slot").asText()).isEmpty();
+        assertThat(problems.get(2).get("message").asText()).contains("defined twice");
+        assertThat(problems.get(2).get("frame").asText()).isEqualTo("Cup");
+        assertThat(problems.get(2).get("slot").asText()).isEmpty();
+        assertThat(kb.contains("Mug")).isFalse();
+    }
+
+    @Test void import_withAnXmlErrorAndAFrameModelProblem_reportsBothAtOnce() {
+        http.login(PASSWORD);
+        String xml = """
+                <KNOWLEDGEBASE>
+                  <FRAME><NAME>Mug</NAME><ISINSTANCE>perhaps</ISINSTANCE></FRAME>
+                  <FRAME><NAME>AIBO</NAME><ISA>RobotDog</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>
+                </KNOWLEDGEBASE>""";
+
+        HttpResponse<String> r = http.post("/api/import", importBody(xml));
+
+        assertThat(r.statusCode()).isEqualTo(422);
+        JsonNode problems = json(r).get("problems");
+        assertThat(problems).as(r.body()).hasSize(2);
+        assertThat(problems.get(0).get("frame").asText()).isEqualTo("Mug");
+        assertThat(problems.get(0).get("line").asInt()).isEqualTo(2);
+        assertThat(problems.get(1).get("frame").asText()).isEqualTo("AIBO");
+        assertThat(problems.get(1).get("message").asText()).contains("'RobotDog', which is not defined");
+        assertThat(problems.get(1).get("line").asInt()).isEqualTo(3);
+        assertThat(kb.contains("AIBO")).isFalse();
+    }
+
     @Test void import_withoutLogin_answers401() {
         HttpResponse<String> r = http.post("/api/import", importBody("<FRAMES/>"));
 

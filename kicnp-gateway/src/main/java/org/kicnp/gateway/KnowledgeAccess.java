@@ -110,6 +110,13 @@ final class KnowledgeAccess implements KnowledgeListener {
             return CompletableFuture.completedFuture(ErrorReply.to(d.id(), ErrorCode.FORBIDDEN,
                     "Frame '" + d.frame() + "' is a class; agents may destroy instances only."));
         }
+        // The same rule as assert: declared (XML, editor) and learned instances are durable knowledge, and removing
+        // one would erase it from the store for good, so only runtime instances may be destroyed.
+        if (f.get().provenance().durable()) {
+            return CompletableFuture.completedFuture(ErrorReply.to(d.id(), ErrorCode.FORBIDDEN, "Frame '" + d.frame()
+                    + "' is " + f.get().provenance().name().toLowerCase(java.util.Locale.ROOT)
+                    + " knowledge; agents may destroy runtime instances only."));
+        }
         return retraction.destroy(d.frame()).handle((removed, failure) -> failure == null
                 ? new Message.Ack(d.id()) : refusal(d.id(), cause(failure)));
     }

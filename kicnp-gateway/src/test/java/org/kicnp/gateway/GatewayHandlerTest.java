@@ -303,6 +303,37 @@ class GatewayHandlerTest {
     }
 
     @Test
+    void destroy_ofDeclaredOrLearnedInstance_isForbiddenAndKeepsIt() {
+        kb.add(Frame.classFrame("Cup").build());
+        kb.add(Frame.instance("cup1", "Cup").build());
+        kb.add(Frame.instance("cup2", "Cup").provenance(org.kicnp.core.Provenance.LEARNED).build());
+        authenticate();
+
+        ch.writeInbound(Wire.frame(new Message.Destroy("2", "cup1")));
+        assertError(ErrorCode.FORBIDDEN,
+                "Frame 'cup1' is declared knowledge; agents may destroy runtime instances only.");
+        ch.writeInbound(Wire.frame(new Message.Destroy("3", "cup2")));
+        assertError(ErrorCode.FORBIDDEN,
+                "Frame 'cup2' is learned knowledge; agents may destroy runtime instances only.");
+
+        assertThat(kb.require("cup1").provenance()).isEqualTo(org.kicnp.core.Provenance.DECLARED);
+        assertThat(kb.require("cup2").provenance()).isEqualTo(org.kicnp.core.Provenance.LEARNED);
+        assertThat(ch.isOpen()).isTrue();
+    }
+
+    @Test
+    void destroy_ofRuntimeInstance_removesIt() {
+        kb.add(Frame.classFrame("Cup").build());
+        kb.add(Frame.instance("cup1", "Cup").provenance(org.kicnp.core.Provenance.RUNTIME).build());
+        authenticate();
+
+        ch.writeInbound(Wire.frame(new Message.Destroy("2", "cup1")));
+
+        assertThat(Wire.written(ch)).containsExactly(new Message.Ack("2"));
+        assertThat(kb.contains("cup1")).isFalse();
+    }
+
+    @Test
     void serverOnlyMessage_fromAgent_isBadMessage() {
         authenticate();
         ch.writeInbound(Wire.frame(new Message.Ack("9")));

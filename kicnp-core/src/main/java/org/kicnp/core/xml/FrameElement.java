@@ -3,10 +3,15 @@ package org.kicnp.core.xml;
 import java.util.EnumMap;
 import java.util.List;
 import java.util.Optional;
+import org.kicnp.core.DataType;
 
-/** A FRAME element as read, before mapping: its simple items by tag, its links and slots, and where it starts. */
+/**
+ * A FRAME element as read, before mapping: its simple items by tag, its links and slots, where it starts, and whether
+ * reading it found structural mistakes (unknown, repeated or misplaced elements, which are skipped), so that what was
+ * read may not be all the frame says.
+ */
 record FrameElement(SourceLocation location, EnumMap<FrameTag, Located> items, List<LinkElement> linksTo,
-        List<LinkElement> linksFrom, List<SlotElement> slots) {
+        List<LinkElement> linksFrom, List<SlotElement> slots, boolean damaged) {
 
     /** The item if it is given and not empty or NULL. */
     Optional<Located> present(FrameTag tag) {
@@ -19,10 +24,20 @@ record FrameElement(SourceLocation location, EnumMap<FrameTag, Located> items, L
         return present(FrameTag.NAME).map(Located::stripped);
     }
 
-    /** Whether every slot names its TYPE, so the frame can be mapped without looking at other frames. */
+    /**
+     * Whether the frame can be mapped without looking at other frames: every slot names its TYPE, and no list value
+     * takes its item type from an ARGUMENT above the frame (the declarations it inherits may come later).
+     */
     boolean selfTyped() {
+        boolean hasParent = present(FrameTag.ISA).isPresent();
         for (SlotElement s : slots) {
-            if (s.present(SlotTag.TYPE).isEmpty()) {
+            Optional<Located> type = s.present(SlotTag.TYPE);
+            if (type.isEmpty()) {
+                return false;
+            }
+            if (hasParent && s.present(SlotTag.ARGUMENT).isEmpty() && (s.get(SlotTag.VALUE) != null
+                    || s.get(SlotTag.DEFAULT) != null) && FrameMapper.dataType(type.get().stripped())
+                    .filter(t -> t == DataType.LIST).isPresent()) {
                 return false;
             }
         }

@@ -24,9 +24,13 @@ import org.kicnp.core.Value;
  */
 final class FrameMapper {
 
-    /** Finds the type a slot is declared with on a frame or above it. */
+    /** Finds how a slot is declared on a frame or above it. */
     interface TypeLookup {
+        /** The type of the nearest declaration of the slot at or above the frame. */
         Optional<DataType> declaredType(String frame, String slot);
+
+        /** The nearest ARGUMENT given for the slot at or above the frame. */
+        Optional<String> declaredArgument(String frame, String slot);
     }
 
     private static final List<DataType> TYPES = List.of(DataType.values());
@@ -35,6 +39,9 @@ final class FrameMapper {
     private final TypeLookup types;
     private final List<LoadError> errors;
     private String source;
+    /** The frame being mapped, once its NAME is read, and the slot being mapped: what each error is about. */
+    private String frameName;
+    private String slotName;
 
     FrameMapper(Interner interner, TypeLookup types, List<LoadError> errors) {
         this.interner = interner;
@@ -45,6 +52,8 @@ final class FrameMapper {
     /** Maps the frame, or answers empty after adding what is wrong to the errors. */
     Optional<Frame> map(FrameElement e) {
         source = e.location().source();
+        frameName = null;
+        slotName = null;
         int before = errors.size();
         Optional<Located> nameItem = e.present(FrameTag.NAME);
         if (nameItem.isEmpty()) {
@@ -52,6 +61,7 @@ final class FrameMapper {
             return Optional.empty();
         }
         String name = interner.intern(nameItem.get().stripped());
+        frameName = name;
         boolean instance = flag(e.items().get(FrameTag.ISINSTANCE), new Owner(name, null), "ISINSTANCE", false);
         Frame.Builder b = Frame.builder(name, instance ? FrameKind.INSTANCE : FrameKind.CLASS);
         e.present(FrameTag.ISA).ifPresent(p -> b.parent(interner.intern(p.stripped())));
@@ -90,8 +100,8 @@ final class FrameMapper {
                 slotNames[named++] = slot.name();
                 b.slot(slot);
             } else {
-                error(slotAt(s), "Frame '" + name + "' has a second slot named '" + slot.name()
-                        + "'; slot names must be unique within a frame.");
+                errors.add(LoadError.at(slotAt(s), "Frame '" + name + "' has a second slot named '" + slot.name()
+                        + "'; slot names must be unique within a frame.", name, slot.name()));
             }
         }
         if (errors.size() > before) {
@@ -138,6 +148,15 @@ final class FrameMapper {
         }
         String name = interner.intern(nameItem.get().stripped());
         Owner where = new Owner(frame, name);
+        slotName = name;
+        try {
+            return slot(fe, s, name, where);
+        } finally {
+            slotName = null;
+        }
+    }
+
+    private Slot slot(FrameElement fe, SlotElement s, String name, Owner where) {
         int before = errors.size();
         DataType type = type(fe, s, name, where);
         if (type == null) {
@@ -158,16 +177,22 @@ final class FrameMapper {
         }
         Located value = present(s, SlotTag.VALUE, type);
         Located dflt = present(s, SlotTag.DEFAULT, type);
+        // A list's items take the type its ARGUMENT names; a slot that gives none inherits the nearest one above, as
+        // the knowledge base's declarations do (an instance's face list of its class's TYPE_FLOAT items).
+        Optional<String> itemArgument = argument;
+        if (type == DataType.LIST && argument.isEmpty() && (value != null || dflt != null)) {
+            itemArgument = fe.present(FrameTag.ISA).flatMap(p -> types.declaredArgument(p.stripped(), name));
+        }
         if (value != null && dflt != null) {
             error(dflt.at(source), where + " has both a VALUE and a DEFAULT; the paper allows one or the other "
                     + "(Table 2).");
         } else if (value != null) {
-            Value v = value(value, type, argument, where, "VALUE");
+            Value v = value(value, type, itemArgument, where, "VALUE");
             if (v != null) {
                 b.value(v);
             }
         } else if (dflt != null) {
-            Value v = value(dflt, type, argument, where, "DEFAULT");
+            Value v = value(dflt, type, itemArgument, where, "DEFAULT");
             if (v != null) {
                 b.defaultValue(v);
             }
@@ -261,7 +286,7 @@ final class FrameMapper {
         try {
             return Optional.of(ConditionParser.parse(c.text()));
         } catch (ConditionSyntaxException x) {
-            errors.add(LoadError.at(conditionAt(c, x.column()), where + ": " + x.getMessage()));
+            error(conditionAt(c, x.column()), where + ": " + x.getMessage());
             return Optional.empty();
         }
     }
@@ -369,7 +394,7 @@ final class FrameMapper {
     }
 
     private void error(SourceLocation at, String message) {
-        errors.add(LoadError.at(at, message));
+        errors.add(LoadError.at(at, message, frameName, slotName));
     }
 
     /** The frame or slot an error is about; its text is only built when an error is reported. */

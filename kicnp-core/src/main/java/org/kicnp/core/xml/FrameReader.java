@@ -23,6 +23,8 @@ final class FrameReader {
     private final List<LoadError> errors;
     private final Consumer<FrameElement> sink;
     private final TextCache texts = new TextCache();
+    /** Whether reading stopped before the end of the document or skipped a FRAME, so frames were never seen. */
+    private boolean cut;
 
     private FrameReader(XMLStreamReader r, String source, List<LoadError> errors, Consumer<FrameElement> sink) {
         this.r = r;
@@ -31,23 +33,31 @@ final class FrameReader {
         this.sink = sink;
     }
 
-    /** Reads the document, adding what is wrong to {@code errors} and every readable frame to {@code sink}. */
-    static void read(XMLStreamReader reader, String source, List<LoadError> errors, Consumer<FrameElement> sink) {
-        read(reader, source, errors, sink, Optional.empty());
+    /**
+     * Reads the document, adding what is wrong to {@code errors} and every readable frame to {@code sink}.
+     *
+     * @return whether the whole document was read: false when malformed XML, a DTD or a root element that is not
+     *     KNOWLEDGEBASE or FRAME stopped the reading, or a FRAME in the wrong place was skipped, so frames it holds
+     *     may be missing
+     */
+    static boolean read(XMLStreamReader reader, String source, List<LoadError> errors, Consumer<FrameElement> sink) {
+        return read(reader, source, errors, sink, Optional.empty());
     }
 
     /**
      * As {@link #read(XMLStreamReader, String, List, Consumer)}, for the document in {@code file}: a byte that is not
      * UTF-8 is then reported where it is in the file, which the parser, decoding ahead, cannot say.
      */
-    static void read(XMLStreamReader reader, String source, List<LoadError> errors, Consumer<FrameElement> sink,
+    static boolean read(XMLStreamReader reader, String source, List<LoadError> errors, Consumer<FrameElement> sink,
             Optional<Path> file) {
         FrameReader fr = new FrameReader(reader, source, errors, sink);
         try {
             fr.document();
+            return !fr.cut;
         } catch (XMLStreamException e) {
             errors.add(file.filter(f -> notUtf8(e)).flatMap(f -> Utf8Check.firstMalformed(f, source))
                     .orElseGet(() -> fr.syntaxError(e)));
+            return false;
         } finally {
             try {
                 reader.close();
@@ -64,6 +74,7 @@ final class FrameReader {
             switch (event) {
                 case XMLStreamConstants.DTD -> {
                     error(r.getLocation(), "DTDs are not allowed in knowledge files; remove the DOCTYPE declaration.");
+                    cut = true;
                     return;
                 }
                 case XMLStreamConstants.START_ELEMENT -> {
@@ -96,6 +107,7 @@ final class FrameReader {
             default -> {
                 error(r.getLocation(), "The root element is '" + tag + "'; a knowledge file holds KNOWLEDGEBASE or "
                         + "a single FRAME.");
+                cut = true;
                 skip();
             }
         }
@@ -103,6 +115,7 @@ final class FrameReader {
 
     private FrameElement frame() throws XMLStreamException {
         SourceLocation at = here();
+        int errorsBefore = errors.size();
         EnumMap<FrameTag, Located> items = new EnumMap<>(FrameTag.class);
         List<LinkElement> to = new ArrayList<>(0);
         List<LinkElement> from = new ArrayList<>(0);
@@ -151,7 +164,7 @@ final class FrameReader {
                 }
             }
         }
-        return new FrameElement(at, items, to, from, slots);
+        return new FrameElement(at, items, to, from, slots, errors.size() > errorsBefore);
     }
 
     private void slotList(List<SlotElement> slots) throws XMLStreamException {
@@ -309,13 +322,22 @@ final class FrameReader {
         skip();
     }
 
-    /** Skips the current element and everything inside it. */
+    /**
+     * Skips the current element and everything inside it. A FRAME skipped this way (one put inside another, say)
+     * is a frame never read, so the document counts as not read whole.
+     */
     private void skip() throws XMLStreamException {
+        if (r.getLocalName().equals("FRAME")) {
+            cut = true;
+        }
         int depth = 1;
         while (depth > 0) {
             int event = r.next();
             if (event == XMLStreamConstants.START_ELEMENT) {
                 depth++;
+                if (r.getLocalName().equals("FRAME")) {
+                    cut = true;
+                }
             } else if (event == XMLStreamConstants.END_ELEMENT) {
                 depth--;
             }

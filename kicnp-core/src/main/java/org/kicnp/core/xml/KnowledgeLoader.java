@@ -14,7 +14,10 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.function.Function;
 import org.kicnp.core.BatchRejectedException;
+import org.kicnp.core.Change;
+import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Problem;
 import org.kicnp.core.StagedBatch;
@@ -27,6 +30,9 @@ import org.kicnp.core.StagedBatch;
  * column in one {@link KnowledgeXmlException}.
  */
 public final class KnowledgeLoader {
+    /** What an empty path, which Java would take for the working directory, is told. */
+    public static final String EMPTY_PATH = "An empty path names no file or directory; write '.' for the current "
+            + "directory.";
     /** Inputs larger than this are mapped on a second thread while they are read. */
     static final long PIPELINE_CHARS = 4L * 1024 * 1024;
 
@@ -37,7 +43,7 @@ public final class KnowledgeLoader {
      * The knowledge files named by the arguments: a file stands for itself, a directory for every {@code *.xml}
      * file below it (recursively, sorted by path, skipping hidden files and directories such as {@code .kicnp}).
      *
-     * @throws KnowledgeXmlException naming every path that does not exist
+     * @throws KnowledgeXmlException naming every path that does not exist, and any empty path
      */
     public static List<Path> expand(List<Path> filesOrDirs) {
         requireNonNull(filesOrDirs, "filesOrDirs");
@@ -45,7 +51,10 @@ public final class KnowledgeLoader {
         List<LoadError> errors = new ArrayList<>();
         Set<Path> seen = new HashSet<>();
         for (Path p : filesOrDirs) {
-            if (Files.isDirectory(p)) {
+            if (p.toString().isEmpty()) {
+                // Path.of("") is the working directory: an empty argument (an unset shell variable) would load it.
+                errors.add(new LoadError("''", 1, 1, EMPTY_PATH));
+            } else if (Files.isDirectory(p)) {
                 for (Path f : xmlFilesBelow(p, errors)) {
                     if (seen.add(f.toAbsolutePath().normalize())) {
                         out.add(f);
@@ -72,7 +81,7 @@ public final class KnowledgeLoader {
      * @throws KnowledgeXmlException listing every error found
      */
     public static List<SourcedFrame> parse(List<Path> filesOrDirs, KnowledgeBase context) {
-        return sourced(parseFiles(filesOrDirs, context, null));
+        return sourced(parseFiles(filesOrDirs, context, null, null));
     }
 
     /**
@@ -82,10 +91,31 @@ public final class KnowledgeLoader {
      * @throws KnowledgeXmlException listing every error found
      */
     public static List<SourcedFrame> parseText(String xml, String sourceName, KnowledgeBase context) {
+        return parseText(xml, sourceName, context, null);
+    }
+
+    /**
+     * Reads frames from text that the caller is to put (add, or replace where the name exists) into {@code kb} in
+     * one batch, as the editor's import does. When some frames have errors in the XML, the others are checked as
+     * such a batch would be and their problems reported with the errors, as {@link #load} does.
+     *
+     * @throws KnowledgeXmlException listing every error found
+     */
+    public static List<SourcedFrame> parseTextToPut(String xml, String sourceName, KnowledgeBase kb) {
+        requireNonNull(kb, "kb");
+        return parseText(xml, sourceName, kb, frames -> {
+            List<Change> puts = new ArrayList<>(frames.size());
+            frames.forEach(f -> puts.add(new Change.Put(f)));
+            return kb.problems(puts);
+        });
+    }
+
+    private static List<SourcedFrame> parseText(String xml, String sourceName, KnowledgeBase context,
+            Function<List<Frame>, List<Problem>> check) {
         requireNonNull(xml, "xml");
         requireNonNull(sourceName, "sourceName");
         requireNonNull(context, "context");
-        LoadSession session = new LoadSession(context, xml.length() > PIPELINE_CHARS, null);
+        LoadSession session = new LoadSession(context, xml.length() > PIPELINE_CHARS, null, check);
         try {
             session.readText(xml, sourceName);
             return sourced(session.finish());
@@ -96,7 +126,9 @@ public final class KnowledgeLoader {
 
     /**
      * Reads all the files and adds their frames to {@code kb} in one batch. On any error (in the XML, in a value, or
-     * against the frame model, such as an unknown parent or an IS-A cycle) nothing is added.
+     * against the frame model, such as an unknown parent or an IS-A cycle) nothing is added. When some frames have
+     * errors in the XML, the others are still checked against the frame model and their problems reported too,
+     * except those that may only follow from a frame with errors (see {@link LoadSession}).
      *
      * @return the frames added, in file order
      * @throws KnowledgeXmlException listing every error, each at the element it concerns
@@ -105,7 +137,11 @@ public final class KnowledgeLoader {
         requireNonNull(kb, "kb");
         // Frames go to the batch as they are mapped, so the knowledge base checks them while the files are read.
         StagedBatch batch = kb.stagedBatch();
-        List<ParsedFrame> parsed = parseFiles(filesOrDirs, kb, batch);
+        List<ParsedFrame> parsed = parseFiles(filesOrDirs, kb, batch, frames -> {
+            List<Change> adds = new ArrayList<>(frames.size());
+            frames.forEach(f -> adds.add(new Change.Add(f)));
+            return kb.problems(adds);
+        });
         try {
             batch.commit();
         } catch (BatchRejectedException e) {
@@ -114,7 +150,8 @@ public final class KnowledgeLoader {
         return sourced(parsed);
     }
 
-    private static List<ParsedFrame> parseFiles(List<Path> filesOrDirs, KnowledgeBase context, StagedBatch target) {
+    private static List<ParsedFrame> parseFiles(List<Path> filesOrDirs, KnowledgeBase context, StagedBatch target,
+            Function<List<Frame>, List<Problem>> check) {
         requireNonNull(context, "context");
         List<Path> files = expand(filesOrDirs);
         long bytes = 0;
@@ -125,7 +162,7 @@ public final class KnowledgeLoader {
                 // Reported with its location when the file is read.
             }
         }
-        LoadSession session = new LoadSession(context, bytes > PIPELINE_CHARS, target);
+        LoadSession session = new LoadSession(context, bytes > PIPELINE_CHARS, target, check);
         try {
             for (Path f : files) {
                 session.readFile(f);
@@ -144,22 +181,30 @@ public final class KnowledgeLoader {
         }
         List<LoadError> errors = new ArrayList<>(e.problems().size());
         for (Problem problem : e.problems()) {
-            ParsedFrame p = byName.get(problem.frame());
-            SourceLocation at;
-            if (p == null) {
-                at = new SourceLocation("(knowledge base)", 1, 1);
-            } else if (problem.slot().isPresent()) {
-                at = p.slot(problem.slot().get());
-            } else if (problem.message().contains("' is a kind of '") && p.isa().isPresent()) {
-                at = p.isa().get();
-            } else {
-                at = p.sourced().location();
-            }
-            errors.add(LoadError.at(at, problem.message()));
+            errors.add(locate(problem, byName.get(problem.frame())));
         }
         errors.sort(java.util.Comparator.comparing(LoadError::source).thenComparingInt(LoadError::line)
                 .thenComparingInt(LoadError::column));
-        return new KnowledgeXmlException(errors);
+        return new KnowledgeXmlException(errors, sourced(parsed));
+    }
+
+    /**
+     * A problem of the frame model at the element it concerns: the slot, the ISA, or the frame.
+     *
+     * @param p the frame the problem is about, or null when it was not read
+     */
+    static LoadError locate(Problem problem, ParsedFrame p) {
+        SourceLocation at;
+        if (p == null) {
+            at = new SourceLocation("(knowledge base)", 1, 1);
+        } else if (problem.slot().isPresent()) {
+            at = p.slot(problem.slot().get());
+        } else if (problem.message().contains("' is a kind of '") && p.isa().isPresent()) {
+            at = p.isa().get();
+        } else {
+            at = p.sourced().location();
+        }
+        return LoadError.at(at, problem);
     }
 
     private static List<SourcedFrame> sourced(List<ParsedFrame> parsed) {

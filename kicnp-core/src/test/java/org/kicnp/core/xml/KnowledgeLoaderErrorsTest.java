@@ -163,6 +163,118 @@ class KnowledgeLoaderErrorsTest {
     }
 
     @Test
+    void load_whenSomeFramesHaveXmlErrors_stillReportsTheFrameModelProblemsOfTheOthers() throws IOException {
+        Path a = file("a.xml", """
+                <KNOWLEDGEBASE>
+                  <FRAME>
+                    <NAME>Cup</NAME><ISINSTANCE>FALSE</ISINSTANCE>
+                    <SLOTLIST><SLOT><NAME>full</NAME><TYPE>TYPE_BOOL</TYPE><REQUIRED>Maybe</REQUIRED></SLOT></SLOTLIST>
+                  </FRAME>
+                  <FRAME><NAME>Greeting</NAME><ISA>Speach</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>
+                </KNOWLEDGEBASE>
+                """);
+        Path b = file("b.xml", kb(
+                "  <FRAME>\n    <NAME>Serve</NAME>\n    <SLOTLIST><SLOT><NAME>mUser</NAME><TYPE>TYPE_INSTANCE</TYPE>"
+                        + "<ARGUMENT>Usr</ARGUMENT></SLOT></SLOTLIST>\n  </FRAME>\n"));
+        KnowledgeBase kb = KnowledgeBase.create();
+
+        KnowledgeXmlException e = catchThrowableOfType(KnowledgeXmlException.class,
+                () -> KnowledgeLoader.load(kb, List.of(a, b)));
+
+        // one round: the XML error and both frame-model problems, in document order
+        assertThat(e.errors()).extracting(LoadError::format).containsExactly(
+                a + ":4:60: Slot 'full' of frame 'Cup' has REQUIRED 'Maybe', which is not a boolean; write TRUE or FALSE.",
+                a + ":6:31: Frame 'Greeting' is a kind of 'Speach', which is not defined.",
+                b + ":4:15: Slot 'mUser' of frame 'Serve' names class 'Usr' as its ARGUMENT, which is not defined.");
+        assertThat(e.errors().get(1).frame()).contains("Greeting");
+        assertThat(e.errors().get(2).slot()).contains("mUser");
+        assertThat(kb.size()).isZero();
+        assertThat(kb.version()).isZero();
+    }
+
+    @Test
+    void load_whenAFrameHasXmlErrors_reportsNothingThatOnlyFollowsFromIt() throws IOException {
+        Path a = file("a.xml", """
+                <KNOWLEDGEBASE>
+                  <FRAME><NAME>Mug</NAME><ISINSTANCE>perhaps</ISINSTANCE>
+                    <SLOTLIST><SLOT><NAME>owner</NAME><TYPE>TYPE_STR</TYPE></SLOT></SLOTLIST>
+                  </FRAME>
+                  <FRAME><NAME>mug1</NAME><ISA>Mug</ISA><ISINSTANCE>TRUE</ISINSTANCE>
+                    <SLOTLIST><SLOT><NAME>owner</NAME><TYPE>TYPE_STR</TYPE><VALUE>ann</VALUE></SLOT></SLOTLIST>
+                  </FRAME>
+                  <FRAME><NAME>Shelf</NAME><ISINSTANCE>FALSE</ISINSTANCE><HASPART><PART>Mug</PART></HASPART>
+                    <SLOTLIST>
+                      <SLOT><NAME>holds</NAME><TYPE>TYPE_INSTANCE</TYPE><ARGUMENT>Mug</ARGUMENT><VALUE>mug1</VALUE></SLOT>
+                      <SLOT><NAME>next</NAME><TYPE>TYPE_STR</TYPE><FRAMERELATED>Mug</FRAMERELATED></SLOT>
+                    </SLOTLIST>
+                  </FRAME>
+                  <FRAME><NAME>Tray</NAME><ISINSTANCE>FALSE</ISINSTANCE>
+                    <SLOTLIST>
+                      <SLOT><NAME>cup</NAME><TYPE>TYPE_INSTANCE</TYPE><ARGUMNT>Mug</ARGUMNT></SLOT>
+                    </SLOTLIST>
+                  </FRAME>
+                  <FRAME><NAME>Robot</NAME><ISA>Machine</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>
+                </KNOWLEDGEBASE>
+                """);
+
+        List<String> errors = errors(List.of(a));
+
+        // not "mug1 is a kind of 'Mug', which is not defined", "Shelf has part 'Mug'", "ARGUMENT 'Mug' ... not
+        // defined", "names as frame-related ... 'Mug'", nor Tray's "holds an instance but has no ARGUMENT" (its ARGUMENT is the misspelt element); the
+        // unrelated unknown parent of Robot is reported in the same round
+        assertThat(errors).hasSize(3);
+        assertThat(errors.get(0)).isEqualTo(a + ":2:26: Frame 'Mug' has ISINSTANCE 'perhaps', which is not a boolean; "
+                + "write TRUE or FALSE.");
+        assertThat(errors.get(1)).startsWith(a + ":16:55: Unknown element 'ARGUMNT' in SLOT;");
+        assertThat(errors.get(2)).isEqualTo(a + ":19:28: Frame 'Robot' is a kind of 'Machine', which is not defined.");
+    }
+
+    @Test
+    void load_whenAFrameIsPutInsideAnother_doesNotCallTheFramesThatNameItUndefined() throws IOException {
+        Path a = file("a.xml", """
+                <KNOWLEDGEBASE>
+                  <FRAME><NAME>Machine</NAME>
+                  <FRAME><NAME>Robot</NAME><ISINSTANCE>FALSE</ISINSTANCE></FRAME>
+                  </FRAME>
+                  <FRAME><NAME>Scout</NAME><ISA>Robot</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>
+                </KNOWLEDGEBASE>
+                """);
+
+        // Robot was skipped, never read: "Scout is a kind of 'Robot', which is not defined" would send the user
+        // looking for a frame that is there
+        assertThat(errors(List.of(a))).singleElement().asString()
+                .startsWith(a + ":3:3: Unknown element 'FRAME' in FRAME;");
+    }
+
+    @Test
+    void load_whenAListedDescendantHasXmlErrors_doesNotAlsoCallTheListWrong() throws IOException {
+        Path a = file("a.xml", """
+                <KNOWLEDGEBASE>
+                  <FRAME><NAME>Robot</NAME><DESCENDANTS><FRAME>Scout</FRAME><FRAME>Pino</FRAME></DESCENDANTS></FRAME>
+                  <FRAME><NAME>Scout</NAME><ISA>Robot</ISA><ISINSTANCE>maybe</ISINSTANCE></FRAME>
+                  <FRAME><NAME>Pino</NAME><ISA>Robot</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>
+                  <FRAME><NAME>Aibo</NAME><DESCENDANTS><FRAME>Pino</FRAME></DESCENDANTS></FRAME>
+                </KNOWLEDGEBASE>
+                """);
+
+        assertThat(errors(List.of(a))).containsExactly(
+                a + ":3:44: Frame 'Scout' has ISINSTANCE 'maybe', which is not a boolean; write TRUE or FALSE.",
+                a + ":5:27: Frame 'Aibo' lists DESCENDANTS 'Pino', but the frames that are a kind of it are none; "
+                        + "descendants are derived from ISA, so list them exactly or leave DESCENDANTS empty.");
+    }
+
+    @Test
+    void load_whenAFileIsNotWellFormed_reportsOnlyTheXmlErrors() throws IOException {
+        Path a = file("a.xml", "<KNOWLEDGEBASE>\n  <FRAME>\n    <NAME>Machine</NAM>\n  </FRAME>\n</KNOWLEDGEBASE>\n");
+        Path b = file("b.xml", kb(classFrame("Robot", "Machine")));
+
+        List<String> errors = errors(List.of(a, b));
+
+        // frames after the place the parser stopped were never read: "Machine is not defined" would be wrong
+        assertThat(errors).singleElement().asString().startsWith(a + ":3:").contains("not well-formed");
+    }
+
+    @Test
     void load_whenNumbersAreTooLarge_saysSoInsteadOfCallingThemNotNumbersOrMakingThemInfinite() throws IOException {
         Path a = file("a.xml", """
                 <FRAME>
@@ -351,6 +463,15 @@ class KnowledgeLoaderErrorsTest {
         assertThat(errors(List.of(a, b))).containsExactly(
                 a + ":1:37: Frame 'A' has ISINSTANCE 'perhaps', which is not a boolean; write TRUE or FALSE.",
                 b + ":1:16: Unknown element 'FRAM' in KNOWLEDGEBASE; expected FRAME.");
+    }
+
+    @Test
+    void expand_whenAPathIsEmpty_refusesItRatherThanListingTheWorkingDirectory() throws IOException {
+        Path a = file("a.xml", kb(classFrame("A", null)));
+
+        assertThatThrownBy(() -> KnowledgeLoader.expand(List.of(a, Path.of(""))))
+                .isInstanceOf(KnowledgeXmlException.class)
+                .hasMessage("'':1:1: An empty path names no file or directory; write '.' for the current directory.");
     }
 
     @Test

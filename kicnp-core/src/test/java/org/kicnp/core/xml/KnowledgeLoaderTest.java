@@ -93,6 +93,78 @@ class KnowledgeLoaderTest {
     }
 
     @Test
+    void load_whenAListSlotGivesNoArgument_readsItsItemsAsTheInheritedArgumentSays() throws IOException {
+        // the instance comes first: the class it inherits the item types from is read after it
+        Path users = file("users.xml", """
+                <KNOWLEDGEBASE>
+                  <FRAME><NAME>userA</NAME><ISA>KnownUser</ISA><ISINSTANCE>TRUE</ISINSTANCE>
+                    <SLOTLIST>
+                      <SLOT><NAME>face</NAME><TYPE>TYPE_LIST</TYPE><VALUE><ITEM>0.5</ITEM><ITEM>-1</ITEM></VALUE></SLOT>
+                      <SLOT><NAME>friends</NAME><VALUE><ITEM>userB</ITEM></VALUE></SLOT>
+                    </SLOTLIST>
+                  </FRAME>
+                  <FRAME><NAME>userB</NAME><ISA>KnownUser</ISA><ISINSTANCE>TRUE</ISINSTANCE></FRAME>
+                </KNOWLEDGEBASE>
+                """);
+        Path classes = file("z-classes.xml", """
+                <KNOWLEDGEBASE>
+                  <FRAME><NAME>User</NAME>
+                    <SLOTLIST>
+                      <SLOT><NAME>face</NAME><TYPE>TYPE_LIST</TYPE><ARGUMENT>TYPE_FLOAT</ARGUMENT></SLOT>
+                      <SLOT><NAME>friends</NAME><TYPE>TYPE_LIST</TYPE><ARGUMENT>User</ARGUMENT></SLOT>
+                    </SLOTLIST>
+                  </FRAME>
+                  <FRAME><NAME>KnownUser</NAME><ISA>User</ISA></FRAME>
+                </KNOWLEDGEBASE>
+                """);
+        KnowledgeBase kb = KnowledgeBase.create();
+
+        KnowledgeLoader.load(kb, List.of(users, classes));
+
+        assertThat(kb.value("userA", "face")).contains(new Value.Lst(List.of(Value.of(0.5), Value.of(-1.0))));
+        assertThat(kb.value("userA", "friends")).contains(new Value.Lst(List.of(Value.ref("userB"))));
+        assertThat(kb.require("userA").ownSlot("face").orElseThrow().argument()).isEmpty();
+    }
+
+    @Test
+    void load_whenAListItemDoesNotFitTheInheritedArgument_saysSo() throws IOException {
+        Path p = file("kb.xml", """
+                <KNOWLEDGEBASE>
+                  <FRAME><NAME>User</NAME>
+                    <SLOTLIST><SLOT><NAME>face</NAME><TYPE>TYPE_LIST</TYPE><ARGUMENT>TYPE_FLOAT</ARGUMENT></SLOT></SLOTLIST>
+                  </FRAME>
+                  <FRAME><NAME>userA</NAME><ISA>User</ISA><ISINSTANCE>TRUE</ISINSTANCE>
+                    <SLOTLIST><SLOT><NAME>face</NAME><VALUE><ITEM>wide</ITEM></VALUE></SLOT></SLOTLIST>
+                  </FRAME>
+                </KNOWLEDGEBASE>
+                """);
+
+        KnowledgeXmlException e = org.assertj.core.api.Assertions.catchThrowableOfType(KnowledgeXmlException.class,
+                () -> KnowledgeLoader.load(KnowledgeBase.create(), List.of(p)));
+
+        assertThat(e).isNotNull();
+        assertThat(e.errors()).extracting(LoadError::format).containsExactly(p + ":6:38: Slot 'face' of frame 'userA' "
+                + "has a VALUE that does not fit its type TYPE_LIST: 'wide' is not a number.");
+    }
+
+    @Test
+    void writeThenLoad_ofAnInstanceListOfTheClassesItemType_givesTheSameFrame() throws IOException {
+        KnowledgeBase kb = KnowledgeBase.create();
+        kb.add(Frame.classFrame("User").slot(Slot.builder("face", DataType.LIST).argument("TYPE_FLOAT").build()).build());
+        Frame userA = Frame.instance("userA", "User").provenance(org.kicnp.core.Provenance.LEARNED)
+                .slot(Slot.ofValue("face", DataType.LIST, new Value.Lst(List.of(Value.of(0.25), Value.of(2.0)))))
+                .build();
+        kb.add(userA);
+        Path p = dir.resolve("saved.xml");
+        KnowledgeXmlWriter.write(kb.frames(), p);
+
+        KnowledgeBase again = KnowledgeBase.create();
+        KnowledgeLoader.load(again, List.of(p));
+
+        assertThat(again.require("userA")).isEqualTo(userA);
+    }
+
+    @Test
     void parse_changesNothing() throws IOException {
         Path a = file("a.xml", "<FRAME><NAME>System</NAME></FRAME>");
         KnowledgeBase kb = KnowledgeBase.create();
