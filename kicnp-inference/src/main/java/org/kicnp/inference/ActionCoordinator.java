@@ -157,9 +157,44 @@ final class ActionCoordinator {
         overdue.sort(Comparator.comparingLong(t -> t.seq));
         for (Tracked t : overdue) {
             if (t.status == Action.Status.SENT || t.status == Action.Status.STARTED) {
-                finish(t, Action.Status.TIMED_OUT, "no end reported within " + limit(t) + " ms");
+                String why = "no end reported within " + limit(t) + " ms";
+                finish(t, Action.Status.TIMED_OUT, why);
+                sink.cancel(t.action, "timed out: " + why); // the robot stops what the platform gave up on
             }
         }
+    }
+
+    /** A script's cancel: the action with that id, else every unfinished action of the robot of that name. */
+    void cancelByIdOrRobot(String target, String reason) {
+        if (actions.containsKey(target)) {
+            cancel(target, reason);
+            return;
+        }
+        List<String> ofRobot = new ArrayList<>();
+        for (Tracked t : actions.values()) {
+            if (!t.status.finished() && t.action.robot().equals(target)) {
+                ofRobot.add(t.action.id());
+            }
+        }
+        ofRobot.forEach(id -> cancel(id, reason));
+    }
+
+    /**
+     * Cancels an action that has not finished: it fails with "cancelled: {@code reason}" (and fails what waits on it),
+     * and where it was sent the robot is asked to stop. Returns false when there is no such unfinished action.
+     */
+    boolean cancel(String id, String reason) {
+        Tracked t = actions.get(id);
+        if (t == null || t.status.finished()) {
+            return false;
+        }
+        boolean sent = t.status == Action.Status.SENT || t.status == Action.Status.STARTED;
+        held.remove(t);
+        finish(t, Action.Status.FAILED, "cancelled: " + reason);
+        if (sent) {
+            sink.cancel(t.action, reason);
+        }
+        return true;
     }
 
     private void finish(Tracked t, Action.Status status, String detail) {

@@ -10,4 +10,11 @@ public interface ActionSink {
     ActionSink NONE = a -> { };
 
     void send(Action action);
+
+    /**
+     * Asks the robot to stop an action the engine gave up on (it timed out) or that was cancelled; the engine has
+     * already finished it, so what the robot answers changes nothing. Must not block. By default nothing is sent.
+     */
+    default void cancel(Action action, String reason) {
+    }
 }

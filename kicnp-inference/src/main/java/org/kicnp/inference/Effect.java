@@ -17,4 +17,7 @@ sealed interface Effect {
     record Issue(String id, String robot, String action, List<String> args) implements Effect { }
 
     record Learn(Frame frame) implements Effect { }
+
+    /** Cancels an action by its id, or every unfinished action of a robot when {@code target} names a robot. */
+    record Cancel(String target, String reason) implements Effect { }
 }

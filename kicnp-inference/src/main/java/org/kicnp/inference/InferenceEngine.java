@@ -380,6 +380,24 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
         submit(() -> actions.failed(actionId, reason));
     }
 
+    /**
+     * Cancels an action the engine issued that has not finished: it fails with "cancelled: {@code reason}", the
+     * actions waiting on it (succession) fail too, and a robot already running it is asked to stop.
+     *
+     * @return false when the engine has no such unfinished action
+     */
+    public boolean cancelAction(String actionId, String reason) {
+        lock.lock();
+        try {
+            drain();
+            boolean cancelled = actions.cancel(actionId, reason);
+            runToQuiescence();
+            return cancelled;
+        } finally {
+            lock.unlock();
+        }
+    }
+
     /** Where the action stands, if the engine issued it. */
     public Optional<Action.Status> actionStatus(String actionId) {
         lock.lock();

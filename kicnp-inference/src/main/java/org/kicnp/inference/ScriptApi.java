@@ -77,6 +77,12 @@ final class ScriptApi {
             effects.add(new Effect.Destroy(FrameView.nameOf(args.get(0))));
             return true;
         });
+        g.put("cancel", (HostFunction) args -> {
+            need(args, 1, "cancel(actionIdOrRobot, reason)");
+            effects.add(new Effect.Cancel(FrameView.nameOf(args.get(0)), args.size() > 1
+                    ? String.valueOf(args.get(1)) : "cancelled by frame '" + frame + "'"));
+            return true;
+        });
         g.put("ask", (HostFunction) args -> {
             need(args, 1, "ask(class, bindings)");
             String cls = FrameView.nameOf(args.get(0));

@@ -81,6 +81,7 @@ final class ScriptCalls {
                     case Effect.Destroy x -> target.destroy(x.name(), "destroyed by a script of frame '" + frame + "'");
                     case Effect.Issue i -> actions.issue(action(i, frame, instance));
                     case Effect.Learn l -> learn(l.frame());
+                    case Effect.Cancel c -> actions.cancelByIdOrRobot(c.target(), c.reason());
                 }
             } catch (KnowledgeException | InferenceException ex) {
                 LOG.warn("An effect of a script of frame '{}' failed: {}", frame, ex.getMessage());

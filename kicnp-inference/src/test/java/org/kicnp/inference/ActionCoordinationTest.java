@@ -101,6 +101,67 @@ class ActionCoordinationTest {
     }
 
     @Test
+    void timeout_asksTheRobotToStopWhatThePlatformGaveUpOn() {
+        Fixture f = twoFrames(null);
+        InferenceEngine e = f.engine(EngineOptions.defaults().withActionTimeout(Duration.ofSeconds(5)));
+        f.assertFact("go", "Go");
+        e.runToQuiescence();
+        String walk = f.sent.getFirst().id();
+        e.actionEnded(f.sent.get(1).id(), "lay down");
+        f.now += 6_000;
+        e.runToQuiescence();
+
+        assertThat(e.actionStatus(walk)).contains(Action.Status.TIMED_OUT);
+        assertThat(f.cancelled).containsExactly(walk + ": timed out: no end reported within 5000 ms");
+    }
+
+    @Test
+    void cancelAction_failsItAndWhatWaitsOnIt_andAsksTheRobotToStop() {
+        Fixture f = twoFrames(Relation.Coordination.SUCCESSION);
+        InferenceEngine e = f.engine();
+        f.assertFact("go", "Go");
+        e.runToQuiescence();
+        String walk = f.sent.getFirst().id();
+        String follower = e.actions().get(1).id();
+
+        assertThat(e.cancelAction(walk, "the user left")).isTrue();
+
+        assertThat(e.actionStatus(walk)).contains(Action.Status.FAILED);
+        assertThat(e.actionStatus(follower)).contains(Action.Status.FAILED);
+        assertThat(f.sent).hasSize(1);
+        assertThat(f.cancelled).containsExactly(walk + ": the user left");
+        assertThat(f.traced(TraceEvent.ActionChanged.class)).anySatisfy(c -> {
+            assertThat(c.actionId()).isEqualTo(walk);
+            assertThat(c.detail()).isEqualTo("cancelled: the user left");
+        });
+        assertThat(e.cancelAction(walk, "again")).as("finished already").isFalse();
+        // A late answer from the robot changes nothing.
+        e.actionEnded(walk, "walked anyway");
+        assertThat(e.actionStatus(walk)).contains(Action.Status.FAILED);
+    }
+
+    @Test
+    void aScriptsCancel_ofARobot_cancelsItsUnfinishedActions() {
+        Fixture f = twoFrames(null);
+        f.cls("Stop", null);
+        f.kb.add(Frame.classFrame("Halt").slot(Fixture.inst("mStop", "Stop"))
+                .slot(Fixture.str("onInstantiate", "halt")).build());
+        f.scripts.define("halt", g -> Fixture.call(g, "cancel", "PINO", "stop requested"));
+        InferenceEngine e = f.engine();
+        f.assertFact("go", "Go");
+        e.runToQuiescence();
+        String walk = f.sent.getFirst().id();
+        String lie = f.sent.get(1).id();
+
+        f.assertFact("stop", "Stop");
+        e.runToQuiescence();
+
+        assertThat(e.actionStatus(walk)).contains(Action.Status.FAILED);
+        assertThat(e.actionStatus(lie)).as("AIBO's action is not PINO's").contains(Action.Status.SENT);
+        assertThat(f.cancelled).containsExactly(walk + ": stop requested");
+    }
+
+    @Test
     void timeoutSlot_onBehaviorFrame_overridesTheDefaultTimeout() {
         Fixture f = twoFrames(null);
         f.kb.replace(f.kb.require("A").withSlot(Fixture.num("timeout", 1_000)));

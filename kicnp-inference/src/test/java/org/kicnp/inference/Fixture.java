@@ -18,6 +18,8 @@ final class Fixture {
     final KnowledgeBase kb = KnowledgeBase.create();
     final Scripts scripts = new Scripts();
     final List<Action> sent = new ArrayList<>();
+    /** What the engine asked the robots to stop: "actionId: reason". */
+    final List<String> cancelled = new ArrayList<>();
     final List<TraceEvent> trace = new ArrayList<>();
     long now = 1_000;
 
@@ -89,8 +91,15 @@ final class Fixture {
     }
 
     InferenceEngine engine(EngineOptions options) {
-        InferenceEngine e = InferenceEngine.builder(kb).options(options).scripts(scripts).actionSink(sent::add)
-                .clock(() -> now).build();
+        InferenceEngine e = InferenceEngine.builder(kb).options(options).scripts(scripts).actionSink(new ActionSink() {
+            @Override public void send(Action action) {
+                sent.add(action);
+            }
+
+            @Override public void cancel(Action action, String reason) {
+                cancelled.add(action.id() + ": " + reason);
+            }
+        }).clock(() -> now).build();
         e.addTraceListener(trace::add);
         return e;
     }

@@ -61,6 +61,13 @@ final class CommandBridge implements org.kicnp.inference.ActionSink, FeedbackLis
         }
     }
 
+    /** The engine gave up on an action (it timed out) or cancelled it: the robot is asked to stop. */
+    @Override public void cancel(Action action, String reason) {
+        String agent = agentOf(action.robot());
+        log.record("cancel", Map.of("id", action.id(), "robot", agent, "reason", reason));
+        gateway.cancel(agent, action.id(), reason);
+    }
+
     private String agentOf(String robotFrame) {
         return kb.frame(robotFrame).flatMap(f -> kb.value(robotFrame, "agent")).map(Value::text)
                 .orElse(robotFrame.toLowerCase(Locale.ROOT));

@@ -180,6 +180,53 @@ class PlatformTest {
         }
     }
 
+    @Test
+    void serve_whenTheEngineCancelsAnAction_theRobotIsAskedToStop() throws Exception {
+        Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
+        List<String> cancels = new java.util.concurrent.CopyOnWriteArrayList<>();
+        LinkedBlockingQueue<Command> says = new LinkedBlockingQueue<>();
+        try (Platform platform = Platform.start(PlatformConfig.of(kb).withEphemeralPorts());
+             AgentBase robovie = new AgentBase(AgentOptions.of("127.0.0.1", platform.gatewayPort(), "robovie",
+                     AgentKind.ROBOT, platform.token("robovie"))) {
+                 @Override protected void onCommand(Command command, ActionHandle handle) {
+                     handle.started();
+                     if (command.action().equals("say")) {
+                         says.add(command); // Robovie keeps talking until it is told to stop
+                     } else {
+                         handle.ended("done");
+                     }
+                 }
+
+                 @Override protected void onCancel(ActionHandle handle, String reason) {
+                     cancels.add(handle.command().id() + ": " + reason);
+                     super.onCancel(handle, reason);
+                 }
+             };
+             UserAgent user = new UserAgent(AgentOptions.of("127.0.0.1", platform.gatewayPort(), "user",
+                     AgentKind.USER, platform.token("user")))) {
+            robovie.startAndAwait(Duration.ofSeconds(10));
+            user.startAndAwait(Duration.ofSeconds(10));
+            user.assertFrame(Frame.instance("userA", "NewUser")
+                    .slot(Slot.ofValue("faceText", DataType.STRING, Value.of("0.1,0.2"))).build());
+            Command say = says.poll(20, TimeUnit.SECONDS);
+            assertThat(say).isNotNull();
+
+            assertThat(platform.engine().cancelAction(say.id(), "the user walked away")).isTrue();
+
+            await("Robovie is asked to stop", () -> !cancels.isEmpty());
+            assertThat(cancels).containsExactly(say.id() + ": the user walked away");
+            assertThat(platform.engine().actionStatus(say.id())).contains(org.kicnp.inference.Action.Status.FAILED);
+            await("the cancel is in the event log", () -> {
+                try {
+                    return Files.readAllLines(platform.events().file()).stream()
+                            .anyMatch(l -> l.contains("\"event\":\"cancel\"") && l.contains(say.id()));
+                } catch (java.io.IOException e) {
+                    return false;
+                }
+            });
+        }
+    }
+
     private static void await(String what, java.util.function.BooleanSupplier done) throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
         while (!done.getAsBoolean()) {
