@@ -162,6 +162,17 @@ public final class AgentCommand {
         return Duration.ofMillis(Math.round(timeoutSeconds * 1000));
     }
 
+    /** What every subcommand has: the {@code agent} command's options and a connection made with them. */
+    abstract static class Subcommand implements Callable<Integer> {
+        @ParentCommand AgentCommand agent;
+        @Spec CommandSpec spec;
+
+        /** Connects as the agent the options name, with {@code hooks} for what the server pushes. */
+        final CliAgent connect(Hooks hooks) {
+            return agent.connect(spec, hooks);
+        }
+    }
+
     /** What the server pushes to the agent: change notifications and relays, on the SDK's event thread. */
     record Hooks(java.util.function.Consumer<Message.Changed> changed,
                  java.util.function.Consumer<Message.Relay> relayed) {
@@ -219,16 +230,14 @@ public final class AgentCommand {
     @Command(name = "query", mixinStandardHelpOptions = true,
             description = "Print every instance of a class (and of the classes below it) as one document in the paper's "
                     + "XML.")
-    static final class Query implements Callable<Integer> {
-        @ParentCommand AgentCommand agent;
-        @Spec CommandSpec spec;
+    static final class Query extends Subcommand {
 
         @Parameters(paramLabel = "CLASS", description = "The class.")
         String ofClass;
 
         @Override public Integer call() {
             List<Frame> frames;
-            try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
+            try (CliAgent a = connect(Hooks.NONE)) {
                 frames = a.query(ofClass);
             }
             PrintWriter out = spec.commandLine().getOut();
@@ -242,9 +251,7 @@ public final class AgentCommand {
 
     @Command(name = "ask", mixinStandardHelpOptions = true,
             description = "Print the effective value of a slot (inherited along IS-A); exit 1 when it has none.")
-    static final class Ask implements Callable<Integer> {
-        @ParentCommand AgentCommand agent;
-        @Spec CommandSpec spec;
+    static final class Ask extends Subcommand {
 
         @Parameters(index = "0", paramLabel = "FRAME", description = "The frame.")
         String frame;
@@ -254,7 +261,7 @@ public final class AgentCommand {
 
         @Override public Integer call() {
             Optional<org.kicnp.core.Value> v;
-            try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
+            try (CliAgent a = connect(Hooks.NONE)) {
                 v = a.ask(frame, slot);
             }
             if (v.isEmpty()) {
@@ -272,9 +279,7 @@ public final class AgentCommand {
                     + "derived from what exists (slots fixed by SLOT=INSTANCE), each with its proof, as one JSON "
                     + "array: {ofClass, instance (when it exists), slots: {slot: proof}, assumptions}. Nothing is "
                     + "created and no script runs.")
-    static final class Prove implements Callable<Integer> {
-        @ParentCommand AgentCommand agent;
-        @Spec CommandSpec spec;
+    static final class Prove extends Subcommand {
 
         @Parameters(index = "0", paramLabel = "CLASS", description = "The class.")
         String ofClass;
@@ -285,7 +290,7 @@ public final class AgentCommand {
         @Override public Integer call() throws IOException {
             Map<String, String> fixed = pairs(spec, bindings);
             List<Message.ProofNode> proofs;
-            try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
+            try (CliAgent a = connect(Hooks.NONE)) {
                 proofs = a.prove(ofClass, fixed);
             }
             spec.commandLine().getOut().println(JSON.writerWithDefaultPrettyPrinter().writeValueAsString(
@@ -298,16 +303,14 @@ public final class AgentCommand {
     @Command(name = "why", mixinStandardHelpOptions = true,
             description = "Why an instance exists, back to the stimuli, as one JSON object: {instance, ofClass, "
                     + "derived, binding, conditions, supports: [...]}.")
-    static final class Why implements Callable<Integer> {
-        @ParentCommand AgentCommand agent;
-        @Spec CommandSpec spec;
+    static final class Why extends Subcommand {
 
         @Parameters(paramLabel = "INSTANCE", description = "The instance.")
         String instance;
 
         @Override public Integer call() throws IOException {
             Message.Reason reason;
-            try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
+            try (CliAgent a = connect(Hooks.NONE)) {
                 reason = a.why(instance);
             }
             spec.commandLine().getOut().println(JSON.writerWithDefaultPrettyPrinter().writeValueAsString(json(reason)));
@@ -358,16 +361,14 @@ public final class AgentCommand {
                     + "read here first (a slot without a TYPE takes the type the server's classes declare; a mistake is "
                     + "reported at its line and nothing is sent), then sent in one assert: the server stores them all "
                     + "as runtime instances, or none (it refuses to replace classes and declared knowledge).")
-    static final class Assert implements Callable<Integer> {
-        @ParentCommand AgentCommand agent;
-        @Spec CommandSpec spec;
+    static final class Assert extends Subcommand {
 
         @Parameters(arity = "1..*", paramLabel = "FILE_OR_XML", description = "Instance frames to assert.")
         List<String> sources;
 
         @Override public Integer call() {
             PrintWriter out = spec.commandLine().getOut();
-            try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
+            try (CliAgent a = connect(Hooks.NONE)) {
                 // The server's classes, so that a slot written without its type takes the type declared above it,
                 // as the server would read it, and a mistake is reported at its line before anything is sent.
                 KnowledgeBase context = KnowledgeBase.create();
@@ -396,15 +397,13 @@ public final class AgentCommand {
 
     @Command(name = "destroy", mixinStandardHelpOptions = true,
             description = "Remove instance frames, one after the other (what rests on them goes too).")
-    static final class Destroy implements Callable<Integer> {
-        @ParentCommand AgentCommand agent;
-        @Spec CommandSpec spec;
+    static final class Destroy extends Subcommand {
 
         @Parameters(arity = "1..*", paramLabel = "NAME", description = "Instances to remove.")
         List<String> names;
 
         @Override public Integer call() {
-            try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
+            try (CliAgent a = connect(Hooks.NONE)) {
                 for (String name : names) {
                     a.destroy(name);
                     spec.commandLine().getOut().println("Destroyed '" + name + "'.");
@@ -419,9 +418,7 @@ public final class AgentCommand {
                     + "this agent, as one JSON line: {\"time\", \"event\": added|replaced|removed|relay, \"class\", "
                     + "\"name\", \"frame_class\", \"slots\": {slot: value}} or {\"time\", \"event\": \"relay\", "
                     + "\"from\", \"subject\", \"body\"}. Runs until interrupted, --for seconds, or --count events.")
-    static final class Watch implements Callable<Integer> {
-        @ParentCommand AgentCommand agent;
-        @Spec CommandSpec spec;
+    static final class Watch extends Subcommand {
 
         @Parameters(arity = "1..*", paramLabel = "CLASS", description = "Classes to watch.")
         List<String> classes;
@@ -439,7 +436,7 @@ public final class AgentCommand {
             BlockingQueue<String> lines = new LinkedBlockingQueue<>();
             PrintWriter out = spec.commandLine().getOut();
             long deadline = seconds == null ? Long.MAX_VALUE : System.nanoTime() + Math.round(seconds * 1e9);
-            try (CliAgent a = agent.connect(spec, new Hooks(c -> lines.add(json(c)), r -> lines.add(json(r))))) {
+            try (CliAgent a = connect(new Hooks(c -> lines.add(json(c)), r -> lines.add(json(r))))) {
                 for (String c : classes) {
                     a.subscribe(c);
                 }
@@ -472,9 +469,7 @@ public final class AgentCommand {
 
     @Command(name = "send", mixinStandardHelpOptions = true,
             description = "Relay a message to an agent by name, or with --kind to every agent of a kind.")
-    static final class Send implements Callable<Integer> {
-        @ParentCommand AgentCommand agent;
-        @Spec CommandSpec spec;
+    static final class Send extends Subcommand {
 
         @Option(names = "--kind", paramLabel = "KIND",
                 description = "Send to every registered agent of this kind (robot, user, service, peer) instead.")
@@ -491,7 +486,7 @@ public final class AgentCommand {
                         ? "send takes AGENT SUBJECT BODY (or --kind KIND SUBJECT BODY)."
                         : "With --kind, send takes SUBJECT BODY.");
             }
-            try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
+            try (CliAgent a = connect(Hooks.NONE)) {
                 if (kind == null) {
                     a.relayTo(words.get(0), words.get(1), words.get(2));
                 } else {
@@ -507,9 +502,7 @@ public final class AgentCommand {
     @Command(name = "command", mixinStandardHelpOptions = true,
             description = "Send a robot a command and print its feedback as JSON lines until it ends (exit 0) or fails "
                     + "(exit 1). Arguments are NAME=VALUE.")
-    static final class Order implements Callable<Integer> {
-        @ParentCommand AgentCommand agent;
-        @Spec CommandSpec spec;
+    static final class Order extends Subcommand {
 
         @Parameters(index = "0", paramLabel = "ROBOT", description = "The robot's agent.")
         String robot;
@@ -529,7 +522,7 @@ public final class AgentCommand {
             PrintWriter out = spec.commandLine().getOut();
             PrintWriter err = spec.commandLine().getErr();
             long deadline = System.nanoTime() + Math.round(waitSeconds * 1e9);
-            try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
+            try (CliAgent a = connect(Hooks.NONE)) {
                 CommandTicket t = a.command(robot, action, named);
                 err.println("Command '" + t.command().id() + "' sent to '" + robot + "'; Ctrl-C cancels it.");
                 err.flush();
@@ -604,9 +597,7 @@ public final class AgentCommand {
     @Command(name = "cancel", mixinStandardHelpOptions = true,
             description = "Ask a robot to stop a command in flight (any user agent may, whoever sent it); the command "
                     + "then ends with feedback 'failed: cancelled: …' to whoever sent it.")
-    static final class Cancel implements Callable<Integer> {
-        @ParentCommand AgentCommand agent;
-        @Spec CommandSpec spec;
+    static final class Cancel extends Subcommand {
 
         @Parameters(index = "0", paramLabel = "ROBOT", description = "The robot's agent.")
         String robot;
@@ -619,7 +610,7 @@ public final class AgentCommand {
         String reason;
 
         @Override public Integer call() {
-            try (CliAgent a = agent.connect(spec, Hooks.NONE)) {
+            try (CliAgent a = connect(Hooks.NONE)) {
                 a.cancel(robot, command, reason);
             }
             spec.commandLine().getOut().println("Asked '" + robot + "' to stop '" + command + "'.");

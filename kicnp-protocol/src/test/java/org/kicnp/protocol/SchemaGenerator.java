@@ -33,15 +33,7 @@ final class SchemaGenerator {
         props.putObject("v").put("const", MessageCodec.VERSION);
         props.putObject("type").put("const", type.wireName());
         ArrayNode required = JSON.createArrayNode().add("v").add("type");
-        for (RecordComponent c : type.recordClass().getRecordComponents()) {
-            Type t = c.getGenericType();
-            if (c.getType() == Optional.class) {
-                t = ((ParameterizedType) t).getActualTypeArguments()[0];
-            } else {
-                required.add(c.getName());
-            }
-            props.set(c.getName(), typeSchema(t));
-        }
+        components(type.recordClass(), props, required);
         s.set("required", required);
         if (type == MessageType.RELAY) {
             ArrayNode exactlyOne = s.putArray("oneOf");
@@ -102,9 +94,15 @@ final class SchemaGenerator {
     private static ObjectNode recordSchema(Class<?> c) {
         ObjectNode s = JSON.createObjectNode();
         s.put("type", "object");
-        ObjectNode props = s.putObject("properties");
         ArrayNode required = JSON.createArrayNode();
-        for (RecordComponent rc : c.getRecordComponents()) {
+        components(c, s.putObject("properties"), required);
+        s.set("required", required);
+        return s;
+    }
+
+    /** A record's components as schema properties; those that are not optional are also required. */
+    private static void components(Class<?> record, ObjectNode props, ArrayNode required) {
+        for (RecordComponent rc : record.getRecordComponents()) {
             Type t = rc.getGenericType();
             if (rc.getType() == Optional.class) {
                 t = ((ParameterizedType) t).getActualTypeArguments()[0];
@@ -113,8 +111,6 @@ final class SchemaGenerator {
             }
             props.set(rc.getName(), typeSchema(t));
         }
-        s.set("required", required);
-        return s;
     }
 
     /** Adds the definitions of a slot value and of the records a schema refers to. */
