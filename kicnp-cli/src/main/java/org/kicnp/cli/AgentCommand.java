@@ -517,6 +517,9 @@ public final class AgentCommand {
                 description = "How long to wait for the action to end (default ${DEFAULT-VALUE}).")
         double waitSeconds;
 
+        /** The feedback printed so far: the waiting loop and a Ctrl-C's cancel print each line once between them. */
+        private final Printed printed = new Printed();
+
         @Override public Integer call() throws InterruptedException {
             Map<String, String> named = pairs(spec, args);
             PrintWriter out = spec.commandLine().getOut();
@@ -530,7 +533,6 @@ public final class AgentCommand {
                 Thread onInterrupt = new Thread(() -> cancelAndReport(a, t, "interrupted at the terminal", out),
                         "kicnp-agent-cancel");
                 Runtime.getRuntime().addShutdownHook(onInterrupt);
-                Printed printed = new Printed();
                 try {
                     while (true) {
                         try {
@@ -563,7 +565,6 @@ public final class AgentCommand {
 
         /** Cancels the command unless it ended, then prints its feedback up to the end (waiting up to 5 s for it). */
         private void cancelAndReport(CliAgent a, CommandTicket t, String reason, PrintWriter out) {
-            Printed printed = new Printed();
             try {
                 a.cancel(robot, t.command().id(), reason);
                 t.result(Duration.ofSeconds(5));
