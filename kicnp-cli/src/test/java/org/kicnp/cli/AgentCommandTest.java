@@ -296,7 +296,7 @@ class AgentCommandTest {
             @Override protected void onCommand(Command c, ActionHandle h) {
                 h.started();
                 while (!h.isCancelRequested()) {
-                    Thread.onSpinWait();
+                    pause();
                 }
             }
         }) {
@@ -354,8 +354,17 @@ class AgentCommandTest {
     private static void awaitTrue(java.util.function.BooleanSupplier condition) {
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
         while (!condition.getAsBoolean() && System.nanoTime() < deadline) {
-            Thread.onSpinWait();
+            pause();
         }
         assertThat(condition.getAsBoolean()).isTrue();
+    }
+
+    /** Waits a little without holding a core: the agents' own threads are virtual and share two carriers here. */
+    private static void pause() {
+        try {
+            Thread.sleep(5);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 }
