@@ -53,8 +53,8 @@ import picocli.CommandLine.Spec;
  * through the gateway's wire protocol with the agent's own token, so the server's checks apply as to any agent.
  */
 @Command(name = "agent", mixinStandardHelpOptions = true,
-        description = "Talk to a running server as an agent: query and change its knowledge, watch changes, relay "
-                + "messages, send a robot a command. Connects with a token of the agent file (serve writes it to "
+        description = "Talk to a running server as an agent: query and change its knowledge, ask it to prove and "
+                + "explain, watch changes, relay messages, command robots and cancel commands. Connects with a token of the agent file (serve writes it to "
                 + "KB_DIR/.kicnp/agents.properties), as 'director' unless --as says otherwise.",
         subcommands = {
             AgentCommand.Query.class,
@@ -500,8 +500,9 @@ public final class AgentCommand {
     }
 
     @Command(name = "command", mixinStandardHelpOptions = true,
-            description = "Send a robot a command and print its feedback as JSON lines until it ends (exit 0) or fails "
-                    + "(exit 1). Arguments are NAME=VALUE.")
+            description = "Send a robot a command and print its feedback as JSON lines as it comes, until it ends "
+                    + "(exit 0) or fails (exit 1). Ctrl-C, or no end within --wait, cancels it. Arguments are "
+                    + "NAME=VALUE.")
     static final class Order extends Subcommand {
 
         @Parameters(index = "0", paramLabel = "ROBOT", description = "The robot's agent.")
@@ -514,7 +515,8 @@ public final class AgentCommand {
         List<String> args = new ArrayList<>();
 
         @Option(names = "--wait", defaultValue = "60", paramLabel = "SECONDS",
-                description = "How long to wait for the action to end (default ${DEFAULT-VALUE}).")
+                description = "How long to wait for the action to end before cancelling it (default "
+                        + "${DEFAULT-VALUE}).")
         double waitSeconds;
 
         /** The feedback printed so far: the waiting loop and a Ctrl-C's cancel print each line once between them. */
