@@ -163,4 +163,36 @@ class GatewayCancelTest {
         alice.cancel("scout", walk.command().id(), "done testing");
         assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class);
     }
+
+    @Test
+    void aMalformedCancel_getsBadMessage_andOnlyItsConnectionCloses() throws Exception {
+        SlowRobot scout = connect(new SlowRobot(options("scout", AgentKind.ROBOT), false));
+        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
+        CommandTicket walk = alice.command("scout", "walk", Map.of());
+        assertThat(scout.running.await(10, TimeUnit.SECONDS)).isTrue();
+
+        for (String json : List.of(
+                // a number where the protocol wants a string: the command id, the robot, the reason
+                "{\"v\":1,\"type\":\"cancel\",\"id\":\"1\",\"robot\":\"scout\",\"command\":7,\"reason\":\"r\"}",
+                "{\"v\":1,\"type\":\"cancel\",\"id\":\"1\",\"robot\":\"scout\",\"command\":\"" + walk.command().id()
+                        + "\",\"reason\":false}",
+                "{\"v\":1,\"type\":\"cancel\",\"id\":\"1\",\"robot\":\"scout\",\"command\":\"" + walk.command().id()
+                        + "\"}")) {
+            try (RawClient raw = new RawClient(server.port())) {
+                raw.send(new org.kicnp.protocol.Message.Hello("h", "bob", AgentKind.USER, "bob-token"));
+                assertThat(raw.read()).isInstanceOf(org.kicnp.protocol.Message.AuthResult.class);
+                raw.sendPayload(json.getBytes(java.nio.charset.StandardCharsets.UTF_8));
+                assertThat(raw.readUntilClosed()).as(json).singleElement()
+                        .isInstanceOfSatisfying(org.kicnp.protocol.Message.ErrorReply.class,
+                                e -> assertThat(e.code()).isEqualTo(ErrorCode.BAD_MESSAGE));
+            }
+        }
+
+        // Nothing was cancelled, and the other connections carry on.
+        assertThat(walk.feedback()).extracting(f -> f.stage().name()).containsExactly("STARTED");
+        assertThat(alice.isConnected() && scout.isConnected()).isTrue();
+        alice.cancel("scout", walk.command().id(), "done testing");
+        assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class)
+                .hasMessage("cancelled: done testing (asked by 'alice')");
+    }
 }
