@@ -104,6 +104,9 @@ public final class ActionHandle {
             return;
         }
         if (done.get()) {
+            if (cancelReason != null) {
+                return; // onCancel reported the end; the robot's program is still winding down
+            }
             throw new IllegalStateException("Command '" + command.id() + "' is done; no more " 
                     + stage.name().toLowerCase(java.util.Locale.ROOT) + " reports.");
         }

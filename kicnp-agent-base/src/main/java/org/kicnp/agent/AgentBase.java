@@ -94,7 +94,8 @@ public abstract class AgentBase implements AutoCloseable {
      * A request to stop a command this robot is running ({@code handle.command()}), from a user or service agent or
      * the platform. Stop the robot, then report through the handle — {@link ActionHandle#cancelled} for the usual
      * answer. By default the command is reported cancelled at once; the robot's own work on it is not interrupted,
-     * so override this where the robot can stop. Runs on a virtual thread of its own.
+     * so override this where the robot can stop. Runs on a virtual thread of its own. If it throws before the
+     * command was reported done, the SDK reports it cancelled, with the exception's message.
      */
     protected void onCancel(ActionHandle handle, String reason) {
         handle.cancelled(reason);
@@ -474,6 +475,15 @@ public abstract class AgentBase implements AutoCloseable {
             LOG.info("Agent '{}' lost its connection while cancelling '{}'.", name(), handle.command().id());
         } catch (RuntimeException e) {
             LOG.warn("Agent '{}' failed to cancel '{}'.", name(), handle.command().id(), e);
+            // As for a command whose onCommand throws: the command ends, rather than stay in flight for good.
+            try {
+                if (!handle.isDone()) {
+                    handle.cancelled(reason + "; agent '" + name() + "' failed while stopping: " + e.getMessage());
+                }
+            } catch (NotConnectedException lost) {
+                LOG.info("Agent '{}' could not report the cancel of '{}': {}", name(), handle.command().id(),
+                        lost.getMessage());
+            }
         }
     }
 

@@ -195,4 +195,67 @@ class GatewayCancelTest {
         assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class)
                 .hasMessage("cancelled: done testing (asked by 'alice')");
     }
+
+    @Test
+    void aRobotWhoseOnCancelReportsTheEnd_mayStillReportFromItsProgram_withoutBeingThrownAt() throws Exception {
+        List<String> program = new CopyOnWriteArrayList<>();
+        CountDownLatch running = new CountDownLatch(1);
+        connect(new AgentBase(options("scout", AgentKind.ROBOT)) {
+            @Override protected void onCommand(Command command, ActionHandle handle) {
+                handle.started();
+                running.countDown();
+                while (!handle.isDone()) {
+                    Thread.onSpinWait();
+                }
+                // The program notices only at its next step, and reports it as it always does.
+                try {
+                    handle.progress(0.5, "half way");
+                    handle.ended("walked");
+                    program.add("reported");
+                } catch (RuntimeException e) {
+                    program.add("thrown at: " + e.getMessage());
+                }
+            }
+
+            @Override protected void onCancel(ActionHandle handle, String reason) {
+                handle.failed("braked: " + reason);
+            }
+        });
+        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
+        CommandTicket walk = alice.command("scout", "walk", Map.of());
+        assertThat(running.await(10, TimeUnit.SECONDS)).isTrue();
+
+        alice.cancel("scout", walk.command().id(), "stop");
+
+        assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class)
+                .hasMessage("braked: stop (asked by 'alice')");
+        Eventually.await("the robot's program wound down", () -> !program.isEmpty());
+        assertThat(program).containsExactly("reported");
+        assertThat(walk.feedback()).extracting(f -> f.stage().name()).containsExactly("STARTED", "FAILED");
+    }
+
+    @Test
+    void aRobotWhoseOnCancelThrows_stillEndsTheCommand_cancelledSayingWhatWentWrong() throws Exception {
+        CountDownLatch running = new CountDownLatch(1);
+        connect(new AgentBase(options("scout", AgentKind.ROBOT)) {
+            @Override protected void onCommand(Command command, ActionHandle handle) {
+                handle.started(); // the robot works on it elsewhere and reports later
+                running.countDown();
+            }
+
+            @Override protected void onCancel(ActionHandle handle, String reason) {
+                throw new IllegalStateException("the brake does not answer");
+            }
+        });
+        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
+        CommandTicket walk = alice.command("scout", "walk", Map.of());
+        assertThat(running.await(10, TimeUnit.SECONDS)).isTrue();
+
+        alice.cancel("scout", walk.command().id(), "stop");
+
+        assertThatThrownBy(() -> walk.result(Duration.ofSeconds(5))).isInstanceOf(ActionFailedException.class)
+                .hasMessage("cancelled: stop (asked by 'alice'); agent 'scout' failed while stopping: the brake does "
+                        + "not answer");
+        Eventually.await("the command is no longer in flight", () -> server.commandsInFlight() == 0);
+    }
 }
