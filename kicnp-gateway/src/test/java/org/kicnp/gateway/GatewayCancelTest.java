@@ -258,4 +258,18 @@ class GatewayCancelTest {
                         + "not answer");
         Eventually.await("the command is no longer in flight", () -> server.commandsInFlight() == 0);
     }
+
+    @Test
+    void aCancelWithAnEmptyReason_saysNoReasonWasGiven() throws Exception {
+        SlowRobot scout = connect(new SlowRobot(options("scout", AgentKind.ROBOT), false));
+        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
+        UserAgent bob = connect(new UserAgent(options("bob", AgentKind.USER)));
+        CommandTicket walk = alice.command("scout", "walk", Map.of());
+        assertThat(scout.running.await(10, TimeUnit.SECONDS)).isTrue();
+
+        bob.cancel("scout", walk.command().id(), " ");
+
+        assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class)
+                .hasMessage("cancelled: no reason given (asked by 'bob')");
+    }
 }
