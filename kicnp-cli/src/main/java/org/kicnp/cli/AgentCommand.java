@@ -470,7 +470,14 @@ public final class AgentCommand {
             long deadline = seconds == null ? Long.MAX_VALUE : System.nanoTime() + Math.round(seconds * 1e9);
             try (CliAgent a = connect(new Hooks(c -> lines.add(json(c)), r -> lines.add(json(r))))) {
                 for (String c : classes) {
-                    a.subscribe(c);
+                    try {
+                        a.subscribe(c);
+                    } catch (org.kicnp.agent.NotConnectedException e) {
+                        if (a.stopped().isEmpty()) {
+                            throw e;
+                        }
+                        return stopped(a); // replaced while it subscribed
+                    }
                 }
                 spec.commandLine().getErr().println("Watching " + String.join(", ", classes) + " as '" + a.name()
                         + "'.");
