@@ -56,6 +56,11 @@ public abstract class AgentBase implements AutoCloseable {
     private final Map<String, ActionHandle> running = new ConcurrentHashMap<>();
     private final Set<String> subscriptions = ConcurrentHashMap.newKeySet();
     private final AtomicLong ids = new AtomicLong();
+    /**
+     * Part of this agent object's command ids (its start time, base 36), so that the commands of two runs of one agent
+     * — two {@code kicnp agent command} in a row — never share an id while the first is still in flight at the robot.
+     */
+    private final String commandIds = Long.toString(System.currentTimeMillis(), 36);
     /** Relays and changes, in order; when full, the reader waits, so TCP pushes back on the server (which sheds). */
     private final ExecutorService events = new ThreadPoolExecutor(1, 1, 0, TimeUnit.MILLISECONDS,
             new ArrayBlockingQueue<>(EVENT_QUEUE), Thread.ofVirtual().name("agent-events").factory(), (task, pool) -> {
@@ -284,7 +289,7 @@ public abstract class AgentBase implements AutoCloseable {
 
     /** Sends a command to a robot through the hub (what a user agent does); follow it with the ticket. */
     public final CommandTicket command(String robot, String action, Map<String, String> args) {
-        Command c = new Command(name() + "-" + nextId(), robot, action, args);
+        Command c = new Command(name() + "-" + commandIds + "-" + nextId(), robot, action, args);
         CommandTicket ticket = new CommandTicket(c);
         tickets.put(c.id(), ticket);
         try {

@@ -373,6 +373,28 @@ class AgentCommandTest {
     }
 
     @Test
+    void command_afterAnEarlierRunsCommandIsStillInFlight_isSentUnderAnIdOfItsOwn() throws Exception {
+        try (AgentBase scout = new AgentBase(options("scout", AgentKind.ROBOT)) {
+            @Override protected void onCommand(Command c, ActionHandle h) {
+                h.started(); // walks on, and cannot be stopped
+            }
+
+            @Override protected void onCancel(ActionHandle h, String reason) {
+            }
+        }) {
+            scout.startAndAwait(Duration.ofSeconds(10));
+
+            CliRun first = agent("command", "scout", "walk", "--wait", "0.2");
+            CliRun second = agent("command", "scout", "walk", "--wait", "0.2");
+
+            assertThat(first.err()).contains("sent to 'scout'");
+            assertThat(second.err()).as("the first run's command is still in flight").contains("sent to 'scout'")
+                    .doesNotContain("already in flight");
+            assertThat(server.commandsInFlight()).isEqualTo(2);
+        }
+    }
+
+    @Test
     void aWrongToken_isRefusedByTheServer_exit1() {
         CliRun r = agent("--as", "intruder", "query", "Person");
 
