@@ -326,6 +326,10 @@ public final class MessageCodec {
             t = t.getCause();
         }
         String m = t instanceof JacksonException j ? j.getOriginalMessage() : t.getMessage();
+        if (t instanceof NullPointerException) {
+            // A record's check of a member, or a null in an object of strings (a binding, an argument).
+            return m == null ? "a value is null where the protocol wants one." : "'" + m + "' is null.";
+        }
         return m == null ? t.getClass().getSimpleName() : m;
     }
 }

@@ -79,6 +79,15 @@ class MessageCodecTest {
     }
 
     @Test
+    void decode_whenABindingOrArgumentIsNull_saysSoInWords() {
+        assertCode("{\"v\":1,\"type\":\"prove\",\"id\":\"1\",\"ofClass\":\"C\",\"bindings\":{\"mUser\":null}}",
+                ErrorCode.BAD_MESSAGE, "Bad 'prove' message: a value is null where the protocol wants one.");
+        assertCode("{\"v\":1,\"type\":\"command\",\"id\":\"1\",\"robot\":\"scout\",\"action\":\"go\","
+                + "\"args\":{\"to\":null}}", ErrorCode.BAD_MESSAGE,
+                "Bad 'command' message: a value is null where the protocol wants one.");
+    }
+
+    @Test
     void decode_whenANumberOrBooleanStandsForAString_reportsBadMessage() {
         assertCode("{\"v\":1,\"type\":\"cancel\",\"id\":9,\"robot\":\"scout\",\"command\":\"c-1\",\"reason\":\"r\"}",
                 ErrorCode.BAD_MESSAGE, "Bad 'cancel' message");
