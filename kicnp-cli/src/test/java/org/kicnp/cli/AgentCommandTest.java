@@ -306,6 +306,8 @@ class AgentCommandTest {
 
             assertThat(slow.exitCode()).isEqualTo(1);
             assertThat(slow.err()).contains("Ctrl-C cancels it.").contains("did not end within 1.0 s; cancelling it.");
+            assertThat(slow.outLines()).as("each report once").extracting(l -> JSON.readTree(l).get("stage").asText())
+                    .containsExactly("started", "failed");
             JsonNode last = JSON.readTree(slow.outLines().getLast());
             assertThat(last.get("stage").asText()).isEqualTo("failed");
             assertThat(last.get("detail").asText())
