@@ -462,8 +462,9 @@ public abstract class AgentBase implements AutoCloseable {
                     ActionHandle h = running.get(x.command());
                     if (h == null || h.isDone()) {
                         LOG.debug("Agent '{}': cancel of '{}', which is not running.", name(), x.command());
+                    } else if (!h.cancelRequested(x.reason())) {
+                        LOG.debug("Agent '{}': '{}' is already being cancelled.", name(), x.command());
                     } else {
-                        h.cancelRequested(x.reason());
                         Thread.ofVirtual().name("cancel-" + x.command()).start(() -> runCancel(h, x.reason()));
                     }
                 }

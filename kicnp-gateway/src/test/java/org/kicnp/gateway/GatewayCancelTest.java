@@ -272,4 +272,41 @@ class GatewayCancelTest {
         assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class)
                 .hasMessage("cancelled: no reason given (asked by 'bob')");
     }
+
+    @Test
+    void aSecondCancelWhileTheRobotIsStopping_doesNotMakeItStopTwice() throws Exception {
+        List<String> stops = new CopyOnWriteArrayList<>();
+        CountDownLatch running = new CountDownLatch(1);
+        CountDownLatch stopping = new CountDownLatch(1);
+        connect(new AgentBase(options("scout", AgentKind.ROBOT)) {
+            @Override protected void onCommand(Command command, ActionHandle handle) {
+                handle.started();
+                running.countDown();
+            }
+
+            @Override protected void onCancel(ActionHandle handle, String reason) {
+                stops.add(reason);
+                stopping.countDown();
+                try {
+                    Thread.sleep(500); // braking
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+                handle.cancelled(reason);
+            }
+        });
+        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
+        UserAgent bob = connect(new UserAgent(options("bob", AgentKind.USER)));
+        CommandTicket walk = alice.command("scout", "walk", Map.of());
+        assertThat(running.await(10, TimeUnit.SECONDS)).isTrue();
+
+        alice.cancel("scout", walk.command().id(), "stop");
+        assertThat(stopping.await(10, TimeUnit.SECONDS)).isTrue();
+        bob.cancel("scout", walk.command().id(), "stop now");
+
+        assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class)
+                .hasMessage("cancelled: stop (asked by 'alice')");
+        Thread.sleep(700); // a second onCancel, had there been one, would have run by now
+        assertThat(stops).containsExactly("stop (asked by 'alice')");
+    }
 }
