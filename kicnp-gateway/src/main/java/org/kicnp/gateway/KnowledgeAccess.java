@@ -117,8 +117,12 @@ final class KnowledgeAccess implements KnowledgeListener {
                     + "' is " + f.get().provenance().name().toLowerCase(java.util.Locale.ROOT)
                     + " knowledge; agents may destroy runtime instances only."));
         }
-        return retraction.destroy(d.frame()).handle((removed, failure) -> failure == null
-                ? new Message.Ack(d.id()) : refusal(d.id(), cause(failure)));
+        try {
+            return retraction.destroy(d.frame()).handle((removed, failure) -> failure == null
+                    ? new Message.Ack(d.id()) : refusal(d.id(), cause(failure)));
+        } catch (RuntimeException e) { // a retraction that throws (an engine thread shut down): answer, keep the connection
+            return CompletableFuture.completedFuture(refusal(d.id(), e));
+        }
     }
 
     /** Backward chaining through the {@link Reasoning}: every answer with its proof, nothing created. */

@@ -34,6 +34,10 @@ class GatewayProveWhyTest {
     private UserAgent alice;
 
     private void start(Reasoning reasoning) {
+        start(reasoning, Retraction.removeFrom(kb));
+    }
+
+    private void start(Reasoning reasoning, Retraction retraction) {
         kb.add(Frame.classFrame("User").build());
         kb.add(Frame.classFrame("Speech").build());
         kb.add(Frame.classFrame("AskUserName").parent("Speech").slot(Slot.builder("mUser", DataType.INSTANCE)
@@ -41,7 +45,7 @@ class GatewayProveWhyTest {
         kb.add(Frame.instance("userA", "User").build());
         server = GatewayServer.start(GatewayConfig.defaults().withPort(0),
                 AgentDirectory.empty().with("alice", "alice-token", AgentKind.USER), kb, FeedbackListener.NONE,
-                Retraction.removeFrom(kb), reasoning);
+                retraction, reasoning);
         alice = new UserAgent(AgentOptions.of("127.0.0.1", server.port(), "alice", AgentKind.USER, "alice-token"));
         alice.startAndAwait(WAIT);
     }
@@ -104,5 +108,22 @@ class GatewayProveWhyTest {
         refused(() -> alice.why("userA"), ErrorCode.REJECTED, "The inference engine is still starting.");
         assertThat(alice.isConnected()).isTrue();
         assertThat(alice.query("User")).hasSize(1);
+    }
+
+    @Test
+    void aRetractionThatThrows_answersTheDestroyWithAnError_andTheConnectionStays() {
+        start(Reasoning.NONE, new Retraction() {
+            @Override public void retract(String frame) {
+            }
+
+            @Override public CompletableFuture<java.util.Set<String>> destroy(String frame) {
+                throw new java.util.concurrent.RejectedExecutionException("The engine's thread is shut down.");
+            }
+        });
+        kb.add(Frame.instance("guest", "User").provenance(org.kicnp.core.Provenance.RUNTIME).build());
+
+        refused(() -> alice.destroy("guest"), ErrorCode.REJECTED, "The engine's thread is shut down.");
+        assertThat(alice.isConnected()).isTrue();
+        assertThat(kb.contains("guest")).isTrue();
     }
 }
