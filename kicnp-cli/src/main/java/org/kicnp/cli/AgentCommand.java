@@ -559,6 +559,9 @@ public final class AgentCommand {
                 description = "How long to wait for the action to end (default ${DEFAULT-VALUE}).")
         double waitSeconds;
 
+        /** The feedback printed so far: the waiting loop and a Ctrl-C's cancel print each line once between them. */
+        private final Printed printed = new Printed();
+
         @Override public Integer call() throws InterruptedException {
             requireAgentName(spec, "ROBOT", robot);
             if (action.isBlank()) {
@@ -574,11 +577,9 @@ public final class AgentCommand {
                 CommandTicket t = a.command(robot, action, named);
                 err.println("Command '" + t.command().id() + "' sent to '" + robot + "'; Ctrl-C cancels it.");
                 err.flush();
-                // Ctrl-C while it runs cancels it, as a goal is cancelled in ROS, and shows how it ended. One Printed
-                // for this loop and the hook, so that each report is printed once.
-                Printed printed = new Printed();
-                Thread onInterrupt = new Thread(() -> cancelAndReport(a, t, "interrupted at the terminal", out,
-                        printed), "kicnp-agent-cancel");
+                // Ctrl-C while it runs cancels it, as a goal is cancelled in ROS, and shows how it ended.
+                Thread onInterrupt = new Thread(() -> cancelAndReport(a, t, "interrupted at the terminal", out),
+                        "kicnp-agent-cancel");
                 Runtime.getRuntime().addShutdownHook(onInterrupt);
                 try {
                     while (true) {
@@ -595,7 +596,7 @@ public final class AgentCommand {
                                 err.println("kicnp agent command: '" + t.command().id() + "' did not end within "
                                         + waitSeconds + " s; cancelling it.");
                                 cancelAndReport(a, t, "the command line stopped waiting after " + waitSeconds + " s",
-                                        out, printed);
+                                        out);
                                 return 1;
                             }
                         }
@@ -611,7 +612,7 @@ public final class AgentCommand {
         }
 
         /** Cancels the command unless it ended, then prints its feedback up to the end (waiting up to 5 s for it). */
-        private void cancelAndReport(CliAgent a, CommandTicket t, String reason, PrintWriter out, Printed printed) {
+        private void cancelAndReport(CliAgent a, CommandTicket t, String reason, PrintWriter out) {
             try {
                 a.cancel(robot, t.command().id(), reason);
                 t.result(Duration.ofSeconds(5));

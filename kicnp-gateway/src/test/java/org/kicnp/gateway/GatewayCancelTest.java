@@ -101,70 +101,6 @@ class GatewayCancelTest {
     }
 
     @Test
-    void aUserCancels_theCommandFailsAsCancelledForItsSender_andTheRobotsLateReportIsIgnored() throws Exception {
-        SlowRobot scout = connect(new SlowRobot(options("scout", AgentKind.ROBOT), false));
-        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
-        UserAgent bob = connect(new UserAgent(options("bob", AgentKind.USER)));
-        CommandTicket walk = alice.command("scout", "walk", Map.of());
-        assertThat(scout.running.await(10, TimeUnit.SECONDS)).isTrue();
-
-        // An operator other than the sender may stop it.
-        bob.cancel("scout", walk.command().id(), "the room is blocked");
-
-        assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class)
-                .hasMessage("cancelled: the room is blocked (asked by 'bob')");
-        Eventually.await("the robot's program wound down", () -> !scout.lateReports.isEmpty());
-        assertThat(scout.lateReports).containsExactly("ended after the room is blocked (asked by 'bob')");
-        assertThat(walk.feedback()).extracting(f -> f.stage().name()).containsExactly("STARTED", "FAILED");
-        assertThat(server.commandsInFlight()).isZero();
-    }
-
-    @Test
-    void aRobotThatCanStop_answersTheCancelItself() throws Exception {
-        SlowRobot scout = connect(new SlowRobot(options("scout", AgentKind.ROBOT), true));
-        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
-        CommandTicket walk = alice.command("scout", "walk", Map.of());
-        assertThat(scout.running.await(10, TimeUnit.SECONDS)).isTrue();
-
-        alice.cancel("scout", walk.command().id(), "changed my mind");
-
-        assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class)
-                .hasMessage("stopped on the spot: changed my mind (asked by 'alice')");
-    }
-
-    @Test
-    void thePlatformCancelsACommandItSent_andItsListenerHearsTheFailure() throws Exception {
-        SlowRobot scout = connect(new SlowRobot(options("scout", AgentKind.ROBOT), false));
-        server.actionSink().send(new Command("a-1", "scout", "walk", Map.of()));
-        assertThat(scout.running.await(10, TimeUnit.SECONDS)).isTrue();
-
-        assertThat(server.actionSink().cancel("scout", "a-1", "a newer order")).isTrue();
-
-        Eventually.await("the engine's listener hears the failure", () -> heard.contains("failed a-1: cancelled: a newer order"));
-        assertThat(server.actionSink().cancel("scout", "a-1", "again")).as("no longer in flight").isFalse();
-    }
-
-    @Test
-    void aCancelOfNothingInFlight_orFromARobot_isRefused() throws Exception {
-        SlowRobot scout = connect(new SlowRobot(options("scout", AgentKind.ROBOT), false));
-        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
-
-        assertThatThrownBy(() -> alice.cancel("scout", "nothing-1", "why not"))
-                .isInstanceOfSatisfying(RequestRefusedException.class,
-                        e -> assertThat(e.code()).isEqualTo(ErrorCode.REJECTED))
-                .hasMessageContaining("No command 'nothing-1' to 'scout' is in flight.");
-
-        CommandTicket walk = alice.command("scout", "walk", Map.of());
-        assertThat(scout.running.await(10, TimeUnit.SECONDS)).isTrue();
-        assertThatThrownBy(() -> scout.cancel("scout", walk.command().id(), "bored"))
-                .isInstanceOfSatisfying(RequestRefusedException.class,
-                        e -> assertThat(e.code()).isEqualTo(ErrorCode.FORBIDDEN))
-                .hasMessageContaining("Only user and service agents may cancel commands");
-        alice.cancel("scout", walk.command().id(), "done testing");
-        assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class);
-    }
-
-    @Test
     void aMalformedCancel_getsBadMessage_andOnlyItsConnectionCloses() throws Exception {
         SlowRobot scout = connect(new SlowRobot(options("scout", AgentKind.ROBOT), false));
         UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
@@ -314,5 +250,69 @@ class GatewayCancelTest {
                 .hasMessage("cancelled: stop (asked by 'alice')");
         Thread.sleep(700); // a second onCancel, had there been one, would have run by now
         assertThat(stops).containsExactly("stop (asked by 'alice')");
+    }
+
+    @Test
+    void aUserCancels_theCommandFailsAsCancelledForItsSender_andTheRobotsLateReportIsIgnored() throws Exception {
+        SlowRobot scout = connect(new SlowRobot(options("scout", AgentKind.ROBOT), false));
+        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
+        UserAgent bob = connect(new UserAgent(options("bob", AgentKind.USER)));
+        CommandTicket walk = alice.command("scout", "walk", Map.of());
+        assertThat(scout.running.await(10, TimeUnit.SECONDS)).isTrue();
+
+        // An operator other than the sender may stop it.
+        bob.cancel("scout", walk.command().id(), "the room is blocked");
+
+        assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class)
+                .hasMessage("cancelled: the room is blocked (asked by 'bob')");
+        Eventually.await("the robot's program wound down", () -> !scout.lateReports.isEmpty());
+        assertThat(scout.lateReports).containsExactly("ended after the room is blocked (asked by 'bob')");
+        assertThat(walk.feedback()).extracting(f -> f.stage().name()).containsExactly("STARTED", "FAILED");
+        assertThat(server.commandsInFlight()).isZero();
+    }
+
+    @Test
+    void aRobotThatCanStop_answersTheCancelItself() throws Exception {
+        SlowRobot scout = connect(new SlowRobot(options("scout", AgentKind.ROBOT), true));
+        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
+        CommandTicket walk = alice.command("scout", "walk", Map.of());
+        assertThat(scout.running.await(10, TimeUnit.SECONDS)).isTrue();
+
+        alice.cancel("scout", walk.command().id(), "changed my mind");
+
+        assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class)
+                .hasMessage("stopped on the spot: changed my mind (asked by 'alice')");
+    }
+
+    @Test
+    void thePlatformCancelsACommandItSent_andItsListenerHearsTheFailure() throws Exception {
+        SlowRobot scout = connect(new SlowRobot(options("scout", AgentKind.ROBOT), false));
+        server.actionSink().send(new Command("a-1", "scout", "walk", Map.of()));
+        assertThat(scout.running.await(10, TimeUnit.SECONDS)).isTrue();
+
+        assertThat(server.actionSink().cancel("scout", "a-1", "a newer order")).isTrue();
+
+        Eventually.await("the engine's listener hears the failure", () -> heard.contains("failed a-1: cancelled: a newer order"));
+        assertThat(server.actionSink().cancel("scout", "a-1", "again")).as("no longer in flight").isFalse();
+    }
+
+    @Test
+    void aCancelOfNothingInFlight_orFromARobot_isRefused() throws Exception {
+        SlowRobot scout = connect(new SlowRobot(options("scout", AgentKind.ROBOT), false));
+        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
+
+        assertThatThrownBy(() -> alice.cancel("scout", "nothing-1", "why not"))
+                .isInstanceOfSatisfying(RequestRefusedException.class,
+                        e -> assertThat(e.code()).isEqualTo(ErrorCode.REJECTED))
+                .hasMessageContaining("No command 'nothing-1' to 'scout' is in flight.");
+
+        CommandTicket walk = alice.command("scout", "walk", Map.of());
+        assertThat(scout.running.await(10, TimeUnit.SECONDS)).isTrue();
+        assertThatThrownBy(() -> scout.cancel("scout", walk.command().id(), "bored"))
+                .isInstanceOfSatisfying(RequestRefusedException.class,
+                        e -> assertThat(e.code()).isEqualTo(ErrorCode.FORBIDDEN))
+                .hasMessageContaining("Only user and service agents may cancel commands");
+        alice.cancel("scout", walk.command().id(), "done testing");
+        assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class);
     }
 }
