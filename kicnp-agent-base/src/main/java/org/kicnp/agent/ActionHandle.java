@@ -77,8 +77,13 @@ public final class ActionHandle {
         return Optional.ofNullable(cancelReason);
     }
 
-    void cancelRequested(String reason) {
+    /** Records the first cancel asked for; false for a later one, which {@code onCancel} does not hear again. */
+    synchronized boolean cancelRequested(String reason) {
+        if (cancelReason != null) {
+            return false;
+        }
         cancelReason = reason;
+        return true;
     }
 
     /** Whether {@link #ended} or {@link #failed} was called. */
@@ -104,6 +109,9 @@ public final class ActionHandle {
             return;
         }
         if (done.get()) {
+            if (cancelReason != null) {
+                return; // onCancel reported the end; the robot's program is still winding down
+            }
             throw new IllegalStateException("Command '" + command.id() + "' is done; no more " 
                     + stage.name().toLowerCase(java.util.Locale.ROOT) + " reports.");
         }

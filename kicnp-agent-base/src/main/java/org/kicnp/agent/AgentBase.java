@@ -56,6 +56,11 @@ public abstract class AgentBase implements AutoCloseable {
     private final Map<String, ActionHandle> running = new ConcurrentHashMap<>();
     private final Set<String> subscriptions = ConcurrentHashMap.newKeySet();
     private final AtomicLong ids = new AtomicLong();
+    /**
+     * Part of this agent object's command ids (its start time, base 36), so that the commands of two runs of one agent
+     * — two {@code kicnp agent command} in a row — never share an id while the first is still in flight at the robot.
+     */
+    private final String commandIds = Long.toString(System.currentTimeMillis(), 36);
     /** Relays and changes, in order; when full, the reader waits, so TCP pushes back on the server (which sheds). */
     private final ExecutorService events = new ThreadPoolExecutor(1, 1, 0, TimeUnit.MILLISECONDS,
             new ArrayBlockingQueue<>(EVENT_QUEUE), Thread.ofVirtual().name("agent-events").factory(), (task, pool) -> {
@@ -94,7 +99,8 @@ public abstract class AgentBase implements AutoCloseable {
      * A request to stop a command this robot is running ({@code handle.command()}), from a user or service agent or
      * the platform. Stop the robot, then report through the handle — {@link ActionHandle#cancelled} for the usual
      * answer. By default the command is reported cancelled at once; the robot's own work on it is not interrupted,
-     * so override this where the robot can stop. Runs on a virtual thread of its own.
+     * so override this where the robot can stop. Runs on a virtual thread of its own. If it throws before the
+     * command was reported done, the SDK reports it cancelled, with the exception's message.
      */
     protected void onCancel(ActionHandle handle, String reason) {
         handle.cancelled(reason);
@@ -283,7 +289,7 @@ public abstract class AgentBase implements AutoCloseable {
 
     /** Sends a command to a robot through the hub (what a user agent does); follow it with the ticket. */
     public final CommandTicket command(String robot, String action, Map<String, String> args) {
-        Command c = new Command(name() + "-" + nextId(), robot, action, args);
+        Command c = new Command(name() + "-" + commandIds + "-" + nextId(), robot, action, args);
         CommandTicket ticket = new CommandTicket(c);
         tickets.put(c.id(), ticket);
         try {
@@ -456,8 +462,9 @@ public abstract class AgentBase implements AutoCloseable {
                     ActionHandle h = running.get(x.command());
                     if (h == null || h.isDone()) {
                         LOG.debug("Agent '{}': cancel of '{}', which is not running.", name(), x.command());
+                    } else if (!h.cancelRequested(x.reason())) {
+                        LOG.debug("Agent '{}': '{}' is already being cancelled.", name(), x.command());
                     } else {
-                        h.cancelRequested(x.reason());
                         Thread.ofVirtual().name("cancel-" + x.command()).start(() -> runCancel(h, x.reason()));
                     }
                 }
@@ -474,6 +481,15 @@ public abstract class AgentBase implements AutoCloseable {
             LOG.info("Agent '{}' lost its connection while cancelling '{}'.", name(), handle.command().id());
         } catch (RuntimeException e) {
             LOG.warn("Agent '{}' failed to cancel '{}'.", name(), handle.command().id(), e);
+            // As for a command whose onCommand throws: the command ends, rather than stay in flight for good.
+            try {
+                if (!handle.isDone()) {
+                    handle.cancelled(reason + "; agent '" + name() + "' failed while stopping: " + e.getMessage());
+                }
+            } catch (NotConnectedException lost) {
+                LOG.info("Agent '{}' could not report the cancel of '{}': {}", name(), handle.command().id(),
+                        lost.getMessage());
+            }
         }
     }
 

@@ -107,17 +107,23 @@ public final class AgentCommand {
         if (System.getProperty(QUIET_SDK) == null) {
             System.setProperty(QUIET_SDK, "off");
         }
-        String[] hostPort = gateway.split(":", 2);
+        // HOST:PORT, the port after the last colon, so that an IPv6 address in brackets ([::1]:7777) works too.
+        int colon = gateway.lastIndexOf(':');
+        String host = colon < 0 ? "" : gateway.substring(0, colon);
+        if (host.startsWith("[") && host.endsWith("]")) {
+            host = host.substring(1, host.length() - 1);
+        }
         int port;
         try {
-            port = Integer.parseInt(hostPort.length == 2 ? hostPort[1] : "");
+            port = Integer.parseInt(gateway.substring(colon + 1));
         } catch (NumberFormatException e) {
-            throw new ParameterException(caller.commandLine(), "--gateway '" + gateway + "' is not host:port.");
+            port = -1;
         }
-        if (timeoutSeconds <= 0) {
-            throw new ParameterException(caller.commandLine(), "--timeout must be above 0 seconds, not "
-                    + timeoutSeconds + ".");
+        if (host.isEmpty() || port < 1 || port > 65535) {
+            throw new ParameterException(caller.commandLine(), "--gateway '" + gateway + "' is not HOST:PORT with a "
+                    + "port from 1 to 65535.");
         }
+        requirePositive(caller, "--timeout", timeoutSeconds);
         Properties file = new Properties();
         try (InputStream in = Files.newInputStream(tokens)) {
             file.load(in);
@@ -135,7 +141,7 @@ public final class AgentCommand {
         }
         AgentKind kind = kindOf(file.getProperty(as + ".kinds", "user"));
         Duration timeout = timeout();
-        AgentOptions options = AgentOptions.of(hostPort[0], port, as, kind, token);
+        AgentOptions options = AgentOptions.of(host, port, as, kind, token);
         options = new AgentOptions(options.host(), options.port(), options.name(), options.kind(), options.token(),
                 timeout, options.heartbeatInterval(), options.serverSilence(), options.backoffInitial(),
                 options.backoffMax(), options.maxFrameBytes(), options.socketFactory());
@@ -147,6 +153,22 @@ public final class AgentCommand {
             throw e;
         }
         return agent;
+    }
+
+    /** A usage error unless {@code seconds} is a number above 0 (not NaN, not infinite). */
+    static void requirePositive(CommandSpec caller, String option, double seconds) {
+        if (!(seconds > 0) || Double.isInfinite(seconds)) {
+            throw new ParameterException(caller.commandLine(), option + " must be a number of seconds above 0, not "
+                    + seconds + ".");
+        }
+    }
+
+    /** A usage error unless {@code name} is an agent name the protocol takes. */
+    static void requireAgentName(CommandSpec caller, String what, String name) {
+        if (!Message.NAME.matcher(name).matches()) {
+            throw new ParameterException(caller.commandLine(), what + " '" + name + "' is not an agent name: use "
+                    + "letters, digits, '_' and '-', starting with a letter or '_'.");
+        }
     }
 
     private static AgentKind kindOf(String kinds) {
@@ -374,14 +396,21 @@ public final class AgentCommand {
                 KnowledgeBase context = KnowledgeBase.create();
                 context.apply(a.pull(Optional.empty()).stream().map(f -> (Change) new Change.Put(f)).toList());
                 List<Frame> frames = new ArrayList<>();
-                for (String source : sources) {
+                Map<String, String> where = new LinkedHashMap<>(); // each frame's location, to name a repeated one
+                for (int i = 0; i < sources.size(); i++) {
+                    String source = sources.get(i);
                     List<SourcedFrame> parsed = source.stripLeading().startsWith("<")
-                            ? KnowledgeLoader.parseText(source, "argument", context)
+                            ? KnowledgeLoader.parseText(source, "argument " + (i + 1), context)
                             : KnowledgeLoader.parse(List.of(Path.of(source)), context);
                     for (SourcedFrame s : parsed) {
                         if (!s.frame().isInstance()) {
                             throw new IllegalArgumentException("'" + s.frame().name() + "' (" + s.location()
                                     + ") is a class; assert takes instance frames.");
+                        }
+                        String first = where.putIfAbsent(s.frame().name(), s.location().toString());
+                        if (first != null) {
+                            throw new IllegalArgumentException("Frame '" + s.frame().name() + "' is given twice, at "
+                                    + first + " and at " + s.location() + "; nothing was sent.");
                         }
                         frames.add(s.frame());
                     }
@@ -430,15 +459,25 @@ public final class AgentCommand {
         Integer count;
 
         @Override public Integer call() throws InterruptedException {
-            if (seconds != null && seconds <= 0 || count != null && count < 1) {
-                throw new ParameterException(spec.commandLine(), "--for needs seconds above 0 and --count 1 or more.");
+            if (seconds != null) {
+                requirePositive(spec, "--for", seconds);
+            }
+            if (count != null && count < 1) {
+                throw new ParameterException(spec.commandLine(), "--count must be 1 or more, not " + count + ".");
             }
             BlockingQueue<String> lines = new LinkedBlockingQueue<>();
             PrintWriter out = spec.commandLine().getOut();
             long deadline = seconds == null ? Long.MAX_VALUE : System.nanoTime() + Math.round(seconds * 1e9);
             try (CliAgent a = connect(new Hooks(c -> lines.add(json(c)), r -> lines.add(json(r))))) {
                 for (String c : classes) {
-                    a.subscribe(c);
+                    try {
+                        a.subscribe(c);
+                    } catch (org.kicnp.agent.NotConnectedException e) {
+                        if (a.stopped().isEmpty()) {
+                            throw e;
+                        }
+                        return stopped(a); // replaced while it subscribed
+                    }
                 }
                 spec.commandLine().getErr().println("Watching " + String.join(", ", classes) + " as '" + a.name()
                         + "'.");
@@ -455,15 +494,18 @@ public final class AgentCommand {
                         out.flush();
                         printed++;
                     } else if (a.stopped().isPresent()) {
-                        // Most often another command connected under the same name, which replaces this connection.
-                        spec.commandLine().getErr().println("kicnp agent watch: " + a.stopped().get().getMessage()
-                                + " To watch while other commands run, watch as another agent of the agent file "
-                                + "(--as).");
-                        return 1;
+                        return stopped(a);
                     }
                 }
             }
             return 0;
+        }
+
+        /** Says why the watch stopped for good: most often another command connected under the same name. */
+        private int stopped(CliAgent a) {
+            spec.commandLine().getErr().println("kicnp agent watch: " + a.stopped().orElseThrow().getMessage()
+                    + " To watch while other commands run, watch as another agent of the agent file (--as).");
+            return 1;
         }
     }
 
@@ -523,6 +565,12 @@ public final class AgentCommand {
         private final Printed printed = new Printed();
 
         @Override public Integer call() throws InterruptedException {
+            requireAgentName(spec, "ROBOT", robot);
+            if (action.isBlank()) {
+                throw new ParameterException(spec.commandLine(), "ACTION is empty; name the action to send to '"
+                        + robot + "'.");
+            }
+            requirePositive(spec, "--wait", waitSeconds);
             Map<String, String> named = pairs(spec, args);
             PrintWriter out = spec.commandLine().getOut();
             PrintWriter err = spec.commandLine().getErr();
@@ -613,6 +661,7 @@ public final class AgentCommand {
         String reason;
 
         @Override public Integer call() {
+            requireAgentName(spec, "ROBOT", robot);
             try (CliAgent a = connect(Hooks.NONE)) {
                 a.cancel(robot, command, reason);
             }

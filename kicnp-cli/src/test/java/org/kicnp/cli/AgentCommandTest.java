@@ -306,6 +306,8 @@ class AgentCommandTest {
 
             assertThat(slow.exitCode()).isEqualTo(1);
             assertThat(slow.err()).contains("Ctrl-C cancels it.").contains("did not end within 1.0 s; cancelling it.");
+            assertThat(slow.outLines()).as("each report once").extracting(l -> JSON.readTree(l).get("stage").asText())
+                    .containsExactly("started", "failed");
             JsonNode last = JSON.readTree(slow.outLines().getLast());
             assertThat(last.get("stage").asText()).isEqualTo("failed");
             assertThat(last.get("detail").asText())
@@ -315,6 +317,82 @@ class AgentCommandTest {
             CliRun none = agent("cancel", "scout", "director-99");
             assertThat(none.exitCode()).isEqualTo(1);
             assertThat(none.err()).contains("kicnp agent cancel: No command 'director-99' to 'scout' is in flight.");
+        }
+    }
+
+    @Test
+    void malformedOptionsAndArguments_areUsageErrors_exit2_namingWhatIsWrong() {
+        record Case(List<String> args, String says) { }
+        List<Case> cases = List.of(
+                new Case(List.of("--timeout", "NaN", "query", "Person"),
+                        "--timeout must be a number of seconds above 0, not NaN."),
+                new Case(List.of("--timeout", "0", "query", "Person"),
+                        "--timeout must be a number of seconds above 0, not 0.0."),
+                new Case(List.of("watch", "Person", "--for", "NaN"),
+                        "--for must be a number of seconds above 0, not NaN."),
+                new Case(List.of("command", "scout", "walk", "--wait", "0"),
+                        "--wait must be a number of seconds above 0, not 0.0."),
+                new Case(List.of("command", "scout", "walk", "--wait=-5"),
+                        "--wait must be a number of seconds above 0, not -5.0."),
+                new Case(List.of("command", "", "walk"),
+                        "ROBOT '' is not an agent name: use letters, digits, '_' and '-', starting with a letter or '_'."),
+                new Case(List.of("command", "scout", " "), "ACTION is empty; name the action to send to 'scout'."),
+                new Case(List.of("cancel", "my robot", "director-1"), "ROBOT 'my robot' is not an agent name"));
+        for (Case c : cases) {
+            CliRun r = agent(c.args().toArray(String[]::new));
+            assertThat(r.exitCode()).as(c.args() + ": " + r.err()).isEqualTo(2);
+            assertThat(r.err()).as(c.args().toString()).contains(c.says()).doesNotContain("Exception");
+        }
+
+        for (String gateway : List.of("localhost:99999", "localhost:", "localhost", ":" + server.port())) {
+            CliRun r = CliRun.of("agent", "--gateway", gateway, "--tokens", tokens.toString(), "query", "Person");
+            assertThat(r.exitCode()).as(gateway + ": " + r.err()).isEqualTo(2);
+            assertThat(r.err()).contains("--gateway '" + gateway + "' is not HOST:PORT with a port from 1 to 65535.")
+                    .doesNotContain("Exception");
+        }
+    }
+
+    @Test
+    void gateway_mayBeAnIpv6AddressInBrackets() {
+        CliRun r = CliRun.of("agent", "--gateway", "[::1]:1", "--tokens", tokens.toString(), "--timeout", "0.5",
+                "query", "Person");
+
+        // Not a usage error: the address is read, and nothing listens there.
+        assertThat(r.exitCode()).as(r.err()).isEqualTo(1);
+        assertThat(r.err()).contains("was not registered with ::1:1");
+    }
+
+    @Test
+    void assert_ofOneFrameInTwoArguments_sendsNothing_andNamesBothPlaces() {
+        String ann = "<FRAME><NAME>ann</NAME><ISA>Person</ISA><ISINSTANCE>TRUE</ISINSTANCE><SLOTLIST></SLOTLIST></FRAME>";
+
+        CliRun a = agent("assert", ann, ann);
+
+        assertThat(a.exitCode()).isEqualTo(1);
+        assertThat(a.err()).contains("kicnp agent assert: Frame 'ann' is given twice, at argument 1:1:1 and at "
+                + "argument 2:1:1; nothing was sent.");
+        assertThat(kb.contains("ann")).isFalse();
+    }
+
+    @Test
+    void command_afterAnEarlierRunsCommandIsStillInFlight_isSentUnderAnIdOfItsOwn() throws Exception {
+        try (AgentBase scout = new AgentBase(options("scout", AgentKind.ROBOT)) {
+            @Override protected void onCommand(Command c, ActionHandle h) {
+                h.started(); // walks on, and cannot be stopped
+            }
+
+            @Override protected void onCancel(ActionHandle h, String reason) {
+            }
+        }) {
+            scout.startAndAwait(Duration.ofSeconds(10));
+
+            CliRun first = agent("command", "scout", "walk", "--wait", "0.2");
+            CliRun second = agent("command", "scout", "walk", "--wait", "0.2");
+
+            assertThat(first.err()).contains("sent to 'scout'");
+            assertThat(second.err()).as("the first run's command is still in flight").contains("sent to 'scout'")
+                    .doesNotContain("already in flight");
+            assertThat(server.commandsInFlight()).isEqualTo(2);
         }
     }
 

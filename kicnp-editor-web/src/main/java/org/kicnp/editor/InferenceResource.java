@@ -69,6 +69,10 @@ final class InferenceResource implements Features.Inference {
     }
 
     @Override public Object why(String instance) {
+        if (!kb.require(instance).isInstance()) {
+            // The engine would explain a class as an instance nobody derived; there is no such instance to explain.
+            throw new ApiException(404, "Frame '" + instance + "' is a class; why explains instances only.");
+        }
         return InferenceJson.explanation(engine.why(instance));
     }
 

@@ -119,6 +119,14 @@ class InferenceApiTest {
                 .containsExactlyInAnyOrder("userA", "mouth1");
     }
 
+    @Test void why_ofAClass_is404_sayingWhyExplainsInstances() {
+        HttpResponse<String> r = http.get("/api/inference/why/NewUser");
+
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(404);
+        assertThat(json(r).get("error").asText()).isEqualTo("Frame 'NewUser' is a class; why explains instances only.");
+        assertThat(json(r).get("problems")).isEmpty();
+    }
+
     @Test void ask_answersWhichInstancesCouldExist() {
         setUpUserAndMouth();
 

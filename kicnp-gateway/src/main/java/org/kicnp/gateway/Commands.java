@@ -97,7 +97,9 @@ final class Commands implements ActionSink {
             return ErrorReply.to(c.id(), ErrorCode.FORBIDDEN, "Only user and service agents may cancel commands; "
                     + from + " is a " + from.kind().name().toLowerCase(java.util.Locale.ROOT) + " agent.");
         }
-        if (!cancel(c.robot(), c.command(), c.reason() + " (asked by '" + from.agent() + "')")) {
+        String reason = (c.reason().isBlank() ? "no reason given" : c.reason().strip()) + " (asked by '" + from.agent()
+                + "')";
+        if (!cancel(c.robot(), c.command(), reason)) {
             return ErrorReply.to(c.id(), ErrorCode.REJECTED, "No command '" + c.command() + "' to '" + c.robot()
                     + "' is in flight.");
         }

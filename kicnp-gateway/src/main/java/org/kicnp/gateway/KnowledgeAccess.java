@@ -117,26 +117,81 @@ final class KnowledgeAccess implements KnowledgeListener {
                     + "' is " + f.get().provenance().name().toLowerCase(java.util.Locale.ROOT)
                     + " knowledge; agents may destroy runtime instances only."));
         }
-        return retraction.destroy(d.frame()).handle((removed, failure) -> failure == null
-                ? new Message.Ack(d.id()) : refusal(d.id(), cause(failure)));
+        try {
+            return retraction.destroy(d.frame()).handle((removed, failure) -> failure == null
+                    ? new Message.Ack(d.id()) : refusal(d.id(), cause(failure)));
+        } catch (RuntimeException e) { // a retraction that throws (an engine thread shut down): answer, keep the connection
+            return CompletableFuture.completedFuture(refusal(d.id(), e));
+        }
     }
 
     /** Backward chaining through the {@link Reasoning}: every answer with its proof, nothing created. */
     CompletableFuture<Message> prove(Message.Prove p) {
-        if (!kb.contains(p.ofClass())) {
+        Optional<Frame> c = kb.frame(p.ofClass());
+        if (c.isEmpty()) {
             return CompletableFuture.completedFuture(unknown(p.id(), p.ofClass()));
         }
-        return reasoning.prove(p.ofClass(), p.bindings()).handle((proofs, failure) -> failure == null
-                ? new Message.Proofs(p.id(), proofs) : refusal(p.id(), cause(failure)));
+        if (c.get().isInstance()) {
+            return CompletableFuture.completedFuture(ErrorReply.to(p.id(), ErrorCode.REJECTED, "Frame '"
+                    + p.ofClass() + "' is an instance; prove takes a class."));
+        }
+        // A binding that names no instance, or a slot no answer could have, would only make the answer empty: say so.
+        for (var b : p.bindings().entrySet()) {
+            Optional<Frame> bound = kb.frame(b.getValue());
+            if (bound.isEmpty()) {
+                return CompletableFuture.completedFuture(ErrorReply.to(p.id(), ErrorCode.UNKNOWN_FRAME, "Binding '"
+                        + b.getKey() + "' names '" + b.getValue() + "', but there is no frame of that name."));
+            }
+            if (!bound.get().isInstance()) {
+                return CompletableFuture.completedFuture(ErrorReply.to(p.id(), ErrorCode.REJECTED, "Binding '"
+                        + b.getKey() + "' names '" + b.getValue() + "', which is a class; a binding names an instance."));
+            }
+            if (!hasSlotAtOrBelow(p.ofClass(), b.getKey())) {
+                return CompletableFuture.completedFuture(ErrorReply.to(p.id(), ErrorCode.REJECTED, "Neither class '"
+                        + p.ofClass() + "' nor any class below it has a slot '" + b.getKey() + "' to bind."));
+            }
+        }
+        try {
+            return reasoning.prove(p.ofClass(), p.bindings()).handle((proofs, failure) -> failure == null
+                    ? new Message.Proofs(p.id(), proofs) : refusal(p.id(), cause(failure)));
+        } catch (RuntimeException e) { // a Reasoning that throws rather than fail its future: answer, keep the connection
+            return CompletableFuture.completedFuture(refusal(p.id(), e));
+        }
+    }
+
+    /** Whether {@code cls}, or a frame below it, has (or inherits) the slot. */
+    private boolean hasSlotAtOrBelow(String cls, String slot) {
+        java.util.ArrayDeque<String> todo = new java.util.ArrayDeque<>(List.of(cls));
+        Set<String> seen = new HashSet<>();
+        while (!todo.isEmpty()) {
+            String f = todo.pop();
+            if (!seen.add(f)) {
+                continue;
+            }
+            if (kb.slot(f, slot).isPresent()) {
+                return true;
+            }
+            kb.children(f).stream().filter(ch -> !ch.isInstance()).forEach(ch -> todo.push(ch.name()));
+        }
+        return false;
     }
 
     /** Why an instance exists, through the {@link Reasoning}. */
     CompletableFuture<Message> why(Message.Why w) {
-        if (!kb.contains(w.instance())) {
+        Optional<Frame> f = kb.frame(w.instance());
+        if (f.isEmpty()) {
             return CompletableFuture.completedFuture(unknown(w.id(), w.instance()));
         }
-        return reasoning.why(w.instance()).handle((reason, failure) -> failure == null
-                ? new Message.Explained(w.id(), reason) : refusal(w.id(), cause(failure)));
+        if (!f.get().isInstance()) {
+            return CompletableFuture.completedFuture(ErrorReply.to(w.id(), ErrorCode.REJECTED, "Frame '"
+                    + w.instance() + "' is a class; why explains instances only."));
+        }
+        try {
+            return reasoning.why(w.instance()).handle((reason, failure) -> failure == null
+                    ? new Message.Explained(w.id(), reason) : refusal(w.id(), cause(failure)));
+        } catch (RuntimeException e) {
+            return CompletableFuture.completedFuture(refusal(w.id(), e));
+        }
     }
 
     /** Whether an exception's message is a sentence for the agent (the platform's refusals are), not a JDK detail. */

@@ -101,6 +101,158 @@ class GatewayCancelTest {
     }
 
     @Test
+    void aMalformedCancel_getsBadMessage_andOnlyItsConnectionCloses() throws Exception {
+        SlowRobot scout = connect(new SlowRobot(options("scout", AgentKind.ROBOT), false));
+        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
+        CommandTicket walk = alice.command("scout", "walk", Map.of());
+        assertThat(scout.running.await(10, TimeUnit.SECONDS)).isTrue();
+
+        for (String json : List.of(
+                // a number where the protocol wants a string: the command id, the robot, the reason
+                "{\"v\":1,\"type\":\"cancel\",\"id\":\"1\",\"robot\":\"scout\",\"command\":7,\"reason\":\"r\"}",
+                "{\"v\":1,\"type\":\"cancel\",\"id\":\"1\",\"robot\":\"scout\",\"command\":\"" + walk.command().id()
+                        + "\",\"reason\":false}",
+                "{\"v\":1,\"type\":\"cancel\",\"id\":\"1\",\"robot\":\"scout\",\"command\":\"" + walk.command().id()
+                        + "\"}")) {
+            try (RawClient raw = new RawClient(server.port())) {
+                raw.send(new org.kicnp.protocol.Message.Hello("h", "bob", AgentKind.USER, "bob-token"));
+                assertThat(raw.read()).isInstanceOf(org.kicnp.protocol.Message.AuthResult.class);
+                raw.sendPayload(json.getBytes(java.nio.charset.StandardCharsets.UTF_8));
+                assertThat(raw.readUntilClosed()).as(json).singleElement()
+                        .isInstanceOfSatisfying(org.kicnp.protocol.Message.ErrorReply.class,
+                                e -> assertThat(e.code()).isEqualTo(ErrorCode.BAD_MESSAGE));
+            }
+        }
+
+        // Nothing was cancelled, and the other connections carry on.
+        assertThat(walk.feedback()).extracting(f -> f.stage().name()).containsExactly("STARTED");
+        assertThat(alice.isConnected() && scout.isConnected()).isTrue();
+        alice.cancel("scout", walk.command().id(), "done testing");
+        assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class)
+                .hasMessage("cancelled: done testing (asked by 'alice')");
+    }
+
+    @Test
+    void aRobotWhoseOnCancelReportsTheEnd_mayStillReportFromItsProgram_withoutBeingThrownAt() throws Exception {
+        List<String> program = new CopyOnWriteArrayList<>();
+        CountDownLatch running = new CountDownLatch(1);
+        connect(new AgentBase(options("scout", AgentKind.ROBOT)) {
+            @Override protected void onCommand(Command command, ActionHandle handle) {
+                handle.started();
+                running.countDown();
+                long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+                while (!handle.isDone() && System.nanoTime() < deadline) {
+                    try {
+                        Thread.sleep(5); // a step of the robot's program; sleeping holds no carrier thread
+                    } catch (InterruptedException e) {
+                        Thread.currentThread().interrupt();
+                        return;
+                    }
+                }
+                // The program notices only at its next step, and reports it as it always does.
+                try {
+                    handle.progress(0.5, "half way");
+                    handle.ended("walked");
+                    program.add("reported");
+                } catch (RuntimeException e) {
+                    program.add("thrown at: " + e.getMessage());
+                }
+            }
+
+            @Override protected void onCancel(ActionHandle handle, String reason) {
+                handle.failed("braked: " + reason);
+            }
+        });
+        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
+        CommandTicket walk = alice.command("scout", "walk", Map.of());
+        assertThat(running.await(10, TimeUnit.SECONDS)).isTrue();
+
+        alice.cancel("scout", walk.command().id(), "stop");
+
+        assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class)
+                .hasMessage("braked: stop (asked by 'alice')");
+        Eventually.await("the robot's program wound down", () -> !program.isEmpty());
+        assertThat(program).containsExactly("reported");
+        assertThat(walk.feedback()).extracting(f -> f.stage().name()).containsExactly("STARTED", "FAILED");
+    }
+
+    @Test
+    void aRobotWhoseOnCancelThrows_stillEndsTheCommand_cancelledSayingWhatWentWrong() throws Exception {
+        CountDownLatch running = new CountDownLatch(1);
+        connect(new AgentBase(options("scout", AgentKind.ROBOT)) {
+            @Override protected void onCommand(Command command, ActionHandle handle) {
+                handle.started(); // the robot works on it elsewhere and reports later
+                running.countDown();
+            }
+
+            @Override protected void onCancel(ActionHandle handle, String reason) {
+                throw new IllegalStateException("the brake does not answer");
+            }
+        });
+        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
+        CommandTicket walk = alice.command("scout", "walk", Map.of());
+        assertThat(running.await(10, TimeUnit.SECONDS)).isTrue();
+
+        alice.cancel("scout", walk.command().id(), "stop");
+
+        assertThatThrownBy(() -> walk.result(Duration.ofSeconds(5))).isInstanceOf(ActionFailedException.class)
+                .hasMessage("cancelled: stop (asked by 'alice'); agent 'scout' failed while stopping: the brake does "
+                        + "not answer");
+        Eventually.await("the command is no longer in flight", () -> server.commandsInFlight() == 0);
+    }
+
+    @Test
+    void aCancelWithAnEmptyReason_saysNoReasonWasGiven() throws Exception {
+        SlowRobot scout = connect(new SlowRobot(options("scout", AgentKind.ROBOT), false));
+        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
+        UserAgent bob = connect(new UserAgent(options("bob", AgentKind.USER)));
+        CommandTicket walk = alice.command("scout", "walk", Map.of());
+        assertThat(scout.running.await(10, TimeUnit.SECONDS)).isTrue();
+
+        bob.cancel("scout", walk.command().id(), " ");
+
+        assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class)
+                .hasMessage("cancelled: no reason given (asked by 'bob')");
+    }
+
+    @Test
+    void aSecondCancelWhileTheRobotIsStopping_doesNotMakeItStopTwice() throws Exception {
+        List<String> stops = new CopyOnWriteArrayList<>();
+        CountDownLatch running = new CountDownLatch(1);
+        CountDownLatch stopping = new CountDownLatch(1);
+        connect(new AgentBase(options("scout", AgentKind.ROBOT)) {
+            @Override protected void onCommand(Command command, ActionHandle handle) {
+                handle.started();
+                running.countDown();
+            }
+
+            @Override protected void onCancel(ActionHandle handle, String reason) {
+                stops.add(reason);
+                stopping.countDown();
+                try {
+                    Thread.sleep(500); // braking
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+                handle.cancelled(reason);
+            }
+        });
+        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
+        UserAgent bob = connect(new UserAgent(options("bob", AgentKind.USER)));
+        CommandTicket walk = alice.command("scout", "walk", Map.of());
+        assertThat(running.await(10, TimeUnit.SECONDS)).isTrue();
+
+        alice.cancel("scout", walk.command().id(), "stop");
+        assertThat(stopping.await(10, TimeUnit.SECONDS)).isTrue();
+        bob.cancel("scout", walk.command().id(), "stop now");
+
+        assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class)
+                .hasMessage("cancelled: stop (asked by 'alice')");
+        Thread.sleep(700); // a second onCancel, had there been one, would have run by now
+        assertThat(stops).containsExactly("stop (asked by 'alice')");
+    }
+
+    @Test
     void aUserCancels_theCommandFailsAsCancelledForItsSender_andTheRobotsLateReportIsIgnored() throws Exception {
         SlowRobot scout = connect(new SlowRobot(options("scout", AgentKind.ROBOT), false));
         UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));

@@ -32,6 +32,15 @@ public final class MessageCodec {
             .configure(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES, false)
             .configure(DeserializationFeature.FAIL_ON_NULL_FOR_PRIMITIVES, true)
             .configure(DeserializationFeature.FAIL_ON_TRAILING_TOKENS, true)
+            // A number or boolean where the protocol wants a string (an id, a name, a frame) is a member of the wrong
+            // JSON type, as the relay's own reader says; data binding would otherwise take 9 for "9".
+            .withCoercionConfig(com.fasterxml.jackson.databind.type.LogicalType.Textual, c -> c
+                    .setCoercion(com.fasterxml.jackson.databind.cfg.CoercionInputShape.Integer,
+                            com.fasterxml.jackson.databind.cfg.CoercionAction.Fail)
+                    .setCoercion(com.fasterxml.jackson.databind.cfg.CoercionInputShape.Float,
+                            com.fasterxml.jackson.databind.cfg.CoercionAction.Fail)
+                    .setCoercion(com.fasterxml.jackson.databind.cfg.CoercionInputShape.Boolean,
+                            com.fasterxml.jackson.databind.cfg.CoercionAction.Fail))
             .serializationInclusion(JsonInclude.Include.NON_ABSENT)
             .build();
 
@@ -317,6 +326,10 @@ public final class MessageCodec {
             t = t.getCause();
         }
         String m = t instanceof JacksonException j ? j.getOriginalMessage() : t.getMessage();
+        if (t instanceof NullPointerException) {
+            // A record's check of a member, or a null in an object of strings (a binding, an argument).
+            return m == null ? "a value is null where the protocol wants one." : "'" + m + "' is null.";
+        }
         return m == null ? t.getClass().getSimpleName() : m;
     }
 }

@@ -79,6 +79,29 @@ class MessageCodecTest {
     }
 
     @Test
+    void decode_whenABindingOrArgumentIsNull_saysSoInWords() {
+        assertCode("{\"v\":1,\"type\":\"prove\",\"id\":\"1\",\"ofClass\":\"C\",\"bindings\":{\"mUser\":null}}",
+                ErrorCode.BAD_MESSAGE, "Bad 'prove' message: a value is null where the protocol wants one.");
+        assertCode("{\"v\":1,\"type\":\"command\",\"id\":\"1\",\"robot\":\"scout\",\"action\":\"go\","
+                + "\"args\":{\"to\":null}}", ErrorCode.BAD_MESSAGE,
+                "Bad 'command' message: a value is null where the protocol wants one.");
+    }
+
+    @Test
+    void decode_whenANumberOrBooleanStandsForAString_reportsBadMessage() {
+        assertCode("{\"v\":1,\"type\":\"cancel\",\"id\":9,\"robot\":\"scout\",\"command\":\"c-1\",\"reason\":\"r\"}",
+                ErrorCode.BAD_MESSAGE, "Bad 'cancel' message");
+        assertCode("{\"v\":1,\"type\":\"destroy\",\"id\":\"1\",\"frame\":true}", ErrorCode.BAD_MESSAGE,
+                "Bad 'destroy' message");
+        assertCode("{\"v\":1,\"type\":\"prove\",\"id\":\"1\",\"ofClass\":\"C\",\"bindings\":{\"s\":5}}",
+                ErrorCode.BAD_MESSAGE, "Bad 'prove' message");
+        assertCode("{\"v\":1,\"type\":\"why\",\"id\":\"1\",\"instance\":1.5}", ErrorCode.BAD_MESSAGE,
+                "Bad 'why' message");
+        assertCode("{\"v\":1,\"type\":\"command\",\"id\":\"1\",\"robot\":\"scout\",\"action\":\"go\","
+                + "\"args\":{\"speed\":2}}", ErrorCode.BAD_MESSAGE, "Bad 'command' message");
+    }
+
+    @Test
     void decode_whenMemberHasWrongTypeOrValue_reportsBadMessage() {
         assertCode("{\"v\":1,\"type\":\"heartbeat\",\"time\":\"noon\"}", ErrorCode.BAD_MESSAGE, "Bad 'heartbeat' message");
         assertCode("{\"v\":1,\"type\":\"hello\",\"id\":\"1\",\"agent\":\"a\",\"kind\":\"toaster\",\"token\":\"t\"}",

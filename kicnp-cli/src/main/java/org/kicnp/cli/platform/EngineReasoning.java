@@ -34,9 +34,12 @@ final class EngineReasoning implements Reasoning {
     }
 
     @Override public CompletableFuture<List<Message.ProofNode>> prove(String ofClass, Map<String, String> bindings) {
-        Map<String, Value> refs = new LinkedHashMap<>();
-        bindings.forEach((slot, instance) -> refs.put(slot, Value.ref(instance)));
-        return onEngine(e -> e.prove(ofClass, refs).stream().map(EngineReasoning::node).toList());
+        return onEngine(e -> {
+            // On the engine's thread: a binding that is no frame reference fails this answer, not the connection.
+            Map<String, Value> refs = new LinkedHashMap<>();
+            bindings.forEach((slot, instance) -> refs.put(slot, Value.ref(instance)));
+            return e.prove(ofClass, refs).stream().map(EngineReasoning::node).toList();
+        });
     }
 
     @Override public CompletableFuture<Message.Reason> why(String instance) {

@@ -181,6 +181,26 @@ class PlatformTest {
     }
 
     @Test
+    void serve_proveWithAnEmptyBinding_isRefused_andTheAgentKeepsItsConnection() throws Exception {
+        Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
+        try (Platform platform = Platform.start(PlatformConfig.of(kb).withEphemeralPorts());
+             UserAgent user = new UserAgent(AgentOptions.of("127.0.0.1", platform.gatewayPort(), "user",
+                     AgentKind.USER, platform.token("user")))) {
+            user.startAndAwait(Duration.ofSeconds(10));
+
+            // `kicnp agent prove AskUserName mUser=` sends an empty instance name.
+            assertThatThrownBy(() -> user.prove("AskUserName", Map.of("mUser", "")))
+                    .isInstanceOf(RequestRefusedException.class)
+                    .hasMessage("Binding 'mUser' names '', but there is no frame of that name.");
+            assertThatThrownBy(() -> user.why("AskUserName")).isInstanceOf(RequestRefusedException.class)
+                    .hasMessage("Frame 'AskUserName' is a class; why explains instances only.");
+
+            assertThat(user.isConnected()).isTrue();
+            assertThat(user.prove("AskUserName", Map.of())).isNotNull();
+        }
+    }
+
+    @Test
     void serve_whenTheEngineCancelsAnAction_theRobotIsAskedToStop() throws Exception {
         Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
         List<String> cancels = new java.util.concurrent.CopyOnWriteArrayList<>();
