@@ -107,21 +107,11 @@ public final class AgentCommand {
         if (System.getProperty(QUIET_SDK) == null) {
             System.setProperty(QUIET_SDK, "off");
         }
-        // HOST:PORT, the port after the last colon, so that an IPv6 address in brackets ([::1]:7777) works too.
-        int colon = gateway.lastIndexOf(':');
-        String host = colon < 0 ? "" : gateway.substring(0, colon);
-        if (host.startsWith("[") && host.endsWith("]")) {
-            host = host.substring(1, host.length() - 1);
-        }
-        int port;
+        GatewayAddress address;
         try {
-            port = Integer.parseInt(gateway.substring(colon + 1));
-        } catch (NumberFormatException e) {
-            port = -1;
-        }
-        if (host.isEmpty() || port < 1 || port > 65535) {
-            throw new ParameterException(caller.commandLine(), "--gateway '" + gateway + "' is not HOST:PORT with a "
-                    + "port from 1 to 65535.");
+            address = GatewayAddress.parse(gateway);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(caller.commandLine(), e.getMessage());
         }
         requirePositive(caller, "--timeout", timeoutSeconds);
         Properties file = new Properties();
@@ -141,7 +131,7 @@ public final class AgentCommand {
         }
         AgentKind kind = kindOf(file.getProperty(as + ".kinds", "user"));
         Duration timeout = timeout();
-        AgentOptions options = AgentOptions.of(host, port, as, kind, token);
+        AgentOptions options = AgentOptions.of(address.host(), address.port(), as, kind, token);
         options = new AgentOptions(options.host(), options.port(), options.name(), options.kind(), options.token(),
                 timeout, options.heartbeatInterval(), options.serverSilence(), options.backoffInitial(),
                 options.backoffMax(), options.maxFrameBytes(), options.socketFactory());

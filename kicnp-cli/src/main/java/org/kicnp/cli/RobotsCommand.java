@@ -74,12 +74,11 @@ public final class RobotsCommand implements Callable<Integer> {
     @Override public Integer call() throws InterruptedException {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
-        String[] hostPort = gateway.split(":", 2);
-        int port;
+        GatewayAddress address;
         try {
-            port = Integer.parseInt(hostPort.length == 2 ? hostPort[1] : "");
-        } catch (NumberFormatException e) {
-            err.println("--gateway '" + gateway + "' is not host:port.");
+            address = GatewayAddress.parse(gateway);
+        } catch (IllegalArgumentException e) {
+            err.println(e.getMessage());
             return 2;
         }
         Properties tokenFile = new Properties();
@@ -110,7 +109,7 @@ public final class RobotsCommand implements Callable<Integer> {
             });
             out.printf("Simulator started (pid %d, seed %d, time scale %s).%n", world.pid(), seed, timeScale);
             for (String robot : ROBOTS) {
-                AgentOptions ao = AgentOptions.of(hostPort[0], port, robot, AgentKind.ROBOT,
+                AgentOptions ao = AgentOptions.of(address.host(), address.port(), robot, AgentKind.ROBOT,
                         tokenFile.getProperty(robot + ".token").strip());
                 RobotAgent agent = switch (robot) {
                     case "robovie" -> new RobovieAgent(ao, world);

@@ -62,6 +62,14 @@ class RobotsCommandTest {
     }
 
     @Test
+    void robots_withAGatewayThatIsNotHostAndPort_exitsWith2SayingSo(@TempDir Path dir) throws Exception {
+        Path tokens = Files.write(dir.resolve("agents.properties"), List.of("robovie.token = x"));
+
+        assertThat(run("robots", "--gateway", "localhost:99999", "--tokens", tokens.toString())).isEqualTo(2);
+        assertThat(err.toString()).contains("--gateway 'localhost:99999' is not HOST:PORT with a port from 1 to 65535.");
+    }
+
+    @Test
     void robots_withoutATokenForARobot_exitsWith2NamingIt(@TempDir Path dir) throws Exception {
         Path tokens = Files.write(dir.resolve("agents.properties"), List.of("robovie.token = x", "pino.token = y"));
 

@@ -46,17 +46,32 @@ final class KnowledgeAccess implements KnowledgeListener {
     }
 
     Message query(Message.Query q) {
-        if (!kb.contains(q.ofClass())) {
+        Optional<Frame> c = kb.frame(q.ofClass());
+        if (c.isEmpty()) {
             return unknown(q.id(), q.ofClass());
+        }
+        if (c.get().isInstance()) {
+            return notAClass(q.id(), q.ofClass(), "query");
         }
         return new Message.Frames(q.id(), FrameText.toXml(kb.instancesOf(q.ofClass())));
     }
 
+    /** A slot's effective value; an empty answer means the slot has no value, a slot no frame declares is refused. */
     Message ask(Message.Ask a) {
         if (!kb.contains(a.frame())) {
             return unknown(a.id(), a.frame());
         }
+        if (kb.slot(a.frame(), a.slot()).isEmpty()) {
+            return ErrorReply.to(a.id(), ErrorCode.REJECTED, "Frame '" + a.frame() + "' has no slot '" + a.slot()
+                    + "', of its own or inherited.");
+        }
         return new Message.Answer(a.id(), kb.value(a.frame(), a.slot()));
+    }
+
+    /** Query and subscribe take a class: an instance has no instances, so they would answer nothing, for good. */
+    private static ErrorReply notAClass(String id, String frame, String what) {
+        return ErrorReply.to(id, ErrorCode.REJECTED, "Frame '" + frame + "' is an instance; " + what
+                + " takes a class (its instances and those of the classes below it).");
     }
 
     /**
@@ -204,8 +219,12 @@ final class KnowledgeAccess implements KnowledgeListener {
     }
 
     Message subscribe(Session s, Message.Subscribe sub) {
-        if (!kb.contains(sub.ofClass())) {
+        Optional<Frame> c = kb.frame(sub.ofClass());
+        if (c.isEmpty()) {
             return unknown(sub.id(), sub.ofClass());
+        }
+        if (c.get().isInstance()) {
+            return notAClass(sub.id(), sub.ofClass(), "subscribe");
         }
         s.subscriptions().add(sub.ofClass());
         subscribers.add(s);

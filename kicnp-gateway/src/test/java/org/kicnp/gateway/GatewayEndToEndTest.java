@@ -147,6 +147,24 @@ class GatewayEndToEndTest {
     }
 
     @Test
+    void queryAndSubscribe_ofAnInstance_andAskOfASlotNoFrameDeclares_areRefusedInWords() {
+        UserAgent alice = user("alice");
+        kb.add(Frame.classFrame("Mug").parent("Cup")
+                .slot(org.kicnp.core.Slot.builder("content", org.kicnp.core.DataType.STRING).build()).build());
+        alice.assertFrame(Frame.instance("mug1", "Mug").build());
+
+        // Each would have answered nothing, for good: an instance has no instances, a slot no frame declares no value.
+        assertThatThrownBy(() -> alice.query("mug1")).isInstanceOfSatisfying(RequestRefusedException.class,
+                e -> assertThat(e.code()).isEqualTo(ErrorCode.REJECTED))
+                .hasMessageContaining("Frame 'mug1' is an instance; query takes a class");
+        assertThatThrownBy(() -> alice.subscribe("mug1")).isInstanceOf(RequestRefusedException.class)
+                .hasMessageContaining("Frame 'mug1' is an instance; subscribe takes a class");
+        assertThatThrownBy(() -> alice.ask("mug1", "colour")).isInstanceOf(RequestRefusedException.class)
+                .hasMessageContaining("Frame 'mug1' has no slot 'colour', of its own or inherited.");
+        assertThat(alice.ask("mug1", "content")).as("declared, without a value").isEmpty();
+    }
+
+    @Test
     void register_putsCapabilitiesAndPresence_whichGoWithTheAgent() {
         org.kicnp.example.TeaRobot scout = connect(new org.kicnp.example.TeaRobot(options("scout", AgentKind.ROBOT)));
         assertThat(kb.contains("BringTea")).isTrue();
