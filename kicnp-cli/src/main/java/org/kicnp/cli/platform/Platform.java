@@ -120,15 +120,13 @@ public final class Platform implements AutoCloseable {
             engineThread = Executors.newSingleThreadExecutor(r -> daemon(r, "kicnp-engine"));
             CommandBridge bridge = new CommandBridge(kb, log);
             TraceLog traceLog = new TraceLog(log);
-            EngineRetraction retraction = new EngineRetraction(kb, engineThread);
-            EngineReasoning reasoning = new EngineReasoning(engineThread);
+            EngineLink engineLink = new EngineLink(kb, engineThread);
             gateway = GatewayServer.start(GatewayConfig.defaults().withPort(config.gatewayPort())
                     .withTransport(config.gatewayTransport()), directory, kb, bridge,
-                    retraction, reasoning);
+                    engineLink, engineLink);
             engine = InferenceEngine.builder(kb).scripts(new GraalScriptHost(scripts)).actionSink(bridge)
                     .runOn(engineThread).build();
-            retraction.attach(engine);
-            reasoning.attach(engine);
+            engineLink.attach(engine);
             engine.addTraceListener(traceLog);
             kb.addListener(traceLog);
             bridge.connect(gateway.actionSink(), engine);

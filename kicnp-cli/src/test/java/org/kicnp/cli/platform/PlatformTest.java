@@ -173,7 +173,7 @@ class PlatformTest {
             assertThat(why.ofClass()).isEqualTo("AskUserName");
             assertThat(why.binding()).containsValue("userA");
             assertThat(why.supports()).extracting(Message.Reason::instance).contains("userA");
-            assertThat(why).isEqualTo(EngineReasoning.reason(platform.engine().why(asked)));
+            assertThat(why).isEqualTo(EngineLink.reason(platform.engine().why(asked)));
 
             assertThatThrownBy(() -> user.why("nobody")).isInstanceOf(RequestRefusedException.class)
                     .hasMessageContaining("'nobody'");

@@ -4,12 +4,16 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.Executor;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Function;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.UnknownFrameException;
 import org.kicnp.core.Value;
 import org.kicnp.gateway.Reasoning;
+import org.kicnp.gateway.Retraction;
 import org.kicnp.inference.Derivation;
 import org.kicnp.inference.Explanation;
 import org.kicnp.inference.InferenceEngine;
@@ -17,15 +21,27 @@ import org.kicnp.inference.Proof;
 import org.kicnp.protocol.Message;
 
 /**
- * The inference engine's backward chaining and explanations for the gateway's agents ({@code prove}, {@code why}),
- * run on the engine's thread so that a gateway I/O thread never waits for the engine, and turned into the protocol's
- * records. The gateway starts before the engine; until the engine is {@linkplain #attach attached} both are refused.
+ * The gateway's two ports to the inference engine, each run on the engine's thread so that a gateway I/O thread
+ * never waits for the engine:
+ * <ul>
+ *   <li>{@link Retraction}: the runtime frames of an agent that left, and an instance an agent destroys, go through
+ *   the engine — the frame and every instance derived from it in one batch (a plain removal is refused while a derived
+ *   instance refers to the frame);</li>
+ *   <li>{@link Reasoning}: backward chaining and explanations ({@code prove}, {@code why}), turned into the
+ *   protocol's records.</li>
+ * </ul>
+ * The gateway starts before the engine exists; until the engine is {@linkplain #attach attached}, frames are removed
+ * from the knowledge base directly and reasoning is refused.
  */
-final class EngineReasoning implements Reasoning {
+final class EngineLink implements Retraction, Reasoning {
+    private static final org.slf4j.Logger LOG = org.slf4j.LoggerFactory.getLogger(EngineLink.class);
+
+    private final Retraction beforeEngine;
     private final Executor engineThread;
     private final AtomicReference<InferenceEngine> engine = new AtomicReference<>();
 
-    EngineReasoning(Executor engineThread) {
+    EngineLink(KnowledgeBase kb, Executor engineThread) {
+        this.beforeEngine = Retraction.removeFrom(kb);
         this.engineThread = engineThread;
     }
 
@@ -33,12 +49,42 @@ final class EngineReasoning implements Reasoning {
         engine.set(e);
     }
 
+    // ---- Retraction ----
+
+    /** An agent's destroy: on the engine's thread, the instance and what rests on it in one batch (or nothing). */
+    @Override public CompletableFuture<Set<String>> destroy(String frame) {
+        InferenceEngine e = engine.get();
+        if (e == null) {
+            return Retraction.super.destroy(frame);
+        }
+        return CompletableFuture.supplyAsync(() -> e.destroy(frame), engineThread);
+    }
+
+    @Override public void retract(String frame) {
+        InferenceEngine e = engine.get();
+        if (e == null) {
+            beforeEngine.retract(frame);
+            return;
+        }
+        engineThread.execute(() -> {
+            try {
+                e.destroy(frame);
+            } catch (UnknownFrameException gone) {
+                LOG.debug("'{}' was already gone when its agent left.", frame);
+            } catch (RuntimeException failed) {
+                LOG.warn("Could not retract '{}' after its agent left: {}", frame, failed.getMessage());
+            }
+        });
+    }
+
+    // ---- Reasoning ----
+
     @Override public CompletableFuture<List<Message.ProofNode>> prove(String ofClass, Map<String, String> bindings) {
         return onEngine(e -> {
             // On the engine's thread: a binding that is no frame reference fails this answer, not the connection.
             Map<String, Value> refs = new LinkedHashMap<>();
             bindings.forEach((slot, instance) -> refs.put(slot, Value.ref(instance)));
-            return e.prove(ofClass, refs).stream().map(EngineReasoning::node).toList();
+            return e.prove(ofClass, refs).stream().map(EngineLink::node).toList();
         });
     }
 
@@ -73,7 +119,7 @@ final class EngineReasoning implements Reasoning {
                 Derivation how = d.derivation();
                 yield new Message.Reason(how.instance(), how.frame(), true, how.binding(), how.conditions().stream()
                         .map(c -> c.slot() + ": " + c.condition() + " = " + c.value()).toList(),
-                        d.supports().stream().map(EngineReasoning::reason).toList());
+                        d.supports().stream().map(EngineLink::reason).toList());
             }
         };
     }
