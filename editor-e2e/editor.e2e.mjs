@@ -202,6 +202,17 @@ try {
   await page.locator('#ask-answers li', { hasText: 'AskUserName' }).first().waitFor();
   await page.screenshot({ path: join(artifacts, '04-inference.png') });
 
+  step = 'delete an instance: what was derived from it goes too';
+  await tree.locator('[data-frame="mouth1"]').click();
+  await page.locator('#frame-title', { hasText: 'mouth1' }).waitFor();
+  await page.click('#delete-button');
+  check((await page.textContent('#delete-question')).includes('The instances derived from it go with it.'),
+    'deleting an instance does not say that what was derived from it goes too');
+  await page.click('#delete-apply');
+  await page.locator('#welcome-text', { hasText: 'Deleted mouth1, and with it what rested on it: AskUserName' })
+    .waitFor();
+  await tree.locator('[data-frame="mouth1"]').waitFor({ state: 'detached' });
+
   step = 'world panel: the room is drawn and the robots listed';
   await page.click('#world-button');
   await page.locator('#world-panel').waitFor({ state: 'visible' });

@@ -189,7 +189,10 @@ function wire() {
   $('rename-form').addEventListener('submit', rename);
   $('rename-cancel').addEventListener('click', () => show('rename-form', false));
   $('delete-button').addEventListener('click', () => {
-    $('delete-question').textContent = 'Delete frame ' + state.frame.name + '? This cannot be undone.';
+    // With an inference engine, an instance goes through it: what was derived from it goes too.
+    const derivedGoToo = state.frame.kind === 'INSTANCE' && state.session.inference;
+    $('delete-question').textContent = 'Delete frame ' + state.frame.name + '?'
+      + (derivedGoToo ? ' The instances derived from it go with it.' : '') + ' This cannot be undone.';
     show('delete-confirm', true);
     $('delete-cancel').focus();
   });

@@ -225,11 +225,14 @@ export async function rename(event) {
 export async function remove() {
   const name = state.frame.name;
   try {
-    await api('DELETE', '/api/frames/' + enc(name));
+    const result = await api('DELETE', '/api/frames/' + enc(name));
     state.dirty = false;
     state.selected = null;
     state.frame = null;
     showMain('welcome');
+    const withIt = ((result && result.removed) || []).filter(n => n !== name);
+    $('welcome-text').textContent = 'Deleted ' + name
+      + (withIt.length ? ', and with it what rested on it: ' + withIt.join(', ') : '') + '.';
     await loadFrames();
   } catch (e) {
     show('delete-confirm', false);
