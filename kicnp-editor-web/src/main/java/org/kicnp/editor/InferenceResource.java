@@ -77,13 +77,20 @@ final class InferenceResource implements Features.Inference {
     }
 
     @Override public Object ask(String className) {
-        kb.require(className);
+        requireClass(className, "ask");
         return InferenceJson.answers(engine.ask(className, Map.of()));
     }
 
     @Override public Object prove(String className) {
-        kb.require(className);
+        requireClass(className, "prove");
         return engine.prove(className, Map.of()).stream().map(InferenceJson::proof).toList();
+    }
+
+    /** Backward chaining answers with instances of a class: an instance has none, so it would answer nothing. */
+    private void requireClass(String name, String what) {
+        if (kb.require(name).isInstance()) {
+            throw new ApiException(404, "Frame '" + name + "' is an instance; " + what + " takes a class.");
+        }
     }
 
     @Override public Set<String> destroy(String instance) {

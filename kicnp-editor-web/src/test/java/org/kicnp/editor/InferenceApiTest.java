@@ -105,6 +105,18 @@ class InferenceApiTest {
         assertThat(kb.contains("mouth1")).isTrue();
     }
 
+    @Test void askAndProve_ofAnInstance_are404SayingTheyTakeAClass() {
+        setUpUserAndMouth();
+
+        HttpResponse<String> ask = http.get("/api/inference/ask?class=userA");
+        HttpResponse<String> prove = http.get("/api/inference/prove?class=userA");
+
+        assertThat(ask.statusCode()).isEqualTo(404);
+        assertThat(ask.body()).contains("Frame 'userA' is an instance; ask takes a class.");
+        assertThat(prove.statusCode()).isEqualTo(404);
+        assertThat(prove.body()).contains("Frame 'userA' is an instance; prove takes a class.");
+    }
+
     @Test void why_explainsTheDerivedInstanceDownToTheStimuli() {
         setUpUserAndMouth();
         http.post("/api/inference/run", "{}");
