@@ -60,12 +60,10 @@ class PlatformTest {
             assertThat(platform.editorPasswordFile()).hasValueSatisfying(p -> assertThat(p).exists());
             try (RecordingRobot robovie = new RecordingRobot(AgentOptions.of("127.0.0.1", platform.gatewayPort(),
                     "robovie", AgentKind.ROBOT, platform.token("robovie")));
-                 UserAgent user = new UserAgent(AgentOptions.of("127.0.0.1", platform.gatewayPort(), "user",
-                         AgentKind.USER, platform.token("user")))) {
+                 UserAgent user = user(platform)) {
                 robovie.startAndAwait(Duration.ofSeconds(10));
                 user.startAndAwait(Duration.ofSeconds(10));
-                user.assertFrame(Frame.instance("userA", "NewUser")
-                        .slot(Slot.ofValue("faceText", DataType.STRING, Value.of("0.1,0.2"))).build());
+                newUserA(user);
 
                 Command first = robovie.commands.poll(20, TimeUnit.SECONDS);
                 Command second = robovie.commands.poll(20, TimeUnit.SECONDS);
@@ -135,11 +133,9 @@ class PlatformTest {
     void serve_whenAnAgentDestroysAnInstance_whatWasDerivedFromItGoesToo() throws Exception {
         Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
         try (Platform platform = Platform.start(PlatformConfig.of(kb).withEphemeralPorts());
-             UserAgent user = new UserAgent(AgentOptions.of("127.0.0.1", platform.gatewayPort(), "user",
-                     AgentKind.USER, platform.token("user")))) {
+             UserAgent user = user(platform)) {
             user.startAndAwait(Duration.ofSeconds(10));
-            user.assertFrame(Frame.instance("userA", "NewUser")
-                    .slot(Slot.ofValue("faceText", DataType.STRING, Value.of("0.1,0.2"))).build());
+            newUserA(user);
             await("the engine derives from userA", () -> !platform.kb().referrers("userA").isEmpty());
             List<String> derived = List.copyOf(platform.kb().referrers("userA"));
 
@@ -156,11 +152,9 @@ class PlatformTest {
     void serve_agentsProveAndAskWhy_throughTheEngine() throws Exception {
         Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
         try (Platform platform = Platform.start(PlatformConfig.of(kb).withEphemeralPorts());
-             UserAgent user = new UserAgent(AgentOptions.of("127.0.0.1", platform.gatewayPort(), "user",
-                     AgentKind.USER, platform.token("user")))) {
+             UserAgent user = user(platform)) {
             user.startAndAwait(Duration.ofSeconds(10));
-            user.assertFrame(Frame.instance("userA", "NewUser")
-                    .slot(Slot.ofValue("faceText", DataType.STRING, Value.of("0.1,0.2"))).build());
+            newUserA(user);
             await("AskUserName fires for userA", () -> !platform.kb().instancesOf("AskUserName").isEmpty());
             String asked = platform.kb().instancesOf("AskUserName").getFirst().name();
 
@@ -184,8 +178,7 @@ class PlatformTest {
     void serve_proveWithAnEmptyBinding_isRefused_andTheAgentKeepsItsConnection() throws Exception {
         Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
         try (Platform platform = Platform.start(PlatformConfig.of(kb).withEphemeralPorts());
-             UserAgent user = new UserAgent(AgentOptions.of("127.0.0.1", platform.gatewayPort(), "user",
-                     AgentKind.USER, platform.token("user")))) {
+             UserAgent user = user(platform)) {
             user.startAndAwait(Duration.ofSeconds(10));
 
             // `kicnp agent prove AskUserName mUser=` sends an empty instance name.
@@ -222,12 +215,10 @@ class PlatformTest {
                      super.onCancel(handle, reason);
                  }
              };
-             UserAgent user = new UserAgent(AgentOptions.of("127.0.0.1", platform.gatewayPort(), "user",
-                     AgentKind.USER, platform.token("user")))) {
+             UserAgent user = user(platform)) {
             robovie.startAndAwait(Duration.ofSeconds(10));
             user.startAndAwait(Duration.ofSeconds(10));
-            user.assertFrame(Frame.instance("userA", "NewUser")
-                    .slot(Slot.ofValue("faceText", DataType.STRING, Value.of("0.1,0.2"))).build());
+            newUserA(user);
             Command say = says.poll(20, TimeUnit.SECONDS);
             assertThat(say).isNotNull();
 
@@ -245,6 +236,18 @@ class PlatformTest {
                 }
             });
         }
+    }
+
+    /** The user agent "user" of the platform's agent file (not started). */
+    private static UserAgent user(Platform platform) {
+        return new UserAgent(AgentOptions.of("127.0.0.1", platform.gatewayPort(), "user", AgentKind.USER,
+                platform.token("user")));
+    }
+
+    /** User A walks in, as a face Robovie has not seen: the stimulus of the paper's first rows. */
+    private static void newUserA(UserAgent user) {
+        user.assertFrame(Frame.instance("userA", "NewUser")
+                .slot(Slot.ofValue("faceText", DataType.STRING, Value.of("0.1,0.2"))).build());
     }
 
     private static void await(String what, java.util.function.BooleanSupplier done) throws InterruptedException {
