@@ -1,8 +1,5 @@
 package org.kicnp.cli;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.node.ArrayNode;
-import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.PrintWriter;
@@ -10,7 +7,6 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.time.Instant;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -22,15 +18,12 @@ import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.Callable;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
-import org.kicnp.agent.ActionFailedException;
 import org.kicnp.agent.AgentBase;
 import org.kicnp.agent.AgentOptions;
-import org.kicnp.agent.CommandTicket;
 import org.kicnp.cli.platform.PlatformConfig;
 import org.kicnp.core.Change;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
-import org.kicnp.core.Slot;
 import org.kicnp.core.xml.KnowledgeLoader;
 import org.kicnp.core.xml.SourcedFrame;
 import org.kicnp.protocol.AgentKind;
@@ -54,8 +47,9 @@ import picocli.CommandLine.Spec;
  */
 @Command(name = "agent", mixinStandardHelpOptions = true,
         description = "Talk to a running server as an agent: query and change its knowledge, ask it to prove and "
-                + "explain, watch changes, relay messages, command robots and cancel commands. Connects with a token of the agent file (serve writes it to "
-                + "KB_DIR/.kicnp/agents.properties), as 'director' unless --as says otherwise.",
+                + "explain, watch changes, relay messages, command robots and cancel commands. Connects with a token "
+                + "of the agent file (serve writes it to KB_DIR/.kicnp/agents.properties), as 'director' unless --as "
+                + "says otherwise.",
         subcommands = {
             AgentCommand.Query.class,
             AgentCommand.Ask.class,
@@ -65,8 +59,8 @@ import picocli.CommandLine.Spec;
             AgentCommand.Destroy.class,
             AgentCommand.Watch.class,
             AgentCommand.Send.class,
-            AgentCommand.Order.class,
-            AgentCommand.Cancel.class,
+            AgentActions.Order.class,
+            AgentActions.Cancel.class,
         },
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = {
@@ -75,7 +69,6 @@ import picocli.CommandLine.Spec;
             "2:wrong usage (also an unreadable agent file or an agent missing from it)"
         })
 public final class AgentCommand {
-    private static final ObjectMapper JSON = new ObjectMapper();
     private static final String QUIET_SDK = "org.slf4j.simpleLogger.log.org.kicnp.agent";
 
     @Option(names = "--gateway", paramLabel = "HOST:PORT",
@@ -209,38 +202,9 @@ public final class AgentCommand {
         }
     }
 
-    /** One JSON line: a change of a watched class, with the frame's slots where the server sent the frame. */
-    static String json(Message.Changed c) {
-        ObjectNode o = JSON.createObjectNode();
-        o.put("time", Instant.now().toString());
-        o.put("event", c.change().name().toLowerCase(Locale.ROOT));
-        o.put("class", c.ofClass());
-        o.put("name", c.name());
-        c.frame().ifPresent(xml -> {
-            for (Frame f : FrameText.parse(xml, "change of '" + c.name() + "'", KnowledgeBase.create())) {
-                o.put("frame_class", f.parent().orElse(null));
-                ObjectNode slots = o.putObject("slots");
-                for (Slot s : f.slots()) {
-                    s.value().ifPresent(v -> slots.put(s.name(), v.text()));
-                }
-            }
-        });
-        return o.toString();
-    }
-
-    /** One JSON line: a message relayed to this agent. */
-    static String json(Message.Relay r) {
-        ObjectNode o = JSON.createObjectNode();
-        o.put("time", Instant.now().toString());
-        o.put("event", "relay");
-        o.put("from", r.from());
-        o.put("subject", r.subject());
-        o.put("body", r.body());
-        return o.toString();
-    }
-
     @Command(name = "query", mixinStandardHelpOptions = true,
-            description = "Print every instance of a class (and of the classes below it) as one document in the paper's "
+            description = "Print every instance of a class (and of the classes below it) as one document in the "
+                    + "paper's "
                     + "XML.")
     static final class Query extends Subcommand {
 
@@ -299,14 +263,13 @@ public final class AgentCommand {
         @Parameters(index = "1..*", paramLabel = "SLOT=INSTANCE", description = "Slots the answers must hold.")
         List<String> bindings = new ArrayList<>();
 
-        @Override public Integer call() throws IOException {
+        @Override public Integer call() {
             Map<String, String> fixed = pairs(spec, bindings);
             List<Message.ProofNode> proofs;
             try (CliAgent a = connect(Hooks.NONE)) {
                 proofs = a.prove(ofClass, fixed);
             }
-            spec.commandLine().getOut().println(JSON.writerWithDefaultPrettyPrinter().writeValueAsString(
-                    proofs.stream().map(AgentCommand::json).toList()));
+            spec.commandLine().getOut().println(AgentJson.pretty(proofs.stream().map(AgentJson::proof).toList()));
             spec.commandLine().getErr().println(proofs.size() + " answer" + (proofs.size() == 1 ? "" : "s") + ".");
             return 0;
         }
@@ -320,39 +283,14 @@ public final class AgentCommand {
         @Parameters(paramLabel = "INSTANCE", description = "The instance.")
         String instance;
 
-        @Override public Integer call() throws IOException {
+        @Override public Integer call() {
             Message.Reason reason;
             try (CliAgent a = connect(Hooks.NONE)) {
                 reason = a.why(instance);
             }
-            spec.commandLine().getOut().println(JSON.writerWithDefaultPrettyPrinter().writeValueAsString(json(reason)));
+            spec.commandLine().getOut().println(AgentJson.pretty(AgentJson.reason(reason)));
             return 0;
         }
-    }
-
-    private static ObjectNode json(Message.ProofNode p) {
-        ObjectNode o = JSON.createObjectNode();
-        o.put("ofClass", p.ofClass());
-        p.instance().ifPresent(i -> o.put("instance", i));
-        ObjectNode slots = o.putObject("slots");
-        p.slots().forEach((slot, sub) -> slots.set(slot, json(sub)));
-        ArrayNode assumed = o.putArray("assumptions");
-        p.assumptions().forEach(assumed::add);
-        return o;
-    }
-
-    private static ObjectNode json(Message.Reason r) {
-        ObjectNode o = JSON.createObjectNode();
-        o.put("instance", r.instance());
-        o.put("ofClass", r.ofClass());
-        o.put("derived", r.derived());
-        ObjectNode binding = o.putObject("binding");
-        r.binding().forEach(binding::put);
-        ArrayNode conditions = o.putArray("conditions");
-        r.conditions().forEach(conditions::add);
-        ArrayNode supports = o.putArray("supports");
-        r.supports().forEach(s -> supports.add(json(s)));
-        return o;
     }
 
     /** NAME=VALUE arguments as a map, in order; a usage error names one that is not. */
@@ -370,7 +308,8 @@ public final class AgentCommand {
 
     @Command(name = "assert", mixinStandardHelpOptions = true,
             description = "Add (or replace) instance frames: XML files, or XML text starting with '<'. The frames are "
-                    + "read here first (a slot without a TYPE takes the type the server's classes declare; a mistake is "
+                    + "read here first (a slot without a TYPE takes the type the server's classes declare; a mistake "
+                    + "is "
                     + "reported at its line and nothing is sent), then sent in one assert: the server stores them all "
                     + "as runtime instances, or none (it refuses to replace classes and declared knowledge).")
     static final class Assert extends Subcommand {
@@ -458,7 +397,8 @@ public final class AgentCommand {
             BlockingQueue<String> lines = new LinkedBlockingQueue<>();
             PrintWriter out = spec.commandLine().getOut();
             long deadline = seconds == null ? Long.MAX_VALUE : System.nanoTime() + Math.round(seconds * 1e9);
-            try (CliAgent a = connect(new Hooks(c -> lines.add(json(c)), r -> lines.add(json(r))))) {
+            Hooks print = new Hooks(c -> lines.add(AgentJson.change(c)), r -> lines.add(AgentJson.relay(r)));
+            try (CliAgent a = connect(print)) {
                 for (String c : classes) {
                     try {
                         a.subscribe(c);
@@ -527,135 +467,6 @@ public final class AgentCommand {
             }
             spec.commandLine().getOut().println("Relayed to " + (kind == null ? "'" + words.get(0) + "'"
                     : "every " + kind.name().toLowerCase(Locale.ROOT) + " agent") + ".");
-            return 0;
-        }
-    }
-
-    @Command(name = "command", mixinStandardHelpOptions = true,
-            description = "Send a robot a command and print its feedback as JSON lines as it comes, until it ends "
-                    + "(exit 0) or fails (exit 1). Ctrl-C, or no end within --wait, cancels it. Arguments are "
-                    + "NAME=VALUE.")
-    static final class Order extends Subcommand {
-
-        @Parameters(index = "0", paramLabel = "ROBOT", description = "The robot's agent.")
-        String robot;
-
-        @Parameters(index = "1", paramLabel = "ACTION", description = "The action.")
-        String action;
-
-        @Parameters(index = "2..*", paramLabel = "NAME=VALUE", description = "The action's arguments.")
-        List<String> args = new ArrayList<>();
-
-        @Option(names = "--wait", defaultValue = "60", paramLabel = "SECONDS",
-                description = "How long to wait for the action to end before cancelling it (default "
-                        + "${DEFAULT-VALUE}).")
-        double waitSeconds;
-
-        /** The feedback printed so far: the waiting loop and a Ctrl-C's cancel print each line once between them. */
-        private final Printed printed = new Printed();
-
-        @Override public Integer call() throws InterruptedException {
-            requireAgentName(spec, "ROBOT", robot);
-            if (action.isBlank()) {
-                throw new ParameterException(spec.commandLine(), "ACTION is empty; name the action to send to '"
-                        + robot + "'.");
-            }
-            requirePositive(spec, "--wait", waitSeconds);
-            Map<String, String> named = pairs(spec, args);
-            PrintWriter out = spec.commandLine().getOut();
-            PrintWriter err = spec.commandLine().getErr();
-            long deadline = System.nanoTime() + Math.round(waitSeconds * 1e9);
-            try (CliAgent a = connect(Hooks.NONE)) {
-                CommandTicket t = a.command(robot, action, named);
-                err.println("Command '" + t.command().id() + "' sent to '" + robot + "'; Ctrl-C cancels it.");
-                err.flush();
-                // Ctrl-C while it runs cancels it, as a goal is cancelled in ROS, and shows how it ended.
-                Thread onInterrupt = new Thread(() -> cancelAndReport(a, t, "interrupted at the terminal", out),
-                        "kicnp-agent-cancel");
-                Runtime.getRuntime().addShutdownHook(onInterrupt);
-                try {
-                    while (true) {
-                        try {
-                            t.result(Duration.ofMillis(100));
-                            printed.upTo(t, out);
-                            return 0;
-                        } catch (ActionFailedException e) {
-                            printed.upTo(t, out);
-                            return 1;
-                        } catch (org.kicnp.agent.AgentTimeoutException e) {
-                            printed.upTo(t, out);
-                            if (System.nanoTime() > deadline) {
-                                err.println("kicnp agent command: '" + t.command().id() + "' did not end within "
-                                        + waitSeconds + " s; cancelling it.");
-                                cancelAndReport(a, t, "the command line stopped waiting after " + waitSeconds + " s",
-                                        out);
-                                return 1;
-                            }
-                        }
-                    }
-                } finally {
-                    try {
-                        Runtime.getRuntime().removeShutdownHook(onInterrupt);
-                    } catch (IllegalStateException shuttingDown) {
-                        // The hook is running: it cancels and reports.
-                    }
-                }
-            }
-        }
-
-        /** Cancels the command unless it ended, then prints its feedback up to the end (waiting up to 5 s for it). */
-        private void cancelAndReport(CliAgent a, CommandTicket t, String reason, PrintWriter out) {
-            try {
-                a.cancel(robot, t.command().id(), reason);
-                t.result(Duration.ofSeconds(5));
-            } catch (RuntimeException ended) {
-                // Ended or failed meanwhile, refused because it is no longer in flight, or no answer in time.
-            }
-            printed.upTo(t, out);
-        }
-    }
-
-    /** Prints a command's feedback as JSON lines, each once. */
-    private static final class Printed {
-        private int count;
-
-        synchronized void upTo(CommandTicket t, PrintWriter out) {
-            List<Message.Feedback> all = t.feedback();
-            for (; count < all.size(); count++) {
-                Message.Feedback f = all.get(count);
-                ObjectNode o = JSON.createObjectNode();
-                o.put("id", f.id());
-                o.put("robot", f.robot());
-                o.put("stage", f.stage().name().toLowerCase(Locale.ROOT));
-                f.progress().ifPresent(p -> o.put("progress", p));
-                o.put("detail", f.detail());
-                out.println(o);
-            }
-            out.flush();
-        }
-    }
-
-    @Command(name = "cancel", mixinStandardHelpOptions = true,
-            description = "Ask a robot to stop a command in flight (any user agent may, whoever sent it); the command "
-                    + "then ends with feedback 'failed: cancelled: …' to whoever sent it.")
-    static final class Cancel extends Subcommand {
-
-        @Parameters(index = "0", paramLabel = "ROBOT", description = "The robot's agent.")
-        String robot;
-
-        @Parameters(index = "1", paramLabel = "COMMAND_ID", description = "The command's id.")
-        String command;
-
-        @Option(names = "--reason", defaultValue = "cancelled from the command line", paramLabel = "TEXT",
-                description = "Why (default: ${DEFAULT-VALUE}).")
-        String reason;
-
-        @Override public Integer call() {
-            requireAgentName(spec, "ROBOT", robot);
-            try (CliAgent a = connect(Hooks.NONE)) {
-                a.cancel(robot, command, reason);
-            }
-            spec.commandLine().getOut().println("Asked '" + robot + "' to stop '" + command + "'.");
             return 0;
         }
     }
