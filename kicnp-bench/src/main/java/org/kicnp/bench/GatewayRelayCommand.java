@@ -1,10 +1,12 @@
 package org.kicnp.bench;
 
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
 import java.util.Optional;
+import java.util.OptionalDouble;
 import java.util.concurrent.Callable;
 import org.kicnp.gateway.Transport;
 import picocli.CommandLine.Command;
@@ -27,6 +29,8 @@ import picocli.CommandLine.Spec;
             "The last line of output is one JSON object with the figures."
         })
 final class GatewayRelayCommand implements Callable<Integer> {
+    private static final int FLOOR_HOPS = 50_000;
+
     @Spec
     CommandSpec spec;
 
@@ -123,12 +127,25 @@ final class GatewayRelayCommand implements Callable<Integer> {
             err.println(line);
             err.flush();
         });
+        // Measured after the runs, so its socket calls cannot change what the JIT made of the clients' (with nio).
+        OptionalDouble hop = loopbackHop(o.messageBytes(), err);
         out.println();
         out.print(RelayReport.table(runs, o.rate()));
         out.println();
-        out.println(RelayReport.json(runs, o));
+        hop.ifPresent(h -> out.print(RelayReport.floor(h, o)));
+        out.println(RelayReport.json(runs, o, hop));
         out.flush();
         return 0;
+    }
+
+    /** {@link LoopbackHop} over {@value #FLOOR_HOPS} hops; empty (said on {@code err}) when it cannot be measured. */
+    private static OptionalDouble loopbackHop(int bytes, PrintWriter err) {
+        try {
+            return OptionalDouble.of(LoopbackHop.cpuMicros(bytes, FLOOR_HOPS));
+        } catch (IOException e) {
+            err.println("The loopback hop could not be measured: " + e.getMessage());
+            return OptionalDouble.empty();
+        }
     }
 
     /** The gateway logs every connection at INFO; a thousand of them would bury the table. */

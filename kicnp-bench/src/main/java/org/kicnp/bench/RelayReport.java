@@ -3,6 +3,7 @@ package org.kicnp.bench;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
+import java.util.OptionalDouble;
 
 /** The gateway benchmark's output: the fairness notes, a table per agent count, and the one-line JSON. */
 final class RelayReport {
@@ -87,8 +88,29 @@ final class RelayReport {
                 f.shed() > 0 ? "  (hub shed " + f.shed() + ")" : ""));
     }
 
-    /** The last line: {@code {"runs": [{"agents": ..., "kicnp_msgs_per_s": ..., ...}, ...], ...}}. */
-    static String json(List<RelayRun> runs, RelayBenchOptions o) {
+    /**
+     * The kernel's floor under the figures above: a relayed message is two loopback hops, so twice the measured hop is
+     * the least CPU per message any hub and its clients together can spend here, and at the offered rate that least is
+     * a share of the machine no hub can go below.
+     */
+    static String floor(double hopMicros, RelayBenchOptions o) {
+        return String.format(Locale.ROOT, """
+                kernel floor: one loopback TCP hop of %d bytes (write + read, one thread, no wake-up) costs %.2f µs of CPU
+                           here (measured after the runs); a relayed message takes two, %.2f µs, so at %,d msgs/s the
+                           hops alone keep %.0f %% of the machine busy, whatever the hub (hub + clients µs/msg above
+                           include them)
+                """, o.messageBytes(), hopMicros, 2 * hopMicros, o.rate(), floorBusyPercent(hopMicros, o));
+    }
+
+    private static double floorBusyPercent(double hopMicros, RelayBenchOptions o) {
+        return 2 * hopMicros * o.rate() / 1e6 / Runtime.getRuntime().availableProcessors() * 100;
+    }
+
+    /**
+     * The last line: {@code {"runs": [{"agents": ..., "kicnp_msgs_per_s": ..., ...}, ...], ...}}, with the loopback
+     * hop's cost and the busy share it sets at the offered rate (null when it could not be measured).
+     */
+    static String json(List<RelayRun> runs, RelayBenchOptions o, OptionalDouble hopMicros) {
         StringBuilder sb = new StringBuilder("{\"runs\": [");
         for (int i = 0; i < runs.size(); i++) {
             RelayRun r = runs.get(i);
@@ -121,6 +143,10 @@ final class RelayReport {
                 .append(", \"gateway\": \"").append(o.gatewayInProcess() ? "in_process" : "own_process").append('"')
                 .append(", \"transport\": \"").append(o.transport().label()).append('"')
                 .append(", \"cores\": ").append(Runtime.getRuntime().availableProcessors())
+                .append(", \"loopback_hop_us\": ")
+                .append(hopMicros.isPresent() ? num(hopMicros.getAsDouble(), 2) : "null")
+                .append(", \"floor_busy_pct_at_rate\": ")
+                .append(hopMicros.isPresent() ? num(floorBusyPercent(hopMicros.getAsDouble(), o), 1) : "null")
                 .append(", \"load_average\": \"").append(loadAverage()).append("\"}").toString();
     }
 

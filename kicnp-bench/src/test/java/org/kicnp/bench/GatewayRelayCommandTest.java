@@ -1,6 +1,7 @@
 package org.kicnp.bench;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -37,6 +38,12 @@ class GatewayRelayCommandTest {
         // auto: the best transport that works here, named in the header and the JSON
         assertThat(lastJson(run.out()).get("transport").asText()).isEqualTo(Transport.best().label());
         assertThat(run.out()).contains("socket transport (gateway and clients): " + Transport.best().label());
+        // the kernel's floor: a measured hop, and the busy share two of them per message set at the offered rate
+        double hop = lastJson(run.out()).get("loopback_hop_us").asDouble();
+        assertThat(hop).isPositive();
+        assertThat(lastJson(run.out()).get("floor_busy_pct_at_rate").asDouble()).isCloseTo(
+                2 * hop * 2_000 / 1e6 / Runtime.getRuntime().availableProcessors() * 100, within(0.1));
+        assertThat(run.out()).contains("kernel floor: one loopback TCP hop of 200 bytes");
     }
 
     @Test
