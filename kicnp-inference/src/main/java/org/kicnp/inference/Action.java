@@ -26,6 +26,14 @@ public record Action(String id, String robot, String target, String name, List<S
         return new Action(id, robot, target, name, args, frame, instance, timeoutMillis, time);
     }
 
+    /** An action that has not finished, and where it stands (held, sent or started). */
+    public record Unfinished(Action action, Status status) {
+        public Unfinished {
+            requireNonNull(action, "action");
+            requireNonNull(status, "status");
+        }
+    }
+
     /** Life cycle of an action. */
     public enum Status {
         /** Waiting on a coordination relation (succession, synchronization, restriction). */

@@ -164,6 +164,17 @@ final class ActionCoordinator {
         }
     }
 
+    /** The actions not finished yet, in the order they were issued; of one robot only unless {@code robot} is null. */
+    List<Action.Unfinished> unfinished(String robot) {
+        List<Action.Unfinished> out = new ArrayList<>();
+        for (Tracked t : open) {
+            if (robot == null || t.action.robot().equals(robot)) {
+                out.add(new Action.Unfinished(t.action, t.status));
+            }
+        }
+        return out;
+    }
+
     /** A script's cancel: the action with that id, else every unfinished action of the robot of that name. */
     void cancelByIdOrRobot(String target, String reason) {
         if (actions.containsKey(target)) {

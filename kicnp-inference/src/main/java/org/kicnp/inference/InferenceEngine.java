@@ -78,6 +78,10 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
             @Override public List<Map<String, Object>> ask(String cls, Map<String, Value> bindings) {
                 return backward.ask(cls, bindings).stream().map(Answer::toScript).toList();
             }
+
+            @Override public List<Action.Unfinished> unfinished(String robot) {
+                return actions.unfinished(robot);
+            }
         });
         this.scripts = new ScriptCalls(kb, host, api, supports, actions, this::trace, new ScriptCalls.Target() {
             @Override public Set<String> destroy(String instance, String reason) {

@@ -3,6 +3,7 @@ package org.kicnp.inference;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.function.Supplier;
 import org.kicnp.core.DataType;
@@ -16,8 +17,9 @@ import org.slf4j.LoggerFactory;
 
 /**
  * The globals a behavior script sees: {@code s} (the instance's slots, read-only), {@code sendmsg}/{@code Sendmsg},
- * {@code command}, {@code create}, {@code destroy}, {@code ask}, {@code log} and {@code learn}. Every function that
- * changes something only records an {@link Effect}; the engine applies them after the script succeeds.
+ * {@code command}, {@code create}, {@code destroy}, {@code cancel}, {@code actions}, {@code ask}, {@code log} and
+ * {@code learn}. Every function that changes something only records an {@link Effect}; the engine applies them after
+ * the script succeeds ({@code actions} and {@code ask} read the state the script started in).
  */
 final class ScriptApi {
     private static final Logger LOG = LoggerFactory.getLogger(ScriptApi.class);
@@ -29,6 +31,9 @@ final class ScriptApi {
         String newActionId();
 
         List<Map<String, Object>> ask(String className, Map<String, Value> bindings);
+
+        /** The unfinished actions, of one robot unless {@code robot} is null (oldest first). */
+        List<Action.Unfinished> unfinished(String robot);
     }
 
     private final KnowledgeBase kb;
@@ -82,6 +87,22 @@ final class ScriptApi {
             effects.add(new Effect.Cancel(FrameView.nameOf(args.get(0)), args.size() > 1
                     ? String.valueOf(args.get(1)) : "cancelled by frame '" + frame + "'"));
             return true;
+        });
+        g.put("actions", (HostFunction) args -> {
+            List<Map<String, Object>> out = new ArrayList<>();
+            for (Action.Unfinished u : services.unfinished(args.isEmpty() ? null : FrameView.nameOf(args.get(0)))) {
+                Map<String, Object> a = new LinkedHashMap<>();
+                a.put("id", u.action().id());
+                a.put("robot", u.action().robot());
+                a.put("target", u.action().target());
+                a.put("name", u.action().name());
+                a.put("args", u.action().args());
+                a.put("frame", u.action().frame());
+                a.put("instance", u.action().instance());
+                a.put("status", u.status().name().toLowerCase(Locale.ROOT));
+                out.add(a);
+            }
+            return out;
         });
         g.put("ask", (HostFunction) args -> {
             need(args, 1, "ask(class, bindings)");

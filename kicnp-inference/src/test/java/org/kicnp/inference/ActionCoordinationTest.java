@@ -2,8 +2,12 @@ package org.kicnp.inference;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
+import static org.assertj.core.api.Assertions.tuple;
 
 import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.kicnp.core.Frame;
 import org.kicnp.core.Relation;
@@ -159,6 +163,45 @@ class ActionCoordinationTest {
         assertThat(e.actionStatus(walk)).contains(Action.Status.FAILED);
         assertThat(e.actionStatus(lie)).as("AIBO's action is not PINO's").contains(Action.Status.SENT);
         assertThat(f.cancelled).containsExactly(walk + ": stop requested");
+    }
+
+    @Test
+    @SuppressWarnings("unchecked")
+    void aScriptsActions_listTheUnfinishedActions_soItCanCancelOneKind() {
+        Fixture f = twoFrames(Relation.Coordination.SUCCESSION);
+        f.cls("Stop", null);
+        f.kb.add(Frame.classFrame("Halt").slot(Fixture.inst("mStop", "Stop"))
+                .slot(Fixture.str("onInstantiate", "halt-walks")).build());
+        List<List<Map<String, Object>>> seen = new ArrayList<>();
+        f.scripts.define("halt-walks", g -> {
+            seen.add((List<Map<String, Object>>) Fixture.call(g, "actions"));
+            List<Map<String, Object>> pino = (List<Map<String, Object>>) Fixture.call(g, "actions", "PINO");
+            seen.add(pino);
+            pino.stream().filter(a -> a.get("name").equals("walk"))
+                    .forEach(a -> Fixture.call(g, "cancel", a.get("id"), "walk no more"));
+            return null;
+        });
+        InferenceEngine e = f.engine();
+        f.assertFact("go", "Go");
+        e.runToQuiescence();
+        String walk = f.sent.getFirst().id();
+
+        f.assertFact("stop", "Stop");
+        e.runToQuiescence();
+
+        assertThat(seen.getFirst()).extracting(a -> a.get("robot"), a -> a.get("name"), a -> a.get("status"),
+                a -> a.get("frame")).containsExactly(tuple("PINO", "walk", "sent", "A"),
+                tuple("AIBO", "lie_down", "held", "B"));
+        assertThat(seen.get(1)).singleElement().satisfies(a -> {
+            assertThat(a).containsEntry("id", walk).containsEntry("args", List.of("2m"))
+                    .containsEntry("target", "PINO");
+            assertThat((String) a.get("instance")).startsWith("A-");
+        });
+        assertThat(e.actionStatus(walk)).contains(Action.Status.FAILED);
+        assertThat(f.cancelled).containsExactly(walk + ": walk no more");
+        assertThat(e.actions()).filteredOn(a -> a.name().equals("lie_down")).singleElement()
+                .satisfies(a -> assertThat(e.actionStatus(a.id())).as("it waited on the walk by succession")
+                        .contains(Action.Status.FAILED));
     }
 
     @Test

@@ -10,11 +10,15 @@ import org.kicnp.protocol.Message.Command;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
+import java.time.Duration;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
 import java.util.function.Function;
 
@@ -28,8 +32,14 @@ public abstract sealed class RobotAgent extends AgentBase permits RobovieAgent, 
     private static final Logger LOG = LoggerFactory.getLogger(RobotAgent.class);
 
     private final RobotDriver driver;
+    /** How long a command waits for the robot to stop what it was asked to stop before it starts anyway. */
+    static final Duration STOPPING_WAIT = Duration.ofSeconds(2);
     /** The commands running in the simulator, by command id, so that a cancel can halt the robot. */
-    private final Map<String, CompletableFuture<Feedback>> commands = new ConcurrentHashMap<>();
+    private final Map<String, Running> commands = new ConcurrentHashMap<>();
+
+    /** A command running in the simulator: its handle (which knows whether a cancel was asked) and its end. */
+    private record Running(ActionHandle handle, CompletableFuture<Feedback> end) {
+    }
 
     /** {@code driverFor} makes the driver given where its signals go (this agent). */
     RobotAgent(AgentOptions options, Function<Consumer<SensorSignal>, RobotDriver> driverFor) {
@@ -46,20 +56,48 @@ public abstract sealed class RobotAgent extends AgentBase permits RobovieAgent, 
         return driver.capabilities();
     }
 
+    /**
+     * Runs a command in the simulator. A command that comes while the robot is stopping another one (a cancel was
+     * asked, the robot has not halted yet) first waits, up to {@link #STOPPING_WAIT}, for it to halt, so that "stop,
+     * then go elsewhere" (a preemption, as the platform sends it: the cancel first, then the new command) does not
+     * find the robot's part still busy with the old action.
+     */
     @Override protected void onCommand(Command command, ActionHandle handle) {
+        awaitStopping();
         LOG.info("Agent '{}' runs command '{}': {} {}", name(), command.id(), command.action(), command.args());
-        CompletableFuture<Feedback> running = driver.execute(command.action(), command.args(),
+        CompletableFuture<Feedback> end = driver.execute(command.action(), command.args(),
                 f -> report(command, handle, f));
-        if (!running.isDone()) {
+        if (!end.isDone()) {
+            Running running = new Running(handle, end);
             commands.put(command.id(), running);
-            running.whenComplete((f, e) -> commands.remove(command.id(), running));
+            end.whenComplete((f, e) -> commands.remove(command.id(), running));
+        }
+    }
+
+    private void awaitStopping() {
+        long deadline = System.nanoTime() + STOPPING_WAIT.toNanos();
+        for (Running r : commands.values()) {
+            if (!r.handle().isCancelRequested()) {
+                continue;
+            }
+            try {
+                r.end().get(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
+            } catch (TimeoutException e) {
+                LOG.warn("Agent '{}': command '{}' has not stopped within {} ms of its cancel; the next command "
+                        + "starts anyway.", name(), r.handle().command().id(), STOPPING_WAIT.toMillis());
+            } catch (ExecutionException e) {
+                // It ended, badly: the robot is free either way.
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return;
+            }
         }
     }
 
     /** Halts the robot in the simulator, which ends the action; it is then reported cancelled (see {@link #report}). */
     @Override protected void onCancel(ActionHandle handle, String reason) {
-        CompletableFuture<Feedback> running = commands.get(handle.command().id());
-        if (running == null || !driver.cancel(running)) {
+        Running running = commands.get(handle.command().id());
+        if (running == null || !driver.cancel(running.end())) {
             super.onCancel(handle, reason);
         }
     }

@@ -153,6 +153,23 @@ class RobotAgentEndToEndTest {
     }
 
     @Test
+    void aCancelAndANewCommandAtOnce_theNewOneWaitsForScoutToHalt_thenRuns() throws Exception {
+        connect(new ScoutAgent(options("scout", AgentKind.ROBOT), world));
+        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
+        world.call(new SimRequest.SetTimeScale(1));
+        CommandTicket go = alice.command("scout", "ScoutGoTo", Map.of("x", "1", "y", "1"));
+        waitUntil(() -> go.feedback().stream().anyMatch(f -> f.stage() == FeedbackStage.PROGRESS));
+
+        // A preemption, as the platform sends one: the cancel, then at once the new goal (no wait for the cancel's end).
+        alice.cancel("scout", go.command().id(), "go elsewhere");
+        CommandTicket elsewhere = alice.command("scout", "ScoutGoTo", Map.of("x", "6.2", "y", "3.5"));
+
+        assertThat(elsewhere.result(WAIT)).contains("\"distance_error_m\"");
+        assertThatThrownBy(() -> go.result(WAIT)).isInstanceOf(ActionFailedException.class)
+                .hasMessage("cancelled: go elsewhere (asked by 'alice')");
+    }
+
+    @Test
     void simulatorKilledMidAction_theCommandFailsWithTheReasonThroughTheGateway() throws Exception {
         connect(new ScoutAgent(options("scout", AgentKind.ROBOT), world));
         UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));

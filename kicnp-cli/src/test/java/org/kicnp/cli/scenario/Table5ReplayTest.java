@@ -121,13 +121,18 @@ class Table5ReplayTest {
     }
 
     @Test
-    void changeOfMind_whileScoutIsOnItsWay_theTaskChangesToCoffee() throws Exception {
+    void changeOfMind_whileScoutIsOnItsWay_scoutHalts_andTheTaskChangesToCoffee() throws Exception {
         try (Table5Run run = start(kb(), "change-of-mind")) {
             run.playFirstVisit("Saburo", "Tea, please.");
             run.record().await(e -> e.kind().equals("feedback") && e.text("stage").equals("started")
                     && e.text("robot").equals("scout"), Table5Run.STEP, "Scout setting off");
             run.user().say("No, coffee please.");
             run.awaitEnd();
+            Step trip = run.record().stepsOf("ScoutToKitchen").getFirst();
+            assertThat(trip.outcome()).as("the move under way is cancelled").isEqualTo("failed");
+            assertThat(trip.detail()).contains("cancelled: the order changed");
+            assertThat(run.record().stepsOf("ScoutBackToKitchen").getFirst().sent())
+                    .isGreaterThanOrEqualTo(trip.finished());
             assertThat(holding(run)).startsWith("coffee");
             assertThat(run.record().steps()).filteredOn(s -> s.frame().equals("ScoutTakesCup") && s.ended())
                     .extracting(Step::args).containsExactly("{cup=coffee}");
@@ -136,7 +141,7 @@ class Table5ReplayTest {
     }
 
     @Test
-    void changeOfMind_whileScoutBringsTheTea_scoutPutsItDownAndBringsCoffee() throws Exception {
+    void changeOfMind_whileScoutBringsTheTea_scoutTurnsBack_putsItDownAndBringsCoffee() throws Exception {
         try (Table5Run run = start(kb(), "late-change-of-mind")) {
             run.playFirstVisit("Shiro", "Tea, please.");
             run.record().await(e -> e.kind().equals("feedback") && e.text("stage").equals("started")
@@ -151,9 +156,10 @@ class Table5ReplayTest {
                     .noneMatch(l -> l.contains("Scout could not"));
             Step oldBring = r.stepsOf("ScoutBring").getFirst();
             assertThat(oldBring.args()).contains("user=userA");
-            assertThat(oldBring.outcome()).isEqualTo("ended");
+            assertThat(oldBring.outcome()).as("the approach under way is cancelled").isEqualTo("failed");
+            assertThat(oldBring.detail()).contains("cancelled: the order changed");
             Step back = r.stepsOf("ScoutBackToKitchen").getFirst();
-            assertThat(back.sent()).as("back to the kitchen once the old trip's action ended")
+            assertThat(back.sent()).as("back to the kitchen once the approach was stopped")
                     .isGreaterThanOrEqualTo(oldBring.finished());
             Step putDown = r.stepsOf("ScoutPutsCupDown").getFirst();
             assertThat(putDown.outcome()).isEqualTo("ended");
