@@ -11,6 +11,7 @@ import java.util.concurrent.ConcurrentHashMap;
 import org.kicnp.core.BatchRejectedException;
 import org.kicnp.core.Change;
 import org.kicnp.core.ChangeSet;
+import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
 import org.kicnp.core.FrameEvent;
 import org.kicnp.core.KnowledgeBase;
@@ -161,9 +162,16 @@ final class KnowledgeAccess implements KnowledgeListener {
                 return CompletableFuture.completedFuture(ErrorReply.to(p.id(), ErrorCode.REJECTED, "Binding '"
                         + b.getKey() + "' names '" + b.getValue() + "', which is a class; a binding names an instance."));
             }
-            if (!hasSlotAtOrBelow(p.ofClass(), b.getKey())) {
+            Set<DataType> types = slotTypesAtOrBelow(p.ofClass(), b.getKey());
+            if (types.isEmpty()) {
                 return CompletableFuture.completedFuture(ErrorReply.to(p.id(), ErrorCode.REJECTED, "Neither class '"
                         + p.ofClass() + "' nor any class below it has a slot '" + b.getKey() + "' to bind."));
+            }
+            if (!types.contains(DataType.INSTANCE) && !types.contains(DataType.FRAME)) {
+                return CompletableFuture.completedFuture(ErrorReply.to(p.id(), ErrorCode.REJECTED, "Slot '"
+                        + b.getKey() + "' of class '" + p.ofClass() + "' holds " + types.stream().map(DataType::xmlName)
+                        .sorted().collect(java.util.stream.Collectors.joining(" or ")) + " values, not instances; "
+                        + "a binding names an instance for an instance slot."));
             }
         }
         try {
@@ -174,21 +182,20 @@ final class KnowledgeAccess implements KnowledgeListener {
         }
     }
 
-    /** Whether {@code cls}, or a frame below it, has (or inherits) the slot. */
-    private boolean hasSlotAtOrBelow(String cls, String slot) {
+    /** The types the slot has where {@code cls}, or a class below it, has (or inherits) it; empty when none has. */
+    private Set<DataType> slotTypesAtOrBelow(String cls, String slot) {
         java.util.ArrayDeque<String> todo = new java.util.ArrayDeque<>(List.of(cls));
         Set<String> seen = new HashSet<>();
+        Set<DataType> types = java.util.EnumSet.noneOf(DataType.class);
         while (!todo.isEmpty()) {
             String f = todo.pop();
             if (!seen.add(f)) {
                 continue;
             }
-            if (kb.slot(f, slot).isPresent()) {
-                return true;
-            }
+            kb.slot(f, slot).ifPresent(found -> types.add(found.slot().type()));
             kb.children(f).stream().filter(ch -> !ch.isInstance()).forEach(ch -> todo.push(ch.name()));
         }
-        return false;
+        return types;
     }
 
     /** Why an instance exists, through the {@link Reasoning}. */

@@ -41,7 +41,8 @@ class GatewayProveWhyTest {
         kb.add(Frame.classFrame("User").build());
         kb.add(Frame.classFrame("Speech").build());
         kb.add(Frame.classFrame("AskUserName").parent("Speech").slot(Slot.builder("mUser", DataType.INSTANCE)
-                .argument("User").required(true).build()).build());
+                .argument("User").required(true).build()).slot(Slot.builder("question", DataType.STRING).build())
+                .build());
         kb.add(Frame.instance("userA", "User").build());
         server = GatewayServer.start(GatewayConfig.defaults().withPort(0),
                 AgentDirectory.empty().with("alice", "alice-token", AgentKind.USER), kb, FeedbackListener.NONE,
@@ -75,6 +76,9 @@ class GatewayProveWhyTest {
                 "Binding 'mUser' names 'User', which is a class; a binding names an instance.");
         refused(() -> alice.prove("AskUserName", Map.of("mUsr", "userA")), ErrorCode.REJECTED,
                 "Neither class 'AskUserName' nor any class below it has a slot 'mUsr' to bind.");
+        refused(() -> alice.prove("AskUserName", Map.of("question", "userA")), ErrorCode.REJECTED,
+                "Slot 'question' of class 'AskUserName' holds TYPE_STR values, not instances; a binding names an "
+                        + "instance for an instance slot.");
         refused(() -> alice.prove("userA", Map.of()), ErrorCode.REJECTED,
                 "Frame 'userA' is an instance; prove takes a class.");
         // A slot of a class below the one asked about is a fine binding: it reaches the reasoning (none here).
