@@ -259,6 +259,18 @@ try {
   await page.press('#wrong-reason', 'Enter');
   await command.locator('.wrong-note', { hasText: 'went to the wrong place' }).waitFor();
   await page.locator('#wrong-form').waitFor({ state: 'hidden' });
+  check(await command.locator('button', { hasText: 'Stop' }).count() === 0, 'a command that ended offers Stop');
+
+  step = 'world panel: stop a command under way';
+  await page.selectOption('#teleop-action', 'patrol');
+  await page.click('#teleop-send');
+  const patrol = page.locator('#command-rows tr', { hasText: 'patrol' });
+  await patrol.locator('.status-started').waitFor();
+  await patrol.locator('button', { hasText: 'Stop' }).click();
+  await patrol.locator('.status-failed').waitFor();
+  check((await patrol.textContent()).includes('cancelled: stopped in the editor'), 'the stop\'s reason is not shown');
+  check((await patrol.textContent()).includes('stop asked: stopped in the editor'), 'the stop request is not noted');
+  check(await patrol.locator('button', { hasText: 'Stop' }).count() === 0, 'a stopped command still offers Stop');
 
   step = 'world panel: the robot list keeps keyboard focus while the robots move';
   const rowWrong = page.locator('#robot-rows tr[data-robot="scout"] button', { hasText: 'Wrong' });

@@ -127,8 +127,11 @@ final class ApiHandler extends Handler.Abstract {
             };
             case "robots" -> robots(r, s, m);
             case "commands" -> s.length == 1 ? only(m, "GET", () -> ok(platform.commands())) : notFound(r);
-            case "actions" -> s.length == 3 && s[2].equals("wrong")
-                    ? only(m, "POST", () -> ok(platform.wrong(s[1], r.body()))) : notFound(r);
+            case "actions" -> s.length != 3 ? notFound(r) : switch (s[2]) {
+                case "wrong" -> only(m, "POST", () -> ok(platform.wrong(s[1], r.body())));
+                case "stop" -> only(m, "POST", () -> ok(platform.stop(s[1], r.body())));
+                default -> notFound(r);
+            };
             case "scripts" -> s.length == 2 && s[1].equals("check")
                     ? only(m, "POST", () -> ok(features.scripts().check(r.body())))
                     : notFound(r);

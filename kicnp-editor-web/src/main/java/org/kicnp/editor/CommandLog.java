@@ -10,8 +10,8 @@ import java.util.Map;
 
 /**
  * The recent commands the World panel lists ({@code GET /api/commands}): each with its arguments, its latest
- * status ({@code sent}, {@code started}, {@code ended}, {@code failed}), the result or reason, and the person's
- * "wrong" judgement. Keeps the newest {@link #LIMIT}; feedback for commands sent elsewhere (by the platform's
+ * status ({@code sent}, {@code started}, {@code ended}, {@code failed}), the result or reason, the person's "wrong"
+ * judgement and the reason they gave when they asked for it to be stopped ({@code stop}). Keeps the newest {@link #LIMIT}; feedback for commands sent elsewhere (by the platform's
  * behavior frames) is listed too, so any action can be judged.
  */
 final class CommandLog {
@@ -42,6 +42,13 @@ final class CommandLog {
         return snapshot(row);
     }
 
+    /** Records that the person asked for the action to be stopped, and why; answers the row. */
+    synchronized Map<String, Object> stopAsked(String id, String reason) {
+        Map<String, Object> row = row(id, "", "");
+        row.put("stop", reason);
+        return snapshot(row);
+    }
+
     /** Newest first. */
     synchronized List<Map<String, Object>> recent() {
         List<Map<String, Object>> out = new ArrayList<>();
@@ -65,6 +72,7 @@ final class CommandLog {
             row.put("detail", "");
             row.put("at", Instant.now().toString());
             row.put("wrong", "");
+            row.put("stop", "");
             entries.put(id, row);
             while (entries.size() > LIMIT) {
                 entries.remove(entries.keySet().iterator().next());

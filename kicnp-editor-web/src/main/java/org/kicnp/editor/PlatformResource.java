@@ -138,6 +138,23 @@ final class PlatformResource implements AutoCloseable {
         return row;
     }
 
+    /** {@code POST /api/actions/{id}/stop}: {@code {reason}} (optional): the action is cancelled, the robot halts. */
+    Map<String, Object> stop(String id, JsonNode body) {
+        TeleOperation port = teleOperation();
+        String reason = FrameInput.text(body, "reason").map(String::strip).filter(x -> !x.isEmpty())
+                .orElse("stopped in the editor");
+        call(() -> {
+            port.stop(id, reason);
+            return null;
+        });
+        Map<String, Object> row = commands.stopAsked(id, reason);
+        EventHub hub = hub();
+        if (hub != null) {
+            hub.publish("feedback", row);
+        }
+        return row;
+    }
+
     private TeleOperation teleOperation() {
         return port(ports.teleOperation().orElse(null), "tele-operation");
     }

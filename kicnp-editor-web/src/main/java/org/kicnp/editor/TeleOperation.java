@@ -31,6 +31,16 @@ public interface TeleOperation {
      */
     void markWrong(String actionId, String reason);
 
+    /**
+     * Asks for the action with this id (a tele-operated command or an action the platform issued) to be stopped
+     * ({@code POST /api/actions/{id}/stop}), as a ROS action client preempts a goal: the action fails as cancelled
+     * with {@code reason}, and a robot already performing it halts. Its feedback follows as for any command. Returns
+     * once the request is on its way.
+     *
+     * @throws IllegalArgumentException no action with this id is known, or it is not running any more (422)
+     */
+    void stop(String actionId, String reason);
+
     /** Calls {@code listener} with feedback on every command (tele-operated or not), from any thread. */
     Subscription onFeedback(Consumer<CommandFeedback> listener);
 }

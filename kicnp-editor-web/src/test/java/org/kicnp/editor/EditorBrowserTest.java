@@ -79,8 +79,11 @@ class EditorBrowserTest {
             world.shutdownNow();
         }
         assertThat(platform.said).containsExactly("User A: Bring me a cup of tea");
-        assertThat(platform.sent).singleElement().asString().endsWith("scout go_to {x=7.0, y=3.5}");
+        assertThat(platform.sent).hasSize(2).satisfiesExactly(
+                go -> assertThat(go).endsWith("scout go_to {x=7.0, y=3.5}"),
+                patrol -> assertThat(patrol).endsWith("scout patrol {}"));
         assertThat(platform.judged).singleElement().asString().endsWith(": went to the wrong place");
+        assertThat(platform.stopped).singleElement().asString().endsWith(": stopped in the editor");
         assertThat(artifacts.resolve("05-world.png")).exists();
         Slot mUser = kb.require("AskUserName").ownSlot("mUser").orElseThrow();
         assertThat(mUser.argument()).contains("KnownUser");

@@ -161,6 +161,42 @@ class PlatformApiTest {
         assertThat(platform.judged).isEmpty();
     }
 
+    @Test void stop_withoutLogin_is401_afterLoginTheActionIsCancelled_andItsRowSaysSo() throws Exception {
+        http.login("pw");
+        String id = json(http.post("/api/robots/scout/commands", "{\"action\":\"patrol\"}")).get("id").asText();
+        HttpResponse<String> anonymous = new Http(server.port()).post("/api/actions/" + id + "/stop",
+                "{\"reason\":\"enough\"}");
+        assertThat(anonymous.statusCode()).isEqualTo(401);
+        assertThat(platform.stopped).isEmpty();
+
+        HttpResponse<String> r = http.post("/api/actions/" + id + "/stop", "{\"reason\":\"enough\"}");
+
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(200);
+        assertThat(json(r).get("stop").asText()).isEqualTo("enough");
+        assertThat(platform.stopped).containsExactly(id + ": enough");
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+        JsonNode row = json(http.get("/api/commands")).get(0);
+        while (!row.get("status").asText().equals("failed") && System.nanoTime() < deadline) {
+            Thread.sleep(20);
+            row = json(http.get("/api/commands")).get(0);
+        }
+        assertThat(row.get("status").asText()).isEqualTo("failed");
+        assertThat(row.get("id").asText()).isEqualTo(id);
+        assertThat(row.get("detail").asText()).isEqualTo("cancelled: enough");
+    }
+
+    @Test void stop_withoutAReason_saysWhere_andAnActionNotRunningIs422() {
+        http.login("pw");
+
+        assertThat(http.post("/api/actions/c9/stop", "{}").statusCode()).isEqualTo(200);
+        HttpResponse<String> again = http.post("/api/actions/c9/stop", "{}");
+
+        assertThat(platform.stopped).containsExactly("c9: stopped in the editor");
+        assertThat(again.statusCode()).isEqualTo(422);
+        assertThat(json(again).get("error").asText()).isEqualTo("No action 'c9' is running.");
+        assertThat(http.get("/api/actions/c9/stop").statusCode()).isEqualTo(405);
+    }
+
     @Test void events_deliverAWorldSnapshot_aChatLine_andCommandFeedback() throws Exception {
         BlockingQueue<String> received = new LinkedBlockingQueue<>();
         WebSocket ws = connect(received, server.port());

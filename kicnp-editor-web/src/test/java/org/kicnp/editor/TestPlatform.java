@@ -19,12 +19,17 @@ import org.kicnp.editor.WorldSnapshot.User;
 /**
  * A small in-test platform behind the editor's three ports, recording what the editor asks of it: the world is
  * whatever {@link #publish} last gave it; the chat answers every line with a verdict and Robovie's reply; a
- * command to a known robot starts at once and ends (or fails, for {@code fail_me}) right after.
+ * command to a known robot starts at once and ends (or fails, for {@code fail_me}) right after, but Scout's
+ * {@code patrol}, which runs until it is stopped (as does the world's running action {@code c9}).
  */
 final class TestPlatform implements WorldView, ChatPort, TeleOperation {
     final List<String> said = new CopyOnWriteArrayList<>();
     final List<String> sent = new CopyOnWriteArrayList<>();
     final List<String> judged = new CopyOnWriteArrayList<>();
+    final List<String> stopped = new CopyOnWriteArrayList<>();
+    /** The commands running until stopped, by id: robot and action. */
+    private final Map<String, String[]> running = new java.util.concurrent.ConcurrentHashMap<>(
+            Map.of("c9", new String[] {"scout", "go_to"}));
     private final AtomicReference<WorldSnapshot> latest = new AtomicReference<>();
     private final List<Consumer<WorldSnapshot>> worldListeners = new CopyOnWriteArrayList<>();
     private final List<Consumer<ChatLine>> chatListeners = new CopyOnWriteArrayList<>();
@@ -88,7 +93,8 @@ final class TestPlatform implements WorldView, ChatPort, TeleOperation {
                         new ActionSpec("fail_me", "Always fails.", List.of()))),
                 new RobotCapabilities("scout", "mobile", List.of(
                         new ActionSpec("go_to", "Go to (x, y).", List.of(new ArgSpec("x", "number", true),
-                                new ArgSpec("y", "number", true))))));
+                                new ArgSpec("y", "number", true))),
+                        new ActionSpec("patrol", "Patrol the room until stopped.", List.of()))));
     }
 
     @Override public String send(String robot, String action, Map<String, String> args) {
@@ -99,8 +105,14 @@ final class TestPlatform implements WorldView, ChatPort, TeleOperation {
         }
         String id = "tele-" + ids.incrementAndGet();
         sent.add(id + " " + robot + " " + action + " " + new java.util.TreeMap<>(args));
+        if (action.equals("patrol")) {
+            running.put(id, new String[] {robot, action});
+        }
         Thread.ofVirtual().start(() -> {
             feedback(new CommandFeedback(Instant.now(), id, robot, action, CommandFeedback.Status.STARTED, ""));
+            if (action.equals("patrol")) {
+                return;
+            }
             feedback(action.equals("fail_me")
                     ? new CommandFeedback(Instant.now(), id, robot, action, CommandFeedback.Status.FAILED, "told to fail")
                     : new CommandFeedback(Instant.now(), id, robot, action, CommandFeedback.Status.ENDED, "done"));
@@ -122,6 +134,16 @@ final class TestPlatform implements WorldView, ChatPort, TeleOperation {
             throw new IllegalArgumentException("No action '" + actionId + "' is known.");
         }
         judged.add(actionId + ": " + reason);
+    }
+
+    @Override public void stop(String actionId, String reason) {
+        String[] r = running.remove(actionId);
+        if (r == null) {
+            throw new IllegalArgumentException("No action '" + actionId + "' is running.");
+        }
+        stopped.add(actionId + ": " + reason);
+        Thread.ofVirtual().start(() -> feedback(new CommandFeedback(Instant.now(), actionId, r[0], r[1],
+                CommandFeedback.Status.FAILED, "cancelled: " + reason)));
     }
 
     @Override public Subscription onFeedback(Consumer<CommandFeedback> listener) {

@@ -8,6 +8,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.BiPredicate;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
 import org.kicnp.core.BatchRejectedException;
@@ -33,7 +34,9 @@ import org.kicnp.robots.RobotModels;
  * {@link ActionSink} with an id of its own ({@code tele-N}, which the inference engine does not track), and is
  * logged like the engine's commands. Feedback on every command — tele-operated or issued by the engine — is read
  * from the event log. {@code markWrong} asserts a RUNTIME {@code WrongAction} instance, adding the class when the
- * knowledge base lacks it, so behavior frames can match the judgement.
+ * knowledge base lacks it, so behavior frames can match the judgement. {@code stop} cancels a tele-operated command
+ * at the gateway (the robot's agent halts it) and an action the engine issued through the engine (which fails it,
+ * and what waits on it, and asks the robot to stop it).
  */
 final class PlatformTeleOperation implements TeleOperation, AutoCloseable {
     /** The prefix of tele-operated command ids. */
@@ -46,6 +49,7 @@ final class PlatformTeleOperation implements TeleOperation, AutoCloseable {
     private final EventLog log;
     private final Supplier<List<String>> connected;
     private final Supplier<ActionSink> gateway;
+    private final BiPredicate<String, String> engineCancel;
     private final AtomicLong counter = new AtomicLong();
     private final Listeners<CommandFeedback> listeners = new Listeners<>();
     private final Consumer<PlatformEvent> watcher = this::watch;
@@ -56,11 +60,17 @@ final class PlatformTeleOperation implements TeleOperation, AutoCloseable {
         }
     };
 
-    PlatformTeleOperation(KnowledgeBase kb, EventLog log, Supplier<List<String>> connected, Supplier<ActionSink> gateway) {
+    /**
+     * @param engineCancel cancels an unfinished action of the engine, given its id and the reason; false when the
+     *                     engine has no such action ({@code InferenceEngine.cancelAction})
+     */
+    PlatformTeleOperation(KnowledgeBase kb, EventLog log, Supplier<List<String>> connected, Supplier<ActionSink> gateway,
+                          BiPredicate<String, String> engineCancel) {
         this.kb = kb;
         this.log = log;
         this.connected = connected;
         this.gateway = gateway;
+        this.engineCancel = engineCancel;
         log.subscribe(watcher);
     }
 
@@ -132,6 +142,24 @@ final class PlatformTeleOperation implements TeleOperation, AutoCloseable {
                 .build();
         kb.put(wrong);
         log.record("wrong", Map.of("id", actionId, "robot", known[0], "action", known[1], "reason", reason == null ? "" : reason));
+    }
+
+    @Override public void stop(String actionId, String reason) {
+        String why = reason + " (asked in the editor)";
+        boolean stopping;
+        if (actionId.startsWith(ID_PREFIX)) {
+            String[] known;
+            synchronized (commands) {
+                known = commands.get(actionId);
+            }
+            stopping = known != null && gateway.get().cancel(known[0], actionId, why);
+        } else {
+            stopping = engineCancel.test(actionId, why);
+        }
+        if (!stopping) {
+            throw new IllegalArgumentException("No action with the id '" + actionId + "' is running.");
+        }
+        log.record("stop", Map.of("id", actionId, "reason", reason));
     }
 
     private void ensureClass() {

@@ -238,6 +238,60 @@ class PlatformTest {
         }
     }
 
+    @Test
+    void editorStop_ofTheEnginesActionAndOfATeleOperatedCommand_theRobotIsAskedToStopBoth() throws Exception {
+        Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
+        List<String> cancels = new java.util.concurrent.CopyOnWriteArrayList<>();
+        LinkedBlockingQueue<Command> says = new LinkedBlockingQueue<>();
+        try (Platform platform = Platform.start(PlatformConfig.of(kb).withEphemeralPorts());
+             AgentBase robovie = new AgentBase(AgentOptions.of("127.0.0.1", platform.gatewayPort(), "robovie",
+                     AgentKind.ROBOT, platform.token("robovie"))) {
+                 @Override protected void onCommand(Command command, ActionHandle handle) {
+                     handle.started();
+                     if (command.action().equals("say")) {
+                         says.add(command); // Robovie keeps talking until it is told to stop
+                     } else {
+                         handle.ended("done");
+                     }
+                 }
+
+                 @Override protected void onCancel(ActionHandle handle, String reason) {
+                     cancels.add(handle.command().id() + ": " + reason);
+                     super.onCancel(handle, reason);
+                 }
+             };
+             UserAgent user = user(platform)) {
+            robovie.startAndAwait(Duration.ofSeconds(10));
+            user.startAndAwait(Duration.ofSeconds(10));
+            newUserA(user);
+            Command question = says.poll(20, TimeUnit.SECONDS);
+            assertThat(question).isNotNull();
+
+            platform.teleOperation().stop(question.id(), "too long");
+
+            assertThat(platform.engine().actionStatus(question.id()))
+                    .contains(org.kicnp.inference.Action.Status.FAILED);
+            await("Robovie is asked to stop the engine's question", () -> !cancels.isEmpty());
+            assertThat(cancels).containsExactly(question.id() + ": too long (asked in the editor)");
+
+            String tele = platform.teleOperation().send("robovie", "say", Map.of("text", "la la la"));
+            await("Robovie says the tele-operated line", () -> says.stream().anyMatch(c -> c.id().equals(tele)));
+            platform.teleOperation().stop(tele, "quiet please");
+            await("Robovie is asked to stop the tele-operated line", () -> cancels.size() == 2);
+            assertThat(cancels.get(1)).isEqualTo(tele + ": quiet please (asked in the editor)");
+            await("the tele-operated line is over", () -> {
+                try {
+                    platform.teleOperation().stop(tele, "again");
+                    return false;
+                } catch (IllegalArgumentException e) {
+                    return e.getMessage().equals("No action with the id '" + tele + "' is running.");
+                }
+            });
+            assertThatThrownBy(() -> platform.teleOperation().stop("a999", "nothing"))
+                    .isInstanceOf(IllegalArgumentException.class).hasMessageContaining("'a999'");
+        }
+    }
+
     /** The user agent "user" of the platform's agent file (not started). */
     private static UserAgent user(Platform platform) {
         return new UserAgent(AgentOptions.of("127.0.0.1", platform.gatewayPort(), "user", AgentKind.USER,

@@ -1,6 +1,6 @@
 // K-ICNP knowledge editor: the World panel's controls: the chat (a person speaking as User A to the robots, the
-// parser's verdict, the robots' replies), tele-operation (a command by hand, its feedback) and "this action was
-// wrong". An ES module loaded by index.html; no build step, nothing from the network.
+// parser's verdict, the robots' replies), tele-operation (a command by hand, its feedback), stopping a command under
+// way and "this action was wrong". An ES module loaded by index.html; no build step, nothing from the network.
 import { $, api, el, enc, showErrors, state } from './base.js';
 
 let robots = [];
@@ -89,7 +89,7 @@ export async function sendCommand(event) {
   }
 }
 
-// ---- recent commands, their feedback, "wrong" ----
+// ---- recent commands, their feedback, "stop", "wrong" ----
 
 export async function loadCommands() {
   const rows = await api('GET', '/api/commands');
@@ -101,8 +101,10 @@ export async function loadCommands() {
 /** A `feedback` event (or the answer to a send): the command's row as it now is. */
 export function feedbackEvent(row) {
   const known = commands.get(row.id);
-  // Rows arrive out of order only when the answer to a send races its first feedback: never go back to "sent".
-  if (known && row.status === 'sent' && known.status !== 'sent') row = { ...known, args: row.args };
+  // Rows arrive out of order only when an answer (to a send or a stop) races the command's feedback: never go back.
+  if (known && row.status === 'sent' && known.status !== 'sent') {
+    row = { ...row, status: known.status, detail: known.detail, at: known.at };
+  }
   commands.delete(row.id);
   commands.set(row.id, { ...known, ...row });
   while (commands.size > 50) commands.delete(commands.keys().next().value);
@@ -119,11 +121,26 @@ function renderCommands() {
       el('div', { class: 'muted small-text', text: c.id })),
     el('td', {}, el('span', { class: 'cmd-status status-' + c.status, text: c.status }),
       c.detail ? el('div', { class: 'small-text detail', text: c.detail }) : null,
+      c.stop ? el('div', { class: 'small-text stop-note', text: 'stop asked: ' + c.stop }) : null,
       c.wrong ? el('div', { class: 'small-text wrong-note', text: 'marked wrong: ' + c.wrong }) : null),
-    el('td', {}, canJudge && !c.wrong ? el('button', { type: 'button', class: 'small ghost danger', text: 'Wrong',
+    el('td', {}, canJudge && !c.stop && (c.status === 'sent' || c.status === 'started')
+      ? el('button', { type: 'button', class: 'small danger', text: 'Stop',
+        'aria-label': 'Stop command ' + c.id + ' (' + c.action + ' of ' + c.robot + ')',
+        onclick: () => stopCommand(c.id) }) : null,
+    canJudge && !c.wrong ? el('button', { type: 'button', class: 'small ghost danger', text: 'Wrong',
       'aria-label': 'Mark command ' + c.id + ' (' + c.action + ' of ' + c.robot + ') as wrong',
       onclick: () => startWrong(c.id, c.action + ' of ' + c.robot) }) : null)))
     : [el('tr', {}, el('td', { colspan: '3', class: 'muted', text: 'No commands yet.' }))]));
+}
+
+/** Stops a command under way at once (no question asked, as an emergency stop); its feedback follows. */
+async function stopCommand(id) {
+  try {
+    feedbackEvent(await api('POST', '/api/actions/' + enc(id) + '/stop', {}));
+    showErrors('teleop-errors', null);
+  } catch (e) {
+    showErrors('teleop-errors', e);
+  }
 }
 
 export function startWrong(id, what) {
