@@ -277,10 +277,15 @@ class AgentCommandTest {
 
     @Test
     void proveAndWhy_onAGatewayWithoutAnEngine_sayThereIsNone() {
-        CliRun prove = agent("prove", "Person", "name=ken");
+        CliRun prove = agent("prove", "Person");
         assertThat(prove.exitCode()).isEqualTo(1);
         assertThat(prove.err()).contains("kicnp agent prove: This server runs no inference engine, so it cannot "
                 + "prove or explain.");
+        // A binding of a slot that holds no instances is refused before any reasoning.
+        CliRun byName = agent("prove", "Person", "name=ken");
+        assertThat(byName.exitCode()).isEqualTo(1);
+        assertThat(byName.err()).contains("kicnp agent prove: Slot 'name' of class 'Person' holds TYPE_STR values, "
+                + "not instances");
 
         CliRun why = agent("why", "ken");
         assertThat(why.exitCode()).isEqualTo(1);
