@@ -271,6 +271,8 @@ try {
   check((await patrol.textContent()).includes('cancelled: stopped in the editor'), 'the stop\'s reason is not shown');
   check((await patrol.textContent()).includes('stop asked: stopped in the editor'), 'the stop request is not noted');
   check(await patrol.locator('button', { hasText: 'Stop' }).count() === 0, 'a stopped command still offers Stop');
+  check(await page.locator('#robot-rows button[aria-label="Stop action c9 (go_to of scout)"]').count() === 1,
+    'the robot list does not offer Stop on scout\'s running action');
 
   step = 'world panel: the robot list keeps keyboard focus while the robots move';
   const rowWrong = page.locator('#robot-rows tr[data-robot="scout"] button', { hasText: 'Wrong' });

@@ -14,6 +14,7 @@ import java.time.Duration;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
@@ -92,6 +93,19 @@ public abstract sealed class RobotAgent extends AgentBase permits RobovieAgent, 
                 return;
             }
         }
+    }
+
+    /**
+     * The platform's id of the command this agent runs as the simulator's action {@code simActionId} (the simulator
+     * numbers actions its own way); empty when it runs no such command.
+     */
+    public Optional<String> commandOf(String simActionId) {
+        for (Map.Entry<String, Running> e : commands.entrySet()) {
+            if (driver.simActionId(e.getValue().end()).filter(simActionId::equals).isPresent()) {
+                return Optional.of(e.getKey());
+            }
+        }
+        return Optional.empty();
     }
 
     /** Halts the robot in the simulator, which ends the action; it is then reported cancelled (see {@link #report}). */

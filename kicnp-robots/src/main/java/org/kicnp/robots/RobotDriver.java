@@ -124,6 +124,11 @@ public final class RobotDriver implements AutoCloseable {
         return done;
     }
 
+    /** The simulator's id of a command {@link #execute} is running; empty once it has ended. */
+    public Optional<String> simActionId(CompletableFuture<Feedback> command) {
+        return Optional.ofNullable(actions.get(command)).map(SimAction::id);
+    }
+
     /**
      * Stops a command {@link #execute} is running: the simulator halts the robot and ends the action as failed.
      *

@@ -1,9 +1,9 @@
 package org.kicnp.cli.scenario;
 
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.concurrent.CopyOnWriteArrayList;
 import org.kicnp.agent.AgentBase;
 import org.kicnp.agent.AgentOptions;
 import org.kicnp.cli.platform.Platform;
@@ -13,6 +13,7 @@ import org.kicnp.protocol.AgentKind;
 import org.kicnp.robots.AiboAgent;
 import org.kicnp.robots.FaceRecognizer;
 import org.kicnp.robots.PinoAgent;
+import org.kicnp.robots.RobotAgent;
 import org.kicnp.robots.RobovieAgent;
 import org.kicnp.robots.ScoutAgent;
 import org.kicnp.robots.SimOptions;
@@ -28,7 +29,8 @@ public final class RobotWorld implements AutoCloseable {
     private static final Duration CONNECT = Duration.ofSeconds(30);
 
     private final SimWorld sim;
-    private final List<AgentBase> agents = new ArrayList<>();
+    /** Read by the world view's thread while agents connect: copied on write. */
+    private final List<AgentBase> agents = new CopyOnWriteArrayList<>();
     private final FaceBook faces;
 
     private RobotWorld(SimWorld sim, FaceBook faces) {
@@ -41,7 +43,7 @@ public final class RobotWorld implements AutoCloseable {
         FaceRecognizer recognizer = FaceRecognizer.create();
         RobotWorld w = new RobotWorld(sim, FaceBook.attach(platform.kb(), recognizer));
         try {
-            platform.world().attach(sim);
+            platform.world().attach(sim, w::commandOf);
             w.connect(new RobovieAgent(options(platform, "robovie"), sim, recognizer));
             w.connect(new PinoAgent(options(platform, "pino"), sim));
             w.connect(new ScoutAgent(options(platform, "scout"), sim));
@@ -62,6 +64,19 @@ public final class RobotWorld implements AutoCloseable {
     private void connect(AgentBase agent) {
         agents.add(agent);
         agent.startAndAwait(CONNECT);
+    }
+
+    /** The platform command id a robot agent runs as the simulator's action {@code simActionId}. */
+    private Optional<String> commandOf(String simActionId) {
+        for (AgentBase a : agents) {
+            if (a instanceof RobotAgent r) {
+                Optional<String> id = r.commandOf(simActionId);
+                if (id.isPresent()) {
+                    return id;
+                }
+            }
+        }
+        return Optional.empty();
     }
 
     public SimWorld sim() {

@@ -9,13 +9,16 @@ import java.net.http.HttpClient;
 import java.net.http.HttpRequest;
 import java.net.http.HttpResponse;
 import java.nio.file.Path;
+import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
+import org.kicnp.cli.scenario.RobotWorld;
 import org.kicnp.cli.scenario.ScenarioFiles;
+import org.kicnp.core.Value;
 import org.kicnp.editor.Subscription;
 import org.kicnp.editor.WorldSnapshot;
 import org.kicnp.robots.SimOptions;
@@ -50,6 +53,34 @@ class LiveWorldViewTest {
                 assertThat(view.latest()).isPresent();
             }
         }
+    }
+
+    @Test
+    void aRunningAction_isShownUnderItsCommandId_soTheEditorCanStopOrJudgeIt() throws Exception {
+        Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
+        try (Platform platform = Platform.start(PlatformConfig.of(kb).withEphemeralPorts());
+             RobotWorld world = RobotWorld.start(platform, 7, 1.0)) {
+            String go = platform.teleOperation().send("scout", "go_to", Map.of("x", "1.0", "y", "1.0"));
+
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+            while (!scoutRuns(platform, go) && System.nanoTime() < deadline) {
+                Thread.sleep(50);
+            }
+            assertThat(scoutRuns(platform, go)).as("scout's go_to shown as '" + go + "' in the world").isTrue();
+            platform.teleOperation().markWrong(go, "not there");
+            platform.teleOperation().stop(go, "enough");
+            while (scoutRuns(platform, go) && System.nanoTime() < deadline) {
+                Thread.sleep(50);
+            }
+            assertThat(scoutRuns(platform, go)).as("scout halted").isFalse();
+            assertThat(platform.kb().value("WrongAction-" + go, "reason")).contains(Value.of("not there"));
+        }
+    }
+
+    private static boolean scoutRuns(Platform platform, String commandId) {
+        return platform.world().latest().stream().flatMap(w -> w.robots().stream())
+                .filter(r -> r.name().equals("scout")).flatMap(r -> r.actions().stream())
+                .anyMatch(a -> a.id().equals(commandId) && a.action().equals("go_to"));
     }
 
     @Test

@@ -134,7 +134,7 @@ function renderCommands() {
 }
 
 /** Stops a command under way at once (no question asked, as an emergency stop); its feedback follows. */
-async function stopCommand(id) {
+export async function stopCommand(id) {
   try {
     feedbackEvent(await api('POST', '/api/actions/' + enc(id) + '/stop', {}));
     showErrors('teleop-errors', null);

@@ -2,7 +2,7 @@
 // robot list (each robot's state and current actions). Snapshots come from GET /api/world and `world` events.
 // An ES module loaded by index.html; no build step, nothing from the network.
 import { $, api, el, showErrors, showMain, state } from './base.js';
-import { loadCommands, loadChat, loadRobots, startWrong } from './operate.js';
+import { loadCommands, loadChat, loadRobots, startWrong, stopCommand } from './operate.js';
 
 const COLORS = { humanoid: '#1f5fbf', mobile: '#0e9384', quadruped: '#b54708' };
 const RADIUS = { humanoid: 0.3, mobile: 0.2, quadruped: 0.22 };
@@ -236,7 +236,8 @@ function pill(g, text, x, y) {
 
 let robotsShown = '';
 
-// Rebuilt only when something in it changed, so a focused "Wrong" button keeps its focus while the robots move.
+// Rebuilt only when something in it changed, so a focused "Stop" or "Wrong" button keeps its focus while the robots
+// move.
 function renderRobots() {
   if (!latest) return;
   const canJudge = state.session.loggedIn && state.session.teleOperation;
@@ -250,6 +251,9 @@ function renderRobots() {
     el('td', { text: r.kind }),
     el('td', {}, r.actions.length ? r.actions.map((a) => el('span', { class: 'action-chip' }, a.action,
       el('span', { class: 'muted', text: ' ' + a.part + ' · ' + a.id }),
+      canJudge ? el('button', { type: 'button', class: 'small danger', text: 'Stop',
+        'aria-label': 'Stop action ' + a.id + ' (' + a.action + ' of ' + r.name + ')',
+        onclick: () => stopCommand(a.id) }) : null,
       canJudge ? el('button', { type: 'button', class: 'small ghost danger', text: 'Wrong',
         'aria-label': 'Mark action ' + a.id + ' (' + a.action + ' of ' + r.name + ') as wrong',
         onclick: () => startWrong(a.id, a.action + ' of ' + r.name) }) : null))
