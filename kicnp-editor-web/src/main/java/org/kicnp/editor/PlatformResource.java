@@ -105,12 +105,7 @@ final class PlatformResource implements AutoCloseable {
         given.fields().forEachRemaining(e -> args.put(e.getKey(), e.getValue().isValueNode()
                 ? e.getValue().asText() : e.getValue().toString()));
         String id = call(() -> port.send(robot, action, Map.copyOf(args)));
-        Map<String, Object> row = commands.sent(id, robot, action, args);
-        EventHub hub = hub();
-        if (hub != null) {
-            hub.publish("feedback", row);
-        }
-        return row;
+        return published(commands.sent(id, robot, action, args));
     }
 
     /** {@code GET /api/commands}: recent commands, newest first. */
@@ -130,12 +125,7 @@ final class PlatformResource implements AutoCloseable {
             port.markWrong(id, reason);
             return null;
         });
-        Map<String, Object> row = commands.wrong(id, reason);
-        EventHub hub = hub();
-        if (hub != null) {
-            hub.publish("feedback", row);
-        }
-        return row;
+        return published(commands.wrong(id, reason));
     }
 
     /** {@code POST /api/actions/{id}/stop}: {@code {reason}} (optional): the action is cancelled, the robot halts. */
@@ -147,7 +137,11 @@ final class PlatformResource implements AutoCloseable {
             port.stop(id, reason);
             return null;
         });
-        Map<String, Object> row = commands.stopAsked(id, reason);
+        return published(commands.stopAsked(id, reason));
+    }
+
+    /** Pushes a command's row as it now is to the page's live events ({@code feedback}); answers the row. */
+    private Map<String, Object> published(Map<String, Object> row) {
         EventHub hub = hub();
         if (hub != null) {
             hub.publish("feedback", row);

@@ -137,11 +137,8 @@ class RobotAgentEndToEndTest {
 
     @Test
     void aUserCancelsScoutsGoTo_theSimulatorHaltsScout_andTheCommandFailsAsCancelled() throws Exception {
-        connect(new ScoutAgent(options("scout", AgentKind.ROBOT), world));
-        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
-        world.call(new SimRequest.SetTimeScale(1));
-        CommandTicket go = alice.command("scout", "ScoutGoTo", Map.of("x", "1", "y", "1"));
-        waitUntil(() -> go.feedback().stream().anyMatch(f -> f.stage() == FeedbackStage.PROGRESS));
+        UserAgent alice = scoutAndAlice();
+        CommandTicket go = scoutUnderWay(alice);
 
         alice.cancel("scout", go.command().id(), "the user changed her mind");
 
@@ -154,11 +151,8 @@ class RobotAgentEndToEndTest {
 
     @Test
     void aCancelAndANewCommandAtOnce_theNewOneWaitsForScoutToHalt_thenRuns() throws Exception {
-        connect(new ScoutAgent(options("scout", AgentKind.ROBOT), world));
-        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
-        world.call(new SimRequest.SetTimeScale(1));
-        CommandTicket go = alice.command("scout", "ScoutGoTo", Map.of("x", "1", "y", "1"));
-        waitUntil(() -> go.feedback().stream().anyMatch(f -> f.stage() == FeedbackStage.PROGRESS));
+        UserAgent alice = scoutAndAlice();
+        CommandTicket go = scoutUnderWay(alice);
 
         // A preemption, as the platform sends one: the cancel, then at once the new goal (no wait for the cancel's end).
         alice.cancel("scout", go.command().id(), "go elsewhere");
@@ -167,6 +161,21 @@ class RobotAgentEndToEndTest {
         assertThat(elsewhere.result(WAIT)).contains("\"distance_error_m\"");
         assertThatThrownBy(() -> go.result(WAIT)).isInstanceOf(ActionFailedException.class)
                 .hasMessage("cancelled: go elsewhere (asked by 'alice')");
+    }
+
+    /** Scout's agent and the user agent alice, connected, the simulator in real time. */
+    private UserAgent scoutAndAlice() throws Exception {
+        connect(new ScoutAgent(options("scout", AgentKind.ROBOT), world));
+        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
+        world.call(new SimRequest.SetTimeScale(1));
+        return alice;
+    }
+
+    /** Alice sends Scout to (1, 1), a trip of several seconds; answers once Scout reports progress. */
+    private static CommandTicket scoutUnderWay(UserAgent alice) throws Exception {
+        CommandTicket go = alice.command("scout", "ScoutGoTo", Map.of("x", "1", "y", "1"));
+        waitUntil(() -> go.feedback().stream().anyMatch(f -> f.stage() == FeedbackStage.PROGRESS));
+        return go;
     }
 
     @Test

@@ -52,6 +52,42 @@ class PlatformTest {
         }
     }
 
+    /** Robovie, whose sentences go on until it is told to stop; other commands end at once. */
+    static final class TalkingRobovie extends AgentBase {
+        final LinkedBlockingQueue<Command> says = new LinkedBlockingQueue<>();
+        /** Each cancel heard: "command id: reason". */
+        final List<String> cancels = new java.util.concurrent.CopyOnWriteArrayList<>();
+
+        TalkingRobovie(Platform platform) {
+            super(AgentOptions.of("127.0.0.1", platform.gatewayPort(), "robovie", AgentKind.ROBOT,
+                    platform.token("robovie")));
+        }
+
+        @Override protected void onCommand(Command command, ActionHandle handle) {
+            handle.started();
+            if (command.action().equals("say")) {
+                says.add(command);
+            } else {
+                handle.ended("done");
+            }
+        }
+
+        @Override protected void onCancel(ActionHandle handle, String reason) {
+            cancels.add(handle.command().id() + ": " + reason);
+            super.onCancel(handle, reason);
+        }
+
+        /** Starts Robovie and {@code user}; User A walks in; answers the sentence Robovie then starts saying. */
+        Command firstSentenceTo(UserAgent user) throws InterruptedException {
+            startAndAwait(Duration.ofSeconds(10));
+            user.startAndAwait(Duration.ofSeconds(10));
+            newUserA(user);
+            Command say = says.poll(20, TimeUnit.SECONDS);
+            assertThat(say).as("Robovie's first sentence").isNotNull();
+            return say;
+        }
+    }
+
     @Test
     void serve_whenAStimulusIsAsserted_theRobotReceivesTheCommandAndItsFeedbackEndsTheAction() throws Exception {
         Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
@@ -196,36 +232,15 @@ class PlatformTest {
     @Test
     void serve_whenTheEngineCancelsAnAction_theRobotIsAskedToStop() throws Exception {
         Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
-        List<String> cancels = new java.util.concurrent.CopyOnWriteArrayList<>();
-        LinkedBlockingQueue<Command> says = new LinkedBlockingQueue<>();
         try (Platform platform = Platform.start(PlatformConfig.of(kb).withEphemeralPorts());
-             AgentBase robovie = new AgentBase(AgentOptions.of("127.0.0.1", platform.gatewayPort(), "robovie",
-                     AgentKind.ROBOT, platform.token("robovie"))) {
-                 @Override protected void onCommand(Command command, ActionHandle handle) {
-                     handle.started();
-                     if (command.action().equals("say")) {
-                         says.add(command); // Robovie keeps talking until it is told to stop
-                     } else {
-                         handle.ended("done");
-                     }
-                 }
-
-                 @Override protected void onCancel(ActionHandle handle, String reason) {
-                     cancels.add(handle.command().id() + ": " + reason);
-                     super.onCancel(handle, reason);
-                 }
-             };
+             TalkingRobovie robovie = new TalkingRobovie(platform);
              UserAgent user = user(platform)) {
-            robovie.startAndAwait(Duration.ofSeconds(10));
-            user.startAndAwait(Duration.ofSeconds(10));
-            newUserA(user);
-            Command say = says.poll(20, TimeUnit.SECONDS);
-            assertThat(say).isNotNull();
+            Command say = robovie.firstSentenceTo(user);
 
             assertThat(platform.engine().cancelAction(say.id(), "the user walked away")).isTrue();
 
-            await("Robovie is asked to stop", () -> !cancels.isEmpty());
-            assertThat(cancels).containsExactly(say.id() + ": the user walked away");
+            await("Robovie is asked to stop", () -> !robovie.cancels.isEmpty());
+            assertThat(robovie.cancels).containsExactly(say.id() + ": the user walked away");
             assertThat(platform.engine().actionStatus(say.id())).contains(org.kicnp.inference.Action.Status.FAILED);
             await("the cancel is in the event log", () -> {
                 try {
@@ -241,44 +256,23 @@ class PlatformTest {
     @Test
     void editorStop_ofTheEnginesActionAndOfATeleOperatedCommand_theRobotIsAskedToStopBoth() throws Exception {
         Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
-        List<String> cancels = new java.util.concurrent.CopyOnWriteArrayList<>();
-        LinkedBlockingQueue<Command> says = new LinkedBlockingQueue<>();
         try (Platform platform = Platform.start(PlatformConfig.of(kb).withEphemeralPorts());
-             AgentBase robovie = new AgentBase(AgentOptions.of("127.0.0.1", platform.gatewayPort(), "robovie",
-                     AgentKind.ROBOT, platform.token("robovie"))) {
-                 @Override protected void onCommand(Command command, ActionHandle handle) {
-                     handle.started();
-                     if (command.action().equals("say")) {
-                         says.add(command); // Robovie keeps talking until it is told to stop
-                     } else {
-                         handle.ended("done");
-                     }
-                 }
-
-                 @Override protected void onCancel(ActionHandle handle, String reason) {
-                     cancels.add(handle.command().id() + ": " + reason);
-                     super.onCancel(handle, reason);
-                 }
-             };
+             TalkingRobovie robovie = new TalkingRobovie(platform);
              UserAgent user = user(platform)) {
-            robovie.startAndAwait(Duration.ofSeconds(10));
-            user.startAndAwait(Duration.ofSeconds(10));
-            newUserA(user);
-            Command question = says.poll(20, TimeUnit.SECONDS);
-            assertThat(question).isNotNull();
+            Command question = robovie.firstSentenceTo(user);
 
             platform.teleOperation().stop(question.id(), "too long");
 
             assertThat(platform.engine().actionStatus(question.id()))
                     .contains(org.kicnp.inference.Action.Status.FAILED);
-            await("Robovie is asked to stop the engine's question", () -> !cancels.isEmpty());
-            assertThat(cancels).containsExactly(question.id() + ": too long (asked in the editor)");
+            await("Robovie is asked to stop the engine's question", () -> !robovie.cancels.isEmpty());
+            assertThat(robovie.cancels).containsExactly(question.id() + ": too long (asked in the editor)");
 
             String tele = platform.teleOperation().send("robovie", "say", Map.of("text", "la la la"));
-            await("Robovie says the tele-operated line", () -> says.stream().anyMatch(c -> c.id().equals(tele)));
+            await("Robovie says the tele-operated line", () -> robovie.says.stream().anyMatch(c -> c.id().equals(tele)));
             platform.teleOperation().stop(tele, "quiet please");
-            await("Robovie is asked to stop the tele-operated line", () -> cancels.size() == 2);
-            assertThat(cancels.get(1)).isEqualTo(tele + ": quiet please (asked in the editor)");
+            await("Robovie is asked to stop the tele-operated line", () -> robovie.cancels.size() == 2);
+            assertThat(robovie.cancels.get(1)).isEqualTo(tele + ": quiet please (asked in the editor)");
             await("the tele-operated line is over", () -> {
                 try {
                     platform.teleOperation().stop(tele, "again");
