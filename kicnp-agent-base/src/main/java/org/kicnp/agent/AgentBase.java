@@ -52,8 +52,8 @@ public abstract class AgentBase implements AutoCloseable {
     private final MessageCodec codec = new MessageCodec();
     private final Map<String, CompletableFuture<Message>> pending = new ConcurrentHashMap<>();
     private final Map<String, CommandTicket> tickets = new ConcurrentHashMap<>();
-    /** The commands this (robot) agent is running, by id, so that a cancel finds its handle. */
-    private final Map<String, ActionHandle> running = new ConcurrentHashMap<>();
+    /** The commands this (robot) agent runs, each through {@link #onCommand} and, on a cancel, {@link #onCancel}. */
+    private final CommandRunner commands;
     private final Set<String> subscriptions = ConcurrentHashMap.newKeySet();
     private final AtomicLong ids = new AtomicLong();
     /**
@@ -81,6 +81,7 @@ public abstract class AgentBase implements AutoCloseable {
 
     protected AgentBase(AgentOptions options) {
         this.options = requireNonNull(options, "options");
+        this.commands = new CommandRunner(options.name(), this::onCommand, this::onCancel, this::send);
     }
 
     // ---- what a subclass overrides ----
@@ -426,7 +427,7 @@ public abstract class AgentBase implements AutoCloseable {
         while (!closed) {
             Message m = c.read();
             switch (m) {
-                case Message.Command cmd -> Thread.ofVirtual().name("command-" + cmd.id()).start(() -> runCommand(cmd));
+                case Message.Command cmd -> commands.command(cmd);
                 case Message.Feedback f -> {
                     CommandTicket t = f.stage().terminal() ? tickets.remove(f.id()) : tickets.get(f.id());
                     if (t != null) {
@@ -458,61 +459,9 @@ public abstract class AgentBase implements AutoCloseable {
                 case Message.Unsubscribe x -> LOG.warn("Agent '{}' ignores an unexpected unsubscribe.", name());
                 case Message.Push x -> LOG.warn("Agent '{}' ignores an unexpected push.", name());
                 case Message.Pull x -> LOG.warn("Agent '{}' ignores an unexpected pull.", name());
-                case Message.Cancel x -> {
-                    ActionHandle h = running.get(x.command());
-                    if (h == null || h.isDone()) {
-                        LOG.debug("Agent '{}': cancel of '{}', which is not running.", name(), x.command());
-                    } else if (!h.cancelRequested(x.reason())) {
-                        LOG.debug("Agent '{}': '{}' is already being cancelled.", name(), x.command());
-                    } else {
-                        Thread.ofVirtual().name("cancel-" + x.command()).start(() -> runCancel(h, x.reason()));
-                    }
-                }
+                case Message.Cancel x -> commands.cancel(x);
                 case Message.Prove x -> LOG.warn("Agent '{}' ignores an unexpected prove.", name());
                 case Message.Why x -> LOG.warn("Agent '{}' ignores an unexpected why.", name());
-            }
-        }
-    }
-
-    private void runCancel(ActionHandle handle, String reason) {
-        try {
-            onCancel(handle, reason);
-        } catch (NotConnectedException e) {
-            LOG.info("Agent '{}' lost its connection while cancelling '{}'.", name(), handle.command().id());
-        } catch (RuntimeException e) {
-            LOG.warn("Agent '{}' failed to cancel '{}'.", name(), handle.command().id(), e);
-            // As for a command whose onCommand throws: the command ends, rather than stay in flight for good.
-            try {
-                if (!handle.isDone()) {
-                    handle.cancelled(reason + "; agent '" + name() + "' failed while stopping: " + e.getMessage());
-                }
-            } catch (NotConnectedException lost) {
-                LOG.info("Agent '{}' could not report the cancel of '{}': {}", name(), handle.command().id(),
-                        lost.getMessage());
-            }
-        }
-    }
-
-    private void runCommand(Command cmd) {
-        ActionHandle handle = new ActionHandle(cmd, f -> {
-            if (f.stage().terminal()) {
-                running.remove(cmd.id());
-            }
-            send(f);
-        });
-        running.put(cmd.id(), handle);
-        try {
-            onCommand(cmd, handle);
-        } catch (NotConnectedException e) {
-            LOG.info("Agent '{}' lost its connection during command '{}'; the server fails it.", name(), cmd.id());
-        } catch (RuntimeException e) {
-            LOG.warn("Agent '{}' failed on command '{}'.", name(), cmd.id(), e);
-            try {
-                if (!handle.isDone()) {
-                    handle.failed("Agent '" + name() + "' failed: " + e.getMessage());
-                }
-            } catch (NotConnectedException lost) {
-                LOG.info("Agent '{}' could not report the failure of '{}': {}", name(), cmd.id(), lost.getMessage());
             }
         }
     }

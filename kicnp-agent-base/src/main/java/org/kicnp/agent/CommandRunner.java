@@ -1,0 +1,106 @@
+package org.kicnp.agent;
+
+import static java.util.Objects.requireNonNull;
+
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.BiConsumer;
+import org.kicnp.protocol.Message;
+import org.kicnp.protocol.Message.Command;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The robot side of an {@link AgentBase}: runs each command the server sends on a virtual thread of its own through
+ * the agent's {@code onCommand}, with an {@link ActionHandle} whose feedback goes to the server, and keeps the
+ * commands in flight so that a cancel finds its handle and runs the agent's {@code onCancel} once. A handler that
+ * throws ends its command (failed, or cancelled) rather than leave it in flight for good.
+ */
+final class CommandRunner {
+    /** The agent's own logger category, so that logging set up for the SDK still covers these lines. */
+    private static final Logger LOG = LoggerFactory.getLogger(AgentBase.class);
+
+    private final String agent;
+    private final BiConsumer<Command, ActionHandle> onCommand;
+    private final BiConsumer<ActionHandle, String> onCancel;
+    private final ActionHandle.Sender sender;
+    /** The commands running, by id, so that a cancel finds its handle. */
+    private final Map<String, ActionHandle> running = new ConcurrentHashMap<>();
+
+    /**
+     * @param agent     the agent's name, for log lines and the failures it reports
+     * @param onCommand the agent's command handler
+     * @param onCancel  the agent's cancel handler
+     * @param sender    where feedback goes (the agent's current connection)
+     */
+    CommandRunner(String agent, BiConsumer<Command, ActionHandle> onCommand, BiConsumer<ActionHandle, String> onCancel,
+                  ActionHandle.Sender sender) {
+        this.agent = requireNonNull(agent, "agent");
+        this.onCommand = requireNonNull(onCommand, "onCommand");
+        this.onCancel = requireNonNull(onCancel, "onCancel");
+        this.sender = requireNonNull(sender, "sender");
+    }
+
+    /** Runs a command from the server, on a virtual thread of its own; returns at once. */
+    void command(Command cmd) {
+        Thread.ofVirtual().name("command-" + cmd.id()).start(() -> run(cmd));
+    }
+
+    /**
+     * Asks a running command to stop: its handle records the reason and the agent's {@code onCancel} runs, on a
+     * virtual thread of its own, unless the command is not running or is being cancelled already.
+     */
+    void cancel(Message.Cancel x) {
+        ActionHandle h = running.get(x.command());
+        if (h == null || h.isDone()) {
+            LOG.debug("Agent '{}': cancel of '{}', which is not running.", agent, x.command());
+        } else if (!h.cancelRequested(x.reason())) {
+            LOG.debug("Agent '{}': '{}' is already being cancelled.", agent, x.command());
+        } else {
+            Thread.ofVirtual().name("cancel-" + x.command()).start(() -> runCancel(h, x.reason()));
+        }
+    }
+
+    private void run(Command cmd) {
+        ActionHandle handle = new ActionHandle(cmd, f -> {
+            if (f.stage().terminal()) {
+                running.remove(cmd.id());
+            }
+            sender.send(f);
+        });
+        running.put(cmd.id(), handle);
+        try {
+            onCommand.accept(cmd, handle);
+        } catch (NotConnectedException e) {
+            LOG.info("Agent '{}' lost its connection during command '{}'; the server fails it.", agent, cmd.id());
+        } catch (RuntimeException e) {
+            LOG.warn("Agent '{}' failed on command '{}'.", agent, cmd.id(), e);
+            try {
+                if (!handle.isDone()) {
+                    handle.failed("Agent '" + agent + "' failed: " + e.getMessage());
+                }
+            } catch (NotConnectedException lost) {
+                LOG.info("Agent '{}' could not report the failure of '{}': {}", agent, cmd.id(), lost.getMessage());
+            }
+        }
+    }
+
+    private void runCancel(ActionHandle handle, String reason) {
+        try {
+            onCancel.accept(handle, reason);
+        } catch (NotConnectedException e) {
+            LOG.info("Agent '{}' lost its connection while cancelling '{}'.", agent, handle.command().id());
+        } catch (RuntimeException e) {
+            LOG.warn("Agent '{}' failed to cancel '{}'.", agent, handle.command().id(), e);
+            // As for a command whose onCommand throws: the command ends, rather than stay in flight for good.
+            try {
+                if (!handle.isDone()) {
+                    handle.cancelled(reason + "; agent '" + agent + "' failed while stopping: " + e.getMessage());
+                }
+            } catch (NotConnectedException lost) {
+                LOG.info("Agent '{}' could not report the cancel of '{}': {}", agent, handle.command().id(),
+                        lost.getMessage());
+            }
+        }
+    }
+}
