@@ -36,6 +36,15 @@ public final class GraalScriptHost implements ScriptHost {
         return runtime.test(compile(frame, slot, source), adapt(source, globals));
     }
 
+    /** Parses the script into the runtime's cache, under the id its runs use; a syntax error is left to its run. */
+    @Override public void prepare(String frame, String slot, String source) {
+        try {
+            compile(frame, slot, source);
+        } catch (RuntimeException e) {
+            // A script that does not parse (or a runtime closed meanwhile): its run reports it, with the firing.
+        }
+    }
+
     private CompiledScript compile(String frame, String slot, String source) {
         return runtime.compile(new ScriptId(frame, slot), source);
     }

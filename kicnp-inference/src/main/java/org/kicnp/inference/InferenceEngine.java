@@ -159,6 +159,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
             kb.addListener(listener);
             inbox.clear();
             forward.start();
+            scripts.prepare(forward.rules());
         } finally {
             lock.unlock();
         }

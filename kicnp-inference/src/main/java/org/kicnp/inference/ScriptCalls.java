@@ -138,6 +138,27 @@ final class ScriptCalls {
         return Collections.unmodifiableMap(m);
     }
 
+    /**
+     * Gets the rules' scripts ready ahead of their first run ({@link ScriptHost#prepare}), one after another on one
+     * background thread, under the ids their runs use: each frame's {@code onInstantiate} and {@code onDestroy} and
+     * its script conditions. Returns at once; a firing that comes first parses its script itself, as before.
+     */
+    void prepare(List<Rule> rules) {
+        List<String[]> todo = new ArrayList<>();
+        for (Rule r : rules) {
+            r.onInstantiate().ifPresent(src -> todo.add(new String[] {r.frame(), "onInstantiate", src}));
+            kb.value(r.frame(), "onDestroy").ifPresent(v -> todo.add(new String[] {r.frame(), "onDestroy", v.text()}));
+            for (SlotPattern p : r.patterns()) {
+                if (p.condition() instanceof org.kicnp.core.Condition.Script s) {
+                    todo.add(new String[] {r.frame(), p.slot(), s.source()});
+                }
+            }
+        }
+        if (!todo.isEmpty()) {
+            Thread.ofVirtual().name("prepare-scripts").start(() -> todo.forEach(t -> host.prepare(t[0], t[1], t[2])));
+        }
+    }
+
     /** Why a script condition of the binding fails, if one does: false, or it threw. */
     Optional<String> conditionFails(Rule r, Map<String, String> binding) {
         for (SlotPattern p : r.patterns()) {

@@ -25,4 +25,12 @@ public interface ScriptHost {
 
     /** Evaluates a script condition to true or false. */
     boolean test(String frame, String slot, String source, Map<String, Object> globals);
+
+    /**
+     * Gets a script ready ahead of its first run (parses it, for a host that parses), so that run does not pay for
+     * it. Called from a background thread, possibly while scripts run; a script that does not parse is left for its
+     * run to report. Does nothing by default.
+     */
+    default void prepare(String frame, String slot, String source) {
+    }
 }

@@ -1,6 +1,7 @@
 package org.kicnp.inference;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.nio.file.Path;
 import java.time.Duration;
@@ -100,6 +101,49 @@ class ScriptIntegrationTest {
                 .slot(Slot.ofValue("onInstantiate", DataType.STRING, Value.of(onInstantiate))).build());
         kb.add(Frame.instance("m1", "Mouth").build());
         return kb;
+    }
+
+    @Test
+    void engineStart_preparesEveryRulesScripts_inTheBackground_underTheIdsTheirRunsUse() throws Exception {
+        KnowledgeBase kb = small("sendmsg(s.mMouth, 'hello ' + s.mUser.name)", "js: s.mUser.age > 3");
+        kb.replace(kb.require("Talk").withSlot(Slot.ofValue("onDestroy", DataType.STRING, Value.of("log('bye')"))));
+        kb.add(Frame.classFrame("Shout").parent("Talk").build()); // inherits the scripts: prepared under its own name
+        java.util.concurrent.LinkedBlockingQueue<String> prepared = new java.util.concurrent.LinkedBlockingQueue<>();
+        ScriptHost recording = new ScriptHost() {
+            @Override public Object run(String frame, String slot, String source, Map<String, Object> globals) {
+                return null;
+            }
+
+            @Override public boolean test(String frame, String slot, String source, Map<String, Object> globals) {
+                return true;
+            }
+
+            @Override public void prepare(String frame, String slot, String source) {
+                prepared.add(frame + "." + slot + ": " + source);
+            }
+        };
+
+        try (InferenceEngine e = InferenceEngine.builder(kb).scripts(recording).build()) {
+            List<String> seen = new ArrayList<>();
+            for (int i = 0; i < 6; i++) {
+                seen.add(prepared.poll(10, java.util.concurrent.TimeUnit.SECONDS));
+            }
+            assertThat(seen).containsExactlyInAnyOrder(
+                    "Talk.onInstantiate: sendmsg(s.mMouth, 'hello ' + s.mUser.name)", "Talk.onDestroy: log('bye')",
+                    "Talk.mUser: s.mUser.age > 3",
+                    "Shout.onInstantiate: sendmsg(s.mMouth, 'hello ' + s.mUser.name)", "Shout.onDestroy: log('bye')",
+                    "Shout.mUser: s.mUser.age > 3");
+        }
+    }
+
+    @Test
+    void graalHostPrepare_ofAScriptThatDoesNotParse_leavesItToItsRun() {
+        GraalScriptHost host = new GraalScriptHost(runtime);
+
+        host.prepare("Talk", "onInstantiate", "sendmsg(");
+
+        assertThatThrownBy(() -> host.run("Talk", "onInstantiate", "sendmsg(", Map.of()))
+                .hasMessageContaining("Talk");
     }
 
     @Test
