@@ -357,7 +357,13 @@ final class ForwardChainer {
             Frame.Builder b = Frame.instance(name, r.frame()).provenance(Provenance.RUNTIME);
             full.forEach((slot, fact) -> b.slot(Slot.builder(slot, DataType.INSTANCE).value(Value.ref(fact)).build()));
             try {
-                kb.add(b.build());
+                Frame instance = b.build();
+                if (full.size() == refs.length) {
+                    // Its slots hold the required slots' instances in order: the facts of refs, resolved already.
+                    record.links = refs.clone();
+                    record.linksOf = instance;
+                }
+                kb.add(instance);
                 made.added(record);
                 break;
             } catch (KnowledgeException e) {
