@@ -20,7 +20,7 @@ import org.kicnp.core.Value;
  */
 final class FactView implements Conditions.Reader {
     private final KnowledgeBase kb;
-    private final NameTable<Fact> facts = new NameTable<>();
+    private final FactTable facts = new FactTable();
 
     /** What the engine knows of one instance. Fields are null until needed. */
     static final class Fact {
@@ -49,7 +49,7 @@ final class FactView implements Conditions.Reader {
         /** Set when the fact leaves the view: a link to it is stale (its name may come back as another fact). */
         boolean gone;
 
-        private Fact(String name) {
+        Fact(String name) {
             this.name = name;
         }
 
@@ -145,7 +145,7 @@ final class FactView implements Conditions.Reader {
 
     /** The fact of that name, made (without a frame) when there is none yet. */
     Fact touch(String name) {
-        return facts.computeIfAbsent(name, Fact::new);
+        return facts.touch(name);
     }
 
     /** The fact of that name, or null. */
