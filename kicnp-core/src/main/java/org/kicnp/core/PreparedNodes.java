@@ -99,6 +99,8 @@ final class PreparedNodes {
         for (Node n : nodes) {
             n.revision = version;
             index.put(n.name(), n);
+            n.liveIn = index;
+            n.frame.node = n;
         }
     }
 }
