@@ -4,19 +4,18 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.IdentityHashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
 
 /** Applies a validated batch's events to the nodes and their derived indexes. Runs under the write lock. */
 final class Indexer {
-    private final Map<String, Node> nodes;
+    private final NodeIndex nodes;
     /** Reused for the names each frame mentions. */
     private final List<String> refs;
     /** Frames the batch's frames refer to, at hand ({@link Node#find}); null: none. */
     private final Frame[] near;
 
-    private Indexer(Map<String, Node> nodes, List<String> refs, Frame[] near) {
+    private Indexer(NodeIndex nodes, List<String> refs, Frame[] near) {
         this.nodes = nodes;
         this.refs = refs;
         this.near = near;
@@ -26,7 +25,7 @@ final class Indexer {
      * @param refs an empty list to reuse
      * @param near frames the batch's frames may refer to, whose nodes are then reached without a look-up; or null
      */
-    static void apply(Map<String, Node> nodes, List<FrameEvent> events, long version, List<String> refs, Frame[] near) {
+    static void apply(NodeIndex nodes, List<FrameEvent> events, long version, List<String> refs, Frame[] near) {
         new Indexer(nodes, refs, near).apply(events, version);
     }
 

@@ -4,7 +4,6 @@ import static java.util.Objects.requireNonNull;
 
 import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -32,7 +31,7 @@ public final class KnowledgeBase {
     private static final Logger LOG = LoggerFactory.getLogger(KnowledgeBase.class);
 
     private final ReentrantReadWriteLock lock = new ReentrantReadWriteLock();
-    private final Map<String, Node> nodes = new LinkedHashMap<>();
+    private final NodeIndex nodes = new NodeIndex();
     /**
      * What validation has learnt of the classes (acyclic IS-A chains, inherited slot declarations), kept between
      * batches that change no class and dropped by any batch that does: adding an instance then costs a look-up.
@@ -340,7 +339,7 @@ public final class KnowledgeBase {
         }
     }
 
-    Map<String, Node> nodes() {
+    NodeIndex nodes() {
         return nodes;
     }
 

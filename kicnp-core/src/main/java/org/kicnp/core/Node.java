@@ -1,7 +1,5 @@
 package org.kicnp.core;
 
-import java.util.Map;
-
 /**
  * The knowledge base's bookkeeping for one frame: the frame itself, its revision, and the derived indexes
  * (children, every instance below a class, the frames that refer to it). Mutated only under the write lock. A
@@ -18,8 +16,10 @@ final class Node {
     NodeSet instances;
     /** Frames whose slots, parts or links mention this frame (A-kind-of is tracked by children). */
     NodeSet referrers;
+    /** Its place in the name index's order ({@link NodeIndex}); -1 when not in an index. */
+    int order = -1;
     /** The name index that holds this node now, or null before it is put there and once it is removed. */
-    Map<String, Node> liveIn;
+    NodeIndex liveIn;
 
     Node(Frame frame) {
         this.frame = frame;
@@ -61,7 +61,7 @@ final class Node {
      * it is {@code index.get(name)}: a frame's node is the one it was last made the frame of, and a node is in
      * {@code index} exactly while its {@link #liveIn} is {@code index}.
      */
-    static Node find(Map<String, Node> index, String name, Frame[] near) {
+    static Node find(NodeIndex index, String name, Frame[] near) {
         if (near != null) {
             for (Frame f : near) {
                 if (f != null) {

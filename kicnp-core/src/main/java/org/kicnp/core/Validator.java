@@ -19,7 +19,7 @@ final class Validator {
     private static final int CYCLE_CHECK_STEPS = 10_000;
 
     private final Map<String, Frame> staged;
-    private final Map<String, Node> base;
+    private final NodeIndex base;
     /** Frames known to have an acyclic IS-A chain in the view, by name. */
     private final Map<String, ClassInfo> classes;
     private final List<Problem> problems = new ArrayList<>(0);
@@ -39,15 +39,15 @@ final class Validator {
      *     (entries added here stay true), else an empty map for this batch
      * @param refs an empty list to reuse
      */
-    Validator(Map<String, Frame> staged, Map<String, Node> base, Map<String, ClassInfo> classes, List<String> refs) {
+    Validator(Map<String, Frame> staged, NodeIndex base, Map<String, ClassInfo> classes, List<String> refs) {
         this(staged, base, classes, refs, null);
     }
 
     /**
-     * As {@link #Validator(Map, Map, Map, List)}, with frames the batch's frames may refer to at hand: their
+     * As {@link #Validator(Map, NodeIndex, Map, List)}, with frames the batch's frames may refer to at hand: their
      * nodes are reached without looking their names up ({@link Node#find}; the view is the same).
      */
-    Validator(Map<String, Frame> staged, Map<String, Node> base, Map<String, ClassInfo> classes, List<String> refs,
+    Validator(Map<String, Frame> staged, NodeIndex base, Map<String, ClassInfo> classes, List<String> refs,
             Frame[] near) {
         this.staged = staged;
         this.base = base;
