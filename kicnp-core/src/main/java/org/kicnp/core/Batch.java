@@ -22,7 +22,7 @@ final class Batch {
         staged = single ? Map.of() : LinkedHashMap.newLinkedHashMap(size);
     }
 
-    static Batch stage(List<? extends Change> changes, Map<String, Node> nodes) {
+    static Batch stage(List<? extends Change> changes, NodeIndex nodes) {
         Batch b = new Batch(changes.size());
         List<Problem> problems = null;
         for (Change c : changes) {
@@ -96,7 +96,7 @@ final class Batch {
     }
 
     /** What the batch does, frame by frame; a put that changes nothing makes no event. */
-    List<FrameEvent> events(Map<String, Node> nodes) {
+    List<FrameEvent> events(NodeIndex nodes) {
         if (single) {
             if (staged.isEmpty()) {
                 return List.of();

@@ -23,6 +23,11 @@ public final class Frame {
     private final List<Slot> slots;
     private final Provenance provenance;
     private final int priority;
+    /**
+     * The knowledge-base node this frame was last made the frame of ({@link Node#find}): a short cut to it for a
+     * caller that refers to this frame, checked before use. Not part of the frame's value.
+     */
+    Node node;
 
     private Frame(Builder b) {
         this.name = b.name;

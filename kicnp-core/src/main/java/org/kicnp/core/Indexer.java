@@ -4,24 +4,29 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.IdentityHashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
 
 /** Applies a validated batch's events to the nodes and their derived indexes. Runs under the write lock. */
 final class Indexer {
-    private final Map<String, Node> nodes;
+    private final NodeIndex nodes;
     /** Reused for the names each frame mentions. */
     private final List<String> refs;
+    /** Frames the batch's frames refer to, at hand ({@link Node#find}); null: none. */
+    private final Frame[] near;
 
-    private Indexer(Map<String, Node> nodes, List<String> refs) {
+    private Indexer(NodeIndex nodes, List<String> refs, Frame[] near) {
         this.nodes = nodes;
         this.refs = refs;
+        this.near = near;
     }
 
-    /** @param refs an empty list to reuse */
-    static void apply(Map<String, Node> nodes, List<FrameEvent> events, long version, List<String> refs) {
-        new Indexer(nodes, refs).apply(events, version);
+    /**
+     * @param refs an empty list to reuse
+     * @param near frames the batch's frames may refer to, whose nodes are then reached without a look-up; or null
+     */
+    static void apply(NodeIndex nodes, List<FrameEvent> events, long version, List<String> refs, Frame[] near) {
+        new Indexer(nodes, refs, near).apply(events, version);
     }
 
     private void apply(List<FrameEvent> events, long version) {
@@ -33,6 +38,7 @@ final class Indexer {
             switch (e) {
                 case FrameEvent.Removed r -> {
                     Node n = nodes.remove(r.name());
+                    n.liveIn = null;
                     dropReferences(n, r.frame());
                     detach(n);
                 }
@@ -50,6 +56,7 @@ final class Indexer {
                         reattached.add(n);
                     }
                     n.frame = r.frame();
+                    r.frame().node = n;
                     n.revision = version;
                     touched.add(n);
                 }
@@ -57,6 +64,8 @@ final class Indexer {
                     Node n = new Node(a.frame());
                     n.revision = version;
                     nodes.put(a.name(), n);
+                    n.liveIn = nodes;
+                    a.frame().node = n;
                     attach.add(n);
                     touched.add(n);
                 }
@@ -87,7 +96,7 @@ final class Indexer {
             refs.clear();
             References.collect(n.frame, refs);
             for (int i = 0, count = refs.size(); i < count; i++) {
-                Node target = nodes.get(refs.get(i));
+                Node target = Node.find(nodes, refs.get(i), near);
                 if (target != null && target != n) {
                     target.referrers().add(n);
                 }

@@ -4,7 +4,6 @@ import static java.util.Objects.requireNonNull;
 
 import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -32,7 +31,7 @@ public final class KnowledgeBase {
     private static final Logger LOG = LoggerFactory.getLogger(KnowledgeBase.class);
 
     private final ReentrantReadWriteLock lock = new ReentrantReadWriteLock();
-    private final Map<String, Node> nodes = new LinkedHashMap<>();
+    private final NodeIndex nodes = new NodeIndex();
     /**
      * What validation has learnt of the classes (acyclic IS-A chains, inherited slot declarations), kept between
      * batches that change no class and dropped by any batch that does: adding an instance then costs a look-up.
@@ -246,6 +245,21 @@ public final class KnowledgeBase {
         return apply(List.of(new Change.Add(frame)));
     }
 
+    /**
+     * As {@link #add(Frame)}, for a frame that refers to frames the caller has at hand, read from this knowledge base
+     * or its events (an inference engine adding the instance a rule derived from the instances it matched): the
+     * checks and indexes reach the frames {@code referred} names through them instead of looking their names up.
+     * That is only a short cut: a frame of {@code referred} that this knowledge base does not hold now (it was
+     * removed, or never added here) is not used, its name is looked up as any other, and the outcome (the change
+     * made, or the same {@link BatchRejectedException}) is always that of {@code add(frame)}.
+     *
+     * @param referred frames {@code frame} may refer to; nulls are skipped
+     */
+    public ChangeSet add(Frame frame, Frame... referred) {
+        requireNonNull(referred, "referred");
+        return apply(List.of(new Change.Add(frame)), referred);
+    }
+
     public ChangeSet replace(Frame frame) {
         return apply(List.of(new Change.Replace(frame)));
     }
@@ -266,11 +280,16 @@ public final class KnowledgeBase {
      * @throws KnowledgeException when the commit log cannot make the batch durable
      */
     public ChangeSet apply(List<? extends Change> changes) {
+        return apply(changes, null);
+    }
+
+    /** As {@link #apply(List)}, with frames the batch's frames may refer to at hand ({@link Node#find}), or null. */
+    private ChangeSet apply(List<? extends Change> changes, Frame[] near) {
         requireNonNull(changes, "changes");
         ChangeSet committed;
         lock.writeLock().lock();
         try {
-            committed = commit(changes);
+            committed = commit(changes, near);
         } finally {
             lock.writeLock().unlock();
         }
@@ -320,7 +339,7 @@ public final class KnowledgeBase {
         }
     }
 
-    Map<String, Node> nodes() {
+    NodeIndex nodes() {
         return nodes;
     }
 
@@ -334,7 +353,8 @@ public final class KnowledgeBase {
         ChangeSet committed;
         lock.writeLock().lock();
         try {
-            committed = version == stagedAt ? publish(finish.get(), classesUnchanged, prepared) : commit(adds.get());
+            committed = version == stagedAt ? publish(finish.get(), classesUnchanged, prepared, null)
+                    : commit(adds.get(), null);
         } finally {
             lock.writeLock().unlock();
         }
@@ -352,23 +372,25 @@ public final class KnowledgeBase {
         listeners.remove(listener);
     }
 
-    private ChangeSet commit(List<? extends Change> changes) {
+    private ChangeSet commit(List<? extends Change> changes, Frame[] near) {
         Batch batch = Batch.stage(changes, nodes);
         boolean classesUnchanged = batch.classesUnchanged();
         Map<String, ClassInfo> known = classesUnchanged ? classes : HashMap.newHashMap(batch.staged().size());
-        List<Problem> problems = new Validator(batch.staged(), nodes, known, refs).validate();
+        List<Problem> problems = new Validator(batch.staged(), nodes, known, refs, near).validate();
         if (!problems.isEmpty()) {
             throw new BatchRejectedException(problems);
         }
-        return publish(batch.events(nodes), classesUnchanged, null);
+        return publish(batch.events(nodes), classesUnchanged, null, near);
     }
 
     /**
      * Makes a validated batch's events durable, applies them and queues them for the listeners.
      *
      * @param prepared the batch's nodes, built while it was staged, or null to index the events here
+     * @param near frames the batch's frames may refer to, at hand for the indexes ({@link Node#find}), or null
      */
-    private ChangeSet publish(List<FrameEvent> events, boolean classesUnchanged, PreparedNodes prepared) {
+    private ChangeSet publish(List<FrameEvent> events, boolean classesUnchanged, PreparedNodes prepared,
+            Frame[] near) {
         if (events.isEmpty()) {
             return new ChangeSet(version, events);
         }
@@ -388,7 +410,7 @@ public final class KnowledgeBase {
         if (prepared != null) {
             prepared.attach(nodes, version);
         } else {
-            Indexer.apply(nodes, events, version, refs);
+            Indexer.apply(nodes, events, version, refs, near);
         }
         ChangeSet cs = new ChangeSet(version, events);
         undelivered.add(cs);

@@ -16,6 +16,10 @@ final class Node {
     NodeSet instances;
     /** Frames whose slots, parts or links mention this frame (A-kind-of is tracked by children). */
     NodeSet referrers;
+    /** Its place in the name index's order ({@link NodeIndex}); -1 when not in an index. */
+    int order = -1;
+    /** The name index that holds this node now, or null before it is put there and once it is removed. */
+    NodeIndex liveIn;
 
     Node(Frame frame) {
         this.frame = frame;
@@ -49,5 +53,27 @@ final class Node {
 
     boolean hasChildren() {
         return children != null && !children.isEmpty();
+    }
+
+    /**
+     * The node of {@code name} in {@code index}: reached through a frame of {@code near} (frames a caller had at hand,
+     * nulls allowed) whose node {@code index} holds now, without looking the name up, or else looked up. Either way
+     * it is {@code index.get(name)}: a frame's node is the one it was last made the frame of, and a node is in
+     * {@code index} exactly while its {@link #liveIn} is {@code index}.
+     */
+    static Node find(NodeIndex index, String name, Frame[] near) {
+        if (near != null) {
+            for (Frame f : near) {
+                if (f != null) {
+                    String at = f.name();
+                    Node n = f.node;
+                    if (n != null && n.liveIn == index
+                            && (at == name || at.hashCode() == name.hashCode() && at.equals(name))) {
+                        return n;
+                    }
+                }
+            }
+        }
+        return index.get(name);
     }
 }

@@ -18,14 +18,14 @@ final class PreparedNodes {
     /** The revision of a node not yet in the knowledge base. */
     private static final long PENDING = -1;
 
-    private final Map<String, Node> base;
+    private final NodeIndex base;
     private final Map<String, Node> byName = new HashMap<>();
     private final List<Node> nodes = new ArrayList<>();
     /** Pairs (referrer, target) whose target is a node of the knowledge base, in the order found. */
     private final List<Node> baseReferences = new ArrayList<>();
     private final List<String> refs = new ArrayList<>();
 
-    PreparedNodes(Map<String, Node> base) {
+    PreparedNodes(NodeIndex base) {
         this.base = base;
     }
 
@@ -79,7 +79,7 @@ final class PreparedNodes {
     }
 
     /** Links the new nodes to the knowledge base's and puts them in {@code index}; under the write lock. */
-    void attach(Map<String, Node> index, long version) {
+    void attach(NodeIndex index, long version) {
         for (Node n : nodes) {
             Node p = n.parent;
             if (p != null && p.revision != PENDING) {
@@ -99,6 +99,8 @@ final class PreparedNodes {
         for (Node n : nodes) {
             n.revision = version;
             index.put(n.name(), n);
+            n.liveIn = index;
+            n.frame.node = n;
         }
     }
 }

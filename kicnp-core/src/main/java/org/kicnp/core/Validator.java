@@ -19,7 +19,7 @@ final class Validator {
     private static final int CYCLE_CHECK_STEPS = 10_000;
 
     private final Map<String, Frame> staged;
-    private final Map<String, Node> base;
+    private final NodeIndex base;
     /** Frames known to have an acyclic IS-A chain in the view, by name. */
     private final Map<String, ClassInfo> classes;
     private final List<Problem> problems = new ArrayList<>(0);
@@ -29,6 +29,8 @@ final class Validator {
     private List<Frame> suspects;
     /** Scratch list for the names a frame mentions, the knowledge base's (used under its write lock). */
     private final List<String> refs;
+    /** Frames the batch's frames refer to, at hand ({@link Node#find}); null: none. */
+    private final Frame[] near;
 
     /**
      * @param staged touched names to their frame after the batch, or null where the batch removes the frame
@@ -37,11 +39,21 @@ final class Validator {
      *     (entries added here stay true), else an empty map for this batch
      * @param refs an empty list to reuse
      */
-    Validator(Map<String, Frame> staged, Map<String, Node> base, Map<String, ClassInfo> classes, List<String> refs) {
+    Validator(Map<String, Frame> staged, NodeIndex base, Map<String, ClassInfo> classes, List<String> refs) {
+        this(staged, base, classes, refs, null);
+    }
+
+    /**
+     * As {@link #Validator(Map, NodeIndex, Map, List)}, with frames the batch's frames may refer to at hand: their
+     * nodes are reached without looking their names up ({@link Node#find}; the view is the same).
+     */
+    Validator(Map<String, Frame> staged, NodeIndex base, Map<String, ClassInfo> classes, List<String> refs,
+            Frame[] near) {
         this.staged = staged;
         this.base = base;
         this.classes = classes;
         this.refs = refs;
+        this.near = near;
     }
 
     /** The frame of that name after the batch, or null where there is none. */
@@ -51,6 +63,16 @@ final class Validator {
             return f;
         }
         Node n = base.get(name);
+        return n == null ? null : n.frame;
+    }
+
+    /** As {@link #view}, for a name a frame refers to: reached through the frames at hand where one has it. */
+    private Frame viewReferred(String name) {
+        Frame f = staged.get(name);
+        if (f != null || staged.containsKey(name)) {
+            return f;
+        }
+        Node n = Node.find(base, name, near);
         return n == null ? null : n.frame;
     }
 
@@ -232,7 +254,7 @@ final class Validator {
             if (r.equals(f.name()) || refs.subList(0, i).contains(r)) {
                 continue;
             }
-            Frame target = view(r);
+            Frame target = viewReferred(r);
             if (target != null && target.provenance() == Provenance.RUNTIME) {
                 problems.add(Problem.of(f.name(), "Frame '" + f.name() + "' is kept on disk but refers to '" + r
                         + "', which exists only at run time; copy the values it needs instead."));
@@ -306,7 +328,7 @@ final class Validator {
     private void checkRefs(String frame, String slot, Value v, String instanceOf) {
         switch (v) {
             case Value.Ref r -> {
-                Frame target = view(r.frame());
+                Frame target = viewReferred(r.frame());
                 if (target == null) {
                     problems.add(Problem.of(frame, slot, where(slot, frame) + " refers to '" + r.frame()
                             + "', which is not defined."));

@@ -14,7 +14,8 @@ import org.kicnp.core.Value;
  * here: the caller passes what they evaluate to.
  */
 final class Conditions {
-    private static final int MAX_PATH = 32;
+    /** The most steps of a path that are followed; the rest are not read. */
+    static final int MAX_PATH = 32;
 
     /** Reads a slot of a frame: empty when the frame or the value is missing. */
     interface Reader {

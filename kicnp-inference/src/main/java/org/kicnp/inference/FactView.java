@@ -20,7 +20,7 @@ import org.kicnp.core.Value;
  */
 final class FactView implements Conditions.Reader {
     private final KnowledgeBase kb;
-    private final NameTable<Fact> facts = new NameTable<>();
+    private final FactTable facts = new FactTable();
 
     /** What the engine knows of one instance. Fields are null until needed. */
     static final class Fact {
@@ -39,8 +39,17 @@ final class FactView implements Conditions.Reader {
         Derivation derivation;
         /** The derived instances that rest on this one, in the order they were made; a short list or a set. */
         Collection<String> dependents;
+        /**
+         * The facts the slots of {@link #linksOf} refer to, by the slot's position in its frame (null: not resolved
+         * yet); valid while {@link #frame} is {@code linksOf}. Lets a path step from fact to fact without looking the
+         * next name up again ({@link FactView#follow}).
+         */
+        Fact[] links;
+        Frame linksOf;
+        /** Set when the fact leaves the view: a link to it is stale (its name may come back as another fact). */
+        boolean gone;
 
-        private Fact(String name) {
+        Fact(String name) {
             this.name = name;
         }
 
@@ -136,7 +145,7 @@ final class FactView implements Conditions.Reader {
 
     /** The fact of that name, made (without a frame) when there is none yet. */
     Fact touch(String name) {
-        return facts.computeIfAbsent(name, Fact::new);
+        return facts.touch(name);
     }
 
     /** The fact of that name, or null. */
@@ -145,7 +154,10 @@ final class FactView implements Conditions.Reader {
     }
 
     void remove(String name) {
-        facts.remove(name);
+        Fact f = facts.remove(name);
+        if (f != null) {
+            f.gone = true;
+        }
     }
 
     /** The assertion stamp of an instance; 0 when the engine has not stamped it. */
@@ -164,15 +176,65 @@ final class FactView implements Conditions.Reader {
     }
 
     /**
-     * The value {@code path} reaches from a fact, the first step read from the fact's own frame without a look-up
-     * and the rest followed by {@code conditions}.
+     * The value {@code path} reaches from a fact: what {@link Conditions#follow(Value, List)} reads from
+     * {@code Value.ref(fact.name)}. A step through a reference the fact's frame holds itself goes to the referred
+     * fact's record directly, resolved by name once per frame ({@link Fact#links}); any other step (an inherited
+     * value, a fact not in the view, a path longer than {@link Conditions#follow} reads) is read as that method reads
+     * it.
      */
     Optional<Value> follow(Fact fact, List<String> path, Conditions conditions) {
-        if (path.isEmpty()) {
+        int n = path.size();
+        if (n == 0) {
             return Optional.of(Value.ref(fact.name));
         }
-        Optional<Value> first = value(fact, fact.name, path.getFirst());
-        return path.size() == 1 || first.isEmpty() ? first : conditions.follow(first.get(), path, 1);
+        if (n > Conditions.MAX_PATH) {
+            Optional<Value> first = value(fact, fact.name, path.getFirst());
+            return first.isEmpty() ? first : conditions.follow(first.get(), path, 1);
+        }
+        Fact cur = fact;
+        for (int i = 0; i < n - 1; i++) {
+            Fact next = linked(cur, path.get(i));
+            if (next == null) {
+                Optional<Value> v = value(cur, cur.name, path.get(i));
+                return v.isEmpty() ? v : conditions.follow(v.get(), path, i + 1);
+            }
+            cur = next;
+        }
+        return value(cur, cur.name, path.get(n - 1));
+    }
+
+    /**
+     * The record of the instance that {@code slot}, held by the fact's own frame, refers to: the fact the view has
+     * under that name, from {@link Fact#links} when resolved before for this frame. Null when the slot is not the
+     * frame's own with a value, its value is not a reference, or the view has no fact of that name (the caller then
+     * reads the step by name).
+     */
+    private Fact linked(Fact f, String slot) {
+        Frame frame = f.frame;
+        if (frame == null) {
+            return null;
+        }
+        List<Slot> slots = frame.slots();
+        for (int j = 0; j < slots.size(); j++) {
+            Slot s = slots.get(j);
+            if (!s.name().equals(slot)) {
+                continue;
+            }
+            if (!(s.effectiveValue().orElse(null) instanceof Value.Ref r)) {
+                return null;
+            }
+            if (f.linksOf != frame) {
+                f.links = new Fact[slots.size()];
+                f.linksOf = frame;
+            }
+            Fact to = f.links[j];
+            if (to == null || to.gone) {
+                to = facts.get(r.frame());
+                f.links[j] = to;
+            }
+            return to;
+        }
+        return null;
     }
 
     /** As {@link #value(String, String)}, with the instance's record (may be null) at hand. */

@@ -357,7 +357,13 @@ final class ForwardChainer {
             Frame.Builder b = Frame.instance(name, r.frame()).provenance(Provenance.RUNTIME);
             full.forEach((slot, fact) -> b.slot(Slot.builder(slot, DataType.INSTANCE).value(Value.ref(fact)).build()));
             try {
-                kb.add(b.build());
+                Frame instance = b.build();
+                if (full.size() == refs.length) {
+                    // Its slots hold the required slots' instances in order: the facts of refs, resolved already.
+                    record.links = refs.clone();
+                    record.linksOf = instance;
+                }
+                kb.add(instance, framesOf(refs));
                 made.added(record);
                 break;
             } catch (KnowledgeException e) {
@@ -381,6 +387,15 @@ final class ForwardChainer {
                 removeQuietly(List.of(name), "its onInstantiate script failed");
             }
         }
+    }
+
+    /** The bound facts' frames as the engine last saw them (null where it has none): those the new instance names. */
+    private static Frame[] framesOf(FactView.Fact[] refs) {
+        Frame[] out = new Frame[refs.length];
+        for (int i = 0; i < refs.length; i++) {
+            out[i] = refs[i].frame;
+        }
+        return out;
     }
 
     /** The most recently asserted instance of a binding: the required slots' records, then any optional ones. */

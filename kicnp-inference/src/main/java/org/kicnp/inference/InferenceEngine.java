@@ -3,6 +3,7 @@ package org.kicnp.inference;
 import static java.util.Objects.requireNonNull;
 
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
@@ -189,7 +190,8 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
         lock.lock();
         try {
             int count = 0;
-            Map<String, Integer> perFrame = new HashMap<>();
+            // Firings per frame, for the limit's message: a counter each, not an Integer boxed per firing.
+            Map<String, int[]> perFrame = new HashMap<>();
             while (true) {
                 drain();
                 actions.checkTimeouts();
@@ -203,12 +205,12 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
                     continue;
                 }
                 count++;
-                perFrame.merge(next.get().rule().frame(), 1, Integer::sum);
+                perFrame.computeIfAbsent(next.get().rule().frame(), f -> new int[1])[0]++;
                 if (count > options.maxFirings()) {
                     forward.clearAgenda();
                     List<String> top = perFrame.entrySet().stream()
-                            .sorted(Map.Entry.<String, Integer>comparingByValue().reversed()).limit(3)
-                            .map(Map.Entry::getKey).toList();
+                            .sorted(Comparator.comparingInt((Map.Entry<String, int[]> e) -> e.getValue()[0]).reversed())
+                            .limit(3).map(Map.Entry::getKey).toList();
                     trace(new TraceEvent.LimitReached(options.maxFirings(), top));
                     throw new InferenceLimitException(options.maxFirings(), top);
                 }

@@ -59,4 +59,24 @@ class NameTableTest {
         assertThat(table.get("Triple-5")).isNull();
         assertThat(table.computeIfAbsent("Triple-5", k -> 1)).isEqualTo(1);
     }
+
+    @Test
+    void aNameWhoseHashIsZero_isKeptApartFromEmptySlotsAndFromANameOfHashOne() {
+        // "" and "f5a5a608" hash to 0, which the table stores as 1; "\u0001" hashes to 1.
+        assertThat("f5a5a608".hashCode()).isZero();
+        assertThat("\u0001".hashCode()).isEqualTo(1);
+        NameTable<String> table = new NameTable<>();
+        table.computeIfAbsent("f5a5a608", k -> "zero");
+        table.computeIfAbsent("\u0001", k -> "one");
+        table.computeIfAbsent("", k -> "empty");
+
+        assertThat(table.get("f5a5a608")).isEqualTo("zero");
+        assertThat(table.get("\u0001")).isEqualTo("one");
+        assertThat(table.get("")).isEqualTo("empty");
+        assertThat(table.remove("f5a5a608")).isEqualTo("zero");
+        assertThat(table.get("f5a5a608")).isNull();
+        assertThat(table.get("\u0001")).isEqualTo("one");
+        assertThat(table.get("")).isEqualTo("empty");
+        assertThat(table.size()).isEqualTo(2);
+    }
 }
