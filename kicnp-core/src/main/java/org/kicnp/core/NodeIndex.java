@@ -19,16 +19,14 @@ import java.util.NoSuchElementException;
  * each index counts the names of its number kept there, so a numbered name is looked for in the table only when its
  * index has such names. The array grows with the nodes it holds, not with the numbers.
  *
- * <p>The hash table is open addressing with linear probing, where a probe run reads only the array of hashes (sixteen
- * to a cache line; 0 marks an empty slot, so a stored hash is never 0) and each key sits beside its node, so a miss
- * touches one line and a hit or an insertion two, where a hash map's buckets and entry objects cost a line each and a
- * resize chases every entry. Removal shifts the following entries back (no tombstones).
+ * <p>The hash table is a {@link NameTable}: a probe run reads only an array of hashes and each name sits beside its
+ * node, so a miss touches one cache line and a hit or an insertion two, where a hash map's buckets and entry objects
+ * cost a line each and a resize chases every entry.
  *
  * <p>The insertion order is an array of the nodes with holes where nodes were removed, compacted once holes outnumber
  * nodes; each node knows its place ({@link Node#order}). Not thread-safe: the knowledge base guards it with its lock.
  */
 final class NodeIndex {
-    private static final int MIN_CAPACITY = 16;
     private static final int MIN_NUMBERED = 1024;
     /** Nodes of numbered names, at their number modulo the length. */
     private Node[] numbered = new Node[MIN_NUMBERED];
@@ -39,18 +37,12 @@ final class NodeIndex {
     /** Numbered names held: in the array, and in the hash table. */
     private int inArray;
     private int inTable;
-    private int[] hashes;
-    /** Slot {@code i}'s name at {@code 2i}, its node at {@code 2i + 1}. */
-    private Object[] entries;
-    private int shift;
+    /** Every other name, and numbered names whose index holds another node. */
+    private final NameTable<Node> table = new NameTable<>();
     private int size;
     private Node[] order = new Node[16];
     /** Places of {@code order} in use, holes included. */
     private int end;
-
-    NodeIndex() {
-        allocate(MIN_CAPACITY);
-    }
 
     int size() {
         return size;
@@ -66,7 +58,7 @@ final class NodeIndex {
     }
 
     Node get(String name) {
-        int number = numberOf(name);
+        int number = NameTable.numberOf(name);
         if (number >= 0) {
             int k = number & numbered.length - 1;
             Node at = numbered[k];
@@ -77,13 +69,12 @@ final class NodeIndex {
                 return null;
             }
         }
-        int i = slotOf(name, stored(name));
-        return hashes[i] == 0 ? null : (Node) entries[2 * i + 1];
+        return table.get(name);
     }
 
     /** Puts a node under a name: at the end of the order, or in the place of the node that name had. */
     void put(String name, Node n) {
-        int number = numberOf(name);
+        int number = NameTable.numberOf(name);
         if (number >= 0) {
             int k = number & numbered.length - 1;
             Node at = numbered[k];
@@ -103,25 +94,16 @@ final class NodeIndex {
                 return;
             }
         }
-        int h = stored(name);
-        int i = slotOf(name, h);
-        if (hashes[i] != 0) {
-            Node old = (Node) entries[2 * i + 1];
-            entries[2 * i + 1] = n;
+        Node old = table.put(name, n);
+        if (old != null) {
             takePlace(old, n);
             return;
         }
-        hashes[i] = h;
-        entries[2 * i] = name;
-        entries[2 * i + 1] = n;
         if (number >= 0) {
             spilled[number & numbered.length - 1]++;
             inTable++;
         }
         added(n);
-        if ((size - inArray) * 2 > hashes.length) {
-            allocate(hashes.length * 2);
-        }
         if (number >= 0 && (inArray + inTable) * 2 > numbered.length) {
             growNumbered();
         }
@@ -151,7 +133,7 @@ final class NodeIndex {
 
     /** Removes the node of that name; returns it, or null when there was none. */
     Node remove(String name) {
-        int number = numberOf(name);
+        int number = NameTable.numberOf(name);
         Node n = null;
         if (number >= 0) {
             int k = number & numbered.length - 1;
@@ -165,12 +147,10 @@ final class NodeIndex {
             }
         }
         if (n == null) {
-            int i = slotOf(name, stored(name));
-            if (hashes[i] == 0) {
+            n = table.remove(name);
+            if (n == null) {
                 return null;
             }
-            n = (Node) entries[2 * i + 1];
-            closeGap(i);
             if (number >= 0) {
                 spilled[number & numbered.length - 1]--;
                 inTable--;
@@ -260,111 +240,12 @@ final class NodeIndex {
             }
         }
         if (inTable > 0) {
-            for (int i = 0; i < hashes.length; i++) {
-                if (hashes[i] != 0) {
-                    int number = numberOf((String) entries[2 * i]);
-                    if (number >= 0) {
-                        spilled[number & mask]++;
-                    }
+            table.forEachKey(name -> {
+                int number = NameTable.numberOf(name);
+                if (number >= 0) {
+                    spilled[number & mask]++;
                 }
-            }
-        }
-    }
-
-    /**
-     * The number a name ends in after its last {@code -}: one to nine digits, with something before the {@code -};
-     * -1 for any other name.
-     */
-    static int numberOf(String name) {
-        int end = name.length();
-        int n = 0;
-        int scale = 1;
-        for (int i = end - 1; i >= 0; i--) {
-            char c = name.charAt(i);
-            if (c == '-') {
-                return i > 0 && i < end - 1 ? n : -1;
-            }
-            if (c < '0' || c > '9' || end - i > 9) {
-                return -1;
-            }
-            n += (c - '0') * scale;
-            scale *= 10;
-        }
-        return -1;
-    }
-
-    /** The hash kept for a name: its hash code, with 0 (which marks an empty slot) taken as 1. */
-    private static int stored(String name) {
-        int h = name.hashCode();
-        return h == 0 ? 1 : h;
-    }
-
-    /** The slot holding {@code name} (of stored hash {@code h}), or the empty slot that ends its probe run. */
-    private int slotOf(String name, int h) {
-        int mask = hashes.length - 1;
-        for (int i = slot(h); ; i = i + 1 & mask) {
-            int at = hashes[i];
-            if (at == 0) {
-                return i;
-            }
-            if (at == h) {
-                Object k = entries[2 * i];
-                if (k == name || name.equals(k)) {
-                    return i;
-                }
-            }
-        }
-    }
-
-    /** Backward-shift deletion: moves later entries of the probe run into the gap at {@code gap}. */
-    private void closeGap(int gap) {
-        int mask = hashes.length - 1;
-        int i = gap;
-        while (true) {
-            i = i + 1 & mask;
-            if (hashes[i] == 0) {
-                break;
-            }
-            int home = slot(hashes[i]);
-            // The entry at i may move to the gap when its home is not in the cyclic range (gap, i].
-            boolean movable = gap <= i ? home <= gap || home > i : home <= gap && home > i;
-            if (movable) {
-                hashes[gap] = hashes[i];
-                entries[2 * gap] = entries[2 * i];
-                entries[2 * gap + 1] = entries[2 * i + 1];
-                gap = i;
-            }
-        }
-        hashes[gap] = 0;
-        entries[2 * gap] = null;
-        entries[2 * gap + 1] = null;
-    }
-
-    private int slot(int hash) {
-        return hash * 0x9E3779B9 >>> shift;
-    }
-
-    private void allocate(int capacity) {
-        int[] oldHashes = hashes;
-        Object[] oldEntries = entries;
-        hashes = new int[capacity];
-        entries = new Object[2 * capacity];
-        shift = 32 - Integer.numberOfTrailingZeros(capacity);
-        if (oldHashes == null) {
-            return;
-        }
-        int mask = capacity - 1;
-        for (int j = 0; j < oldHashes.length; j++) {
-            int h = oldHashes[j];
-            if (h != 0) {
-                int i = slot(h);
-                while (hashes[i] != 0) {
-                    i = i + 1 & mask;
-                }
-                hashes[i] = h;
-                entries[2 * i] = oldEntries[2 * j];
-                entries[2 * i + 1] = oldEntries[2 * j + 1];
-            }
+            });
         }
     }
 }

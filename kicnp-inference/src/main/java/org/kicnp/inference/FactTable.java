@@ -3,6 +3,7 @@ package org.kicnp.inference;
 import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.List;
+import org.kicnp.core.NameTable;
 
 /**
  * The engine's fact records by instance name. A name that ends in {@code -N} (the engine names what it derives
@@ -39,7 +40,7 @@ final class FactTable implements Iterable<FactView.Fact> {
 
     /** The fact of that name, made (without a frame) and stored when there is none yet. */
     FactView.Fact touch(String name) {
-        int n = numberOf(name);
+        int n = NameTable.numberOf(name);
         if (n < 0) {
             int before = others.size();
             FactView.Fact f = others.computeIfAbsent(name, FactView.Fact::new);
@@ -76,7 +77,7 @@ final class FactTable implements Iterable<FactView.Fact> {
 
     /** The fact of that name, or null. */
     FactView.Fact get(String name) {
-        int n = numberOf(name);
+        int n = NameTable.numberOf(name);
         if (n < 0) {
             return others.get(name);
         }
@@ -90,7 +91,7 @@ final class FactTable implements Iterable<FactView.Fact> {
 
     /** Removes the fact of that name; returns it, or null when there was none. */
     FactView.Fact remove(String name) {
-        int n = numberOf(name);
+        int n = NameTable.numberOf(name);
         if (n < 0) {
             FactView.Fact f = others.remove(name);
             if (f != null) {
@@ -138,34 +139,12 @@ final class FactTable implements Iterable<FactView.Fact> {
         }
         if (inOthers > 0) {
             for (FactView.Fact f : others) {
-                int n = numberOf(f.name);
+                int n = NameTable.numberOf(f.name);
                 if (n >= 0) {
                     spilled[n & mask]++;
                 }
             }
         }
-    }
-
-    /**
-     * The number a name ends in after its last {@code -}: one to nine digits, with something before the {@code -};
-     * -1 for any other name.
-     */
-    static int numberOf(String name) {
-        int end = name.length();
-        int n = 0;
-        int scale = 1;
-        for (int i = end - 1; i >= 0; i--) {
-            char c = name.charAt(i);
-            if (c == '-') {
-                return i > 0 && i < end - 1 ? n : -1;
-            }
-            if (c < '0' || c > '9' || end - i > 9) {
-                return -1;
-            }
-            n += (c - '0') * scale;
-            scale *= 10;
-        }
-        return -1;
     }
 
     /** The facts, in no particular order (a copy). */

@@ -11,21 +11,6 @@ import org.junit.jupiter.api.Test;
 
 class FactTableTest {
 
-    @Test
-    void numberOf_readsOnlyASuffixOfOneToNineDigitsAfterADash() {
-        assertThat(FactTable.numberOf("Pair-17")).isEqualTo(17);
-        assertThat(FactTable.numberOf("a-b-0")).isZero();
-        assertThat(FactTable.numberOf("x-05")).isEqualTo(5);
-        assertThat(FactTable.numberOf("x-999999999")).isEqualTo(999_999_999);
-        assertThat(FactTable.numberOf("x-2147483647")).isEqualTo(-1);
-        assertThat(FactTable.numberOf("x-1000000000")).isEqualTo(-1);
-        assertThat(FactTable.numberOf("s17")).isEqualTo(-1);
-        assertThat(FactTable.numberOf("-17")).isEqualTo(-1);
-        assertThat(FactTable.numberOf("Pair-")).isEqualTo(-1);
-        assertThat(FactTable.numberOf("Pair-1a")).isEqualTo(-1);
-        assertThat(FactTable.numberOf("")).isEqualTo(-1);
-    }
-
     /** Names sharing a number, numbers far beyond the array, names without one: the table is a map all the same. */
     @Test
     void touchGetAndRemove_inRandomOrder_behaveLikeAMap() {

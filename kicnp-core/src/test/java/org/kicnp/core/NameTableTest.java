@@ -1,4 +1,4 @@
-package org.kicnp.inference;
+package org.kicnp.core;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
@@ -10,6 +10,36 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 class NameTableTest {
+
+    @Test
+    void numberOf_readsOnlyASuffixOfOneToNineDigitsAfterADash() {
+        assertThat(NameTable.numberOf("Pair-17")).isEqualTo(17);
+        assertThat(NameTable.numberOf("a-b-0")).isZero();
+        assertThat(NameTable.numberOf("x-05")).isEqualTo(5);
+        assertThat(NameTable.numberOf("x-999999999")).isEqualTo(999_999_999);
+        assertThat(NameTable.numberOf("x-2147483647")).isEqualTo(-1);
+        assertThat(NameTable.numberOf("x-1000000000")).isEqualTo(-1);
+        assertThat(NameTable.numberOf("s17")).isEqualTo(-1);
+        assertThat(NameTable.numberOf("-17")).isEqualTo(-1);
+        assertThat(NameTable.numberOf("Pair-")).isEqualTo(-1);
+        assertThat(NameTable.numberOf("Pair-1a")).isEqualTo(-1);
+        assertThat(NameTable.numberOf("")).isEqualTo(-1);
+    }
+
+    @Test
+    void put_replacesAndAnswersTheOldValue_andForEachKeySeesEveryKey() {
+        NameTable<String> table = new NameTable<>();
+        for (int i = 0; i < 100; i++) {
+            assertThat(table.put("k" + i, "v" + i)).isNull();
+        }
+
+        assertThat(table.put("k7", "seven")).isEqualTo("v7");
+        assertThat(table.get("k7")).isEqualTo("seven");
+        assertThat(table.size()).isEqualTo(100);
+        java.util.Set<String> keys = new java.util.HashSet<>();
+        table.forEachKey(keys::add);
+        assertThat(keys).hasSize(100).contains("k0", "k7", "k99");
+    }
 
     @Test
     void putGetAndRemove_inRandomOrder_behaveLikeAHashMap() {

@@ -1,24 +1,25 @@
-package org.kicnp.inference;
+package org.kicnp.core;
 
 import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.List;
 import java.util.NoSuchElementException;
+import java.util.function.Consumer;
 import java.util.function.Function;
 
 /**
- * A map from instance names to the engine's records, in flat arrays: open addressing with linear probing. The engine
- * looks a name up for every knowledge-base event and grows the table by the hundred thousand within one run, so the
- * cost of a probe is the cache lines it touches: a probe run reads only the array of hashes (sixteen to a cache line;
+ * A map from frame names to values in flat arrays, open addressing with linear probing: the knowledge base's name
+ * index ({@code NodeIndex}) and the inference engine's fact records are built on it. Both look names up for every
+ * change and grow by the hundred thousand within one run, so the cost of a probe is the cache lines it touches: a probe run reads only the array of hashes (sixteen to a cache line;
  * an empty slot holds 0, so a stored hash is never 0), and each key sits beside its value in one array, so a hit or a
  * new entry touches two lines of a table whose lines are never in the cache, where a key array, a value array and a
  * hash array touched three (a {@link java.util.HashMap} chases one entry object per name besides). Removal shifts
- * the following entries back, so there are no tombstones. Null keys and values are not allowed. Not thread-safe:
- * owned by the engine thread.
+ * the following entries back, so there are no tombstones. Null keys and values are not allowed. Not thread-safe: its
+ * owner guards it (the knowledge base's lock, the engine's thread).
  *
  * @param <V> the record type
  */
-final class NameTable<V> implements Iterable<V> {
+public final class NameTable<V> implements Iterable<V> {
     private static final int MIN_CAPACITY = 16;
     /** The stored hash of each slot ({@link #stored}); 0: the slot is empty. */
     private int[] hashes;
@@ -27,23 +28,23 @@ final class NameTable<V> implements Iterable<V> {
     private int size;
     private int shift;
 
-    NameTable() {
+    public NameTable() {
         allocate(MIN_CAPACITY);
     }
 
-    int size() {
+    public int size() {
         return size;
     }
 
     @SuppressWarnings("unchecked")
-    V get(String key) {
+    public V get(String key) {
         int i = slotOf(key, stored(key));
         return hashes[i] == 0 ? null : (V) entries[2 * i + 1];
     }
 
     /** The value of {@code key}, made by {@code make} and stored when there is none (one probe sequence either way). */
     @SuppressWarnings("unchecked")
-    V computeIfAbsent(String key, Function<String, V> make) {
+    public V computeIfAbsent(String key, Function<String, V> make) {
         int h = stored(key);
         int i = slotOf(key, h);
         if (hashes[i] != 0) {
@@ -59,9 +60,37 @@ final class NameTable<V> implements Iterable<V> {
         return v;
     }
 
+    /** Puts {@code value} under {@code key}; returns the value it replaced, or null when there was none. */
+    @SuppressWarnings("unchecked")
+    public V put(String key, V value) {
+        int h = stored(key);
+        int i = slotOf(key, h);
+        if (hashes[i] != 0) {
+            V old = (V) entries[2 * i + 1];
+            entries[2 * i + 1] = value;
+            return old;
+        }
+        hashes[i] = h;
+        entries[2 * i] = key;
+        entries[2 * i + 1] = value;
+        if (++size * 2 > hashes.length) {
+            allocate(hashes.length * 2);
+        }
+        return null;
+    }
+
+    /** Calls {@code action} with every key, in no particular order; the table must not change meanwhile. */
+    public void forEachKey(Consumer<String> action) {
+        for (int i = 0; i < hashes.length; i++) {
+            if (hashes[i] != 0) {
+                action.accept((String) entries[2 * i]);
+            }
+        }
+    }
+
     /** Removes the entry of {@code key}; returns its value, or null when there was none. */
     @SuppressWarnings("unchecked")
-    V remove(String key) {
+    public V remove(String key) {
         int i = slotOf(key, stored(key));
         if (hashes[i] == 0) {
             return null;
@@ -70,6 +99,29 @@ final class NameTable<V> implements Iterable<V> {
         size--;
         closeGap(i);
         return old;
+    }
+
+    /**
+     * The number a name ends in after its last {@code -}: one to nine digits, with something before the {@code -};
+     * -1 for any other name. An inference engine names what it derives {@code Frame-N} with one counter, so the
+     * indexes of such names ({@code NodeIndex}, the engine's fact records) keep them in arrays by this number.
+     */
+    public static int numberOf(String name) {
+        int end = name.length();
+        int n = 0;
+        int scale = 1;
+        for (int i = end - 1; i >= 0; i--) {
+            char c = name.charAt(i);
+            if (c == '-') {
+                return i > 0 && i < end - 1 ? n : -1;
+            }
+            if (c < '0' || c > '9' || end - i > 9) {
+                return -1;
+            }
+            n += (c - '0') * scale;
+            scale *= 10;
+        }
+        return -1;
     }
 
     /** The hash kept for {@code key}: its hash code, with 0 (which marks an empty slot) taken as 1. */
