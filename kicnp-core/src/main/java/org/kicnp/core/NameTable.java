@@ -51,12 +51,7 @@ public final class NameTable<V> implements Iterable<V> {
             return (V) entries[2 * i + 1];
         }
         V v = make.apply(key);
-        hashes[i] = h;
-        entries[2 * i] = key;
-        entries[2 * i + 1] = v;
-        if (++size * 2 > hashes.length) {
-            allocate(hashes.length * 2);
-        }
+        insert(i, h, key, v);
         return v;
     }
 
@@ -70,13 +65,18 @@ public final class NameTable<V> implements Iterable<V> {
             entries[2 * i + 1] = value;
             return old;
         }
+        insert(i, h, key, value);
+        return null;
+    }
+
+    /** Fills the empty slot {@code i} (the end of the key's probe run) and grows the table when half full. */
+    private void insert(int i, int h, String key, V value) {
         hashes[i] = h;
         entries[2 * i] = key;
         entries[2 * i + 1] = value;
         if (++size * 2 > hashes.length) {
             allocate(hashes.length * 2);
         }
-        return null;
     }
 
     /** Calls {@code action} with every key, in no particular order; the table must not change meanwhile. */
