@@ -140,8 +140,9 @@ final class ScriptCalls {
 
     /**
      * Gets the rules' scripts ready ahead of their first run ({@link ScriptHost#prepare}), one after another on one
-     * background thread, under the ids their runs use: each frame's {@code onInstantiate} and {@code onDestroy} and
-     * its script conditions. Returns at once; a firing that comes first parses its script itself, as before.
+     * background (platform) thread, under the ids their runs use: each frame's {@code onInstantiate} and
+     * {@code onDestroy} and its script conditions. Returns at once; a firing that comes first parses its script
+     * itself, as before.
      */
     void prepare(List<Rule> rules) {
         List<String[]> todo = new ArrayList<>();
@@ -155,7 +156,8 @@ final class ScriptCalls {
             }
         }
         if (!todo.isEmpty()) {
-            Thread.ofVirtual().name("prepare-scripts").start(() -> todo.forEach(t -> host.prepare(t[0], t[1], t[2])));
+            // A platform thread: GraalJS supports contexts on virtual threads only experimentally (and warns so).
+            Thread.ofPlatform().daemon().name("prepare-scripts").start(() -> todo.forEach(t -> host.prepare(t[0], t[1], t[2])));
         }
     }
 

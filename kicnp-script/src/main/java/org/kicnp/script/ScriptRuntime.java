@@ -59,6 +59,7 @@ public final class ScriptRuntime implements AutoCloseable {
                 .option("engine.WarnInterpreterOnly", "false")
                 .out(new ScriptOutput(false))
                 .err(new ScriptOutput(true))
+                .logHandler(new EngineLog())
                 .build();
         this.pool = new ContextPool(new Sandbox(engine, config, new ScriptOutput(false), new ScriptOutput(true)),
                 config.maxIdleContexts());
