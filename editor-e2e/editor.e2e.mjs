@@ -187,7 +187,7 @@ try {
   await page.screenshot({ path: join(artifacts, '03-slot-table.png') });
   await page.screenshot({ path: join(artifacts, '03-slot-table-full.png'), fullPage: true });
 
-  step = 'inference view: run, see the derived instance, ask why, read the trace';
+  step = 'inference view: run, see the derived instance, ask why and why not, read the trace';
   await page.click('#inference-button');
   await page.locator('#inference-panel').waitFor({ state: 'visible' });
   await page.click('#run-button');
@@ -201,6 +201,11 @@ try {
   await page.click('#prove-button');
   await page.locator('#ask-answers li', { hasText: 'AskUserName' }).first().waitFor();
   await page.screenshot({ path: join(artifacts, '04-inference.png') });
+  await page.click('#why-not-button');
+  await page.locator('#ask-answers li.why-not-summary', { hasText: "'AskUserName' has 1 binding: 1 blocked." }).waitFor();
+  check((await page.textContent('#ask-answers')).includes('refraction: this binding has already fired'),
+    'why not does not say the binding fired already');
+  await page.screenshot({ path: join(artifacts, '04b-why-not.png') });
 
   step = 'delete an instance: what was derived from it goes too';
   await tree.locator('[data-frame="mouth1"]').click();

@@ -24,6 +24,7 @@ import org.kicnp.inference.GraalScriptHost;
 import org.kicnp.inference.InferenceEngine;
 import org.kicnp.inference.InferenceException;
 import org.kicnp.inference.TraceEvent;
+import org.kicnp.inference.WhyNot;
 import org.kicnp.script.ScriptConfig;
 import org.kicnp.script.ScriptRuntime;
 import picocli.CommandLine;
@@ -34,11 +35,12 @@ import picocli.CommandLine.Parameters;
 /**
  * {@code kicnp infer}: loads a knowledge base, asserts instance frames as stimuli, runs the inference engine to
  * quiescence and prints the instances it created and the actions it issued (to a recording sink: no robot is
- * contacted), optionally the trace as JSON lines and the answers to questions asked by backward chaining.
+ * contacted), optionally the trace as JSON lines, the answers to questions asked by backward chaining, and why
+ * behavior frames did not fire.
  */
 @Command(name = "infer", mixinStandardHelpOptions = true,
         customSynopsis = {"kicnp infer [-hV] KB... [--assert=FILE_OR_XML...]... [--ask=CLASS]...",
-            "                   [--trace] [--max-firings=N]"},
+            "                   [--why-not=FRAME]... [--trace] [--max-firings=N]"},
         description = "Run the inference engine on a knowledge base with asserted instances and print what it did.")
 public final class InferCommand implements Callable<Integer> {
     @CommandLine.Spec
@@ -59,6 +61,10 @@ public final class InferCommand implements Callable<Integer> {
 
     @Option(names = "--ask", paramLabel = "CLASS", description = "After the run, ask for every instance of the class.")
     List<String> asks = new ArrayList<>();
+
+    @Option(names = "--why-not", paramLabel = "FRAME", description = "After the run, say why the behavior frame did "
+            + "not fire: each required slot's candidates, and what stops each binding of them.")
+    List<String> whyNots = new ArrayList<>();
 
     @Option(names = "--max-firings", paramLabel = "N", description = "Firings allowed per run (default: ${DEFAULT-VALUE}).")
     int maxFirings = EngineOptions.defaults().maxFirings();
@@ -134,6 +140,14 @@ public final class InferCommand implements Callable<Integer> {
                 }
                 answers.put(cls, engine.ask(cls, Map.of()));
             }
+            List<WhyNot> diagnoses = new ArrayList<>();
+            for (String frame : whyNots) {
+                if (!kb.contains(frame)) {
+                    throw new IllegalArgumentException("--why-not names '" + frame
+                            + "', which is not a frame of the knowledge base.");
+                }
+                diagnoses.add(engine.whyNot(frame, Map.of()));
+            }
             print(out, kb, created, sent);
             answers.forEach((cls, list) -> {
                 out.println("Answers for " + cls + ":");
@@ -141,6 +155,7 @@ public final class InferCommand implements Callable<Integer> {
                     out.println("  " + a.instance().orElse("(derivable " + a.className() + ")") + " " + a.slots());
                 }
             });
+            diagnoses.forEach(w -> printWhyNot(out, w));
             out.flush();
             return 0;
         } catch (KnowledgeException | InferenceException | IllegalArgumentException e) {
@@ -178,6 +193,20 @@ public final class InferCommand implements Callable<Integer> {
 
     private static String abbreviate(String text) {
         return text.length() <= 60 ? text : text.substring(0, 57) + "...";
+    }
+
+    private static void printWhyNot(PrintWriter out, WhyNot w) {
+        out.println("Why not " + w.frame() + ": " + w.summary());
+        for (WhyNot.SlotCandidates s : w.slots()) {
+            out.println("  slot " + s.slot() + " (" + s.argument() + ", " + s.condition() + "): "
+                    + (s.candidates().isEmpty() ? "no candidate" : String.join(" ", s.candidates())));
+            s.rejected().forEach(r -> out.println("    turned away: " + r));
+        }
+        for (WhyNot.Verdict v : w.bindings()) {
+            StringBuilder sb = new StringBuilder("  ");
+            v.binding().forEach((slot, fact) -> sb.append(slot).append('=').append(fact).append(' '));
+            out.println(sb.append("-> ").append(v.outcome().phrase()).append(": ").append(v.reason()));
+        }
     }
 
     private static void print(PrintWriter out, KnowledgeBase kb, Map<String, String> created, List<Action> sent) {

@@ -53,6 +53,31 @@ class InferCommandTest {
     }
 
     @Test
+    void infer_withWhyNot_saysWhichSlotHasNoCandidate_andThatAFiredBindingIsRefracted() {
+        Result r = run("infer", TABLE5, "--assert", NEW_USER, "--why-not", "Greeting", "--why-not", "AskUserName");
+
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(r.out()).contains("Why not Greeting: 'Greeting' cannot fire: nothing can fill its slot 'mUser' "
+                        + "(there is no instance of 'KnownUser').")
+                .contains("  slot mMouth (Mouth, COND_ANY): RobovieMouth")
+                .contains("Why not AskUserName: 'AskUserName' has 1 binding: 1 blocked.")
+                .contains("  mUser=userA mMouth=RobovieMouth -> blocked: refraction: this binding has already fired");
+    }
+
+    @Test
+    void infer_withWhyNotOfAFrameThatIsNotThere_orNotABehaviorFrame_failsInWords() {
+        Result unknown = run("infer", TABLE5, "--why-not", "Nope");
+        Result notBehavior = run("infer", TABLE5, "--why-not", "User");
+
+        assertThat(unknown.code()).isEqualTo(1);
+        assertThat(unknown.err()).contains("infer: --why-not names 'Nope', which is not a frame of the knowledge base.");
+        assertThat(unknown.out()).doesNotContain("Created");
+        assertThat(notBehavior.code()).isEqualTo(1);
+        assertThat(notBehavior.err()).contains("infer: Frame 'User' is not a behavior frame: it has no required "
+                + "instance slot, so the engine never fires it.");
+    }
+
+    @Test
     void infer_onADirectoryWithoutKnowledgeFiles_failsWithAMessage(@TempDir Path dir) throws Exception {
         Files.writeString(dir.resolve("notes.txt"), "not a knowledge file");
 
@@ -186,7 +211,7 @@ class InferCommandTest {
     void infer_help_describesTheOptions() {
         Result r = run("infer", "--help");
         assertThat(r.code()).isZero();
-        assertThat(r.out()).contains("--assert").contains("--trace").contains("--ask");
+        assertThat(r.out()).contains("--assert").contains("--trace").contains("--ask").contains("--why-not");
     }
 
     @Test

@@ -186,6 +186,8 @@ final class ApiHandler extends Handler.Abstract {
                     new ApiException(400, "Asking needs the class to ask about: ?class=Name.")))));
             case "prove" -> only(m, "GET", () -> ok(engine.prove(r.query("class").orElseThrow(() ->
                     new ApiException(400, "Proving needs the class to prove: ?class=Name.")))));
+            case "why-not" -> only(m, "GET", () -> ok(engine.whyNot(r.query("frame").orElseThrow(() ->
+                    new ApiException(400, "Why-not needs the behavior frame to ask about: ?frame=Name.")))));
             case "run" -> only(m, "POST", () -> ok(engine.run()));
             default -> notFound(r);
         };

@@ -46,6 +46,9 @@ record Features(Xml xml, Scripts scripts, Inference inference) {
         /** Backward chaining's proof trees for the class: why each answer holds, without side effects. */
         Object prove(String className);
 
+        /** Why a behavior frame has not fired: its slots' candidates and each binding's outcome; no side effects. */
+        Object whyNot(String frame);
+
         Object run();
 
         /**
@@ -79,6 +82,10 @@ record Features(Xml xml, Scripts scripts, Inference inference) {
             }
 
             @Override public Object prove(String className) {
+                throw unavailable();
+            }
+
+            @Override public Object whyNot(String frame) {
                 throw unavailable();
             }
 

@@ -1,7 +1,9 @@
 package org.kicnp.editor;
 
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import org.kicnp.inference.Action;
 import org.kicnp.inference.Answer;
@@ -9,6 +11,7 @@ import org.kicnp.inference.Proof;
 import org.kicnp.inference.Derivation;
 import org.kicnp.inference.Explanation;
 import org.kicnp.inference.TraceEvent;
+import org.kicnp.inference.WhyNot;
 
 /**
  * The inference engine's results as the page reads them: trace events, explanations ("why does this instance
@@ -109,6 +112,34 @@ final class InferenceJson {
         }
         m.put("depth", p.depth());
         return m;
+    }
+
+    static Map<String, Object> whyNot(WhyNot w) {
+        Map<String, Object> out = new LinkedHashMap<>();
+        out.put("frame", w.frame());
+        out.put("summary", w.summary());
+        List<Map<String, Object>> slots = new ArrayList<>();
+        for (WhyNot.SlotCandidates s : w.slots()) {
+            Map<String, Object> row = new LinkedHashMap<>();
+            row.put("slot", s.slot());
+            row.put("argument", s.argument());
+            row.put("condition", s.condition());
+            row.put("candidates", s.candidates());
+            row.put("rejected", s.rejected());
+            slots.add(row);
+        }
+        out.put("slots", slots);
+        List<Map<String, Object>> bindings = new ArrayList<>();
+        for (WhyNot.Verdict v : w.bindings()) {
+            Map<String, Object> row = new LinkedHashMap<>();
+            row.put("binding", v.binding());
+            row.put("outcome", v.outcome().name().toLowerCase(Locale.ROOT));
+            row.put("reason", v.reason());
+            bindings.add(row);
+        }
+        out.put("bindings", bindings);
+        out.put("truncated", w.truncated());
+        return out;
     }
 
     static List<Map<String, Object>> answers(List<Answer> answers) {

@@ -16,7 +16,7 @@ import org.kicnp.inference.TraceListener;
 /**
  * The editor's view of a running inference engine: the live (runtime) instances in working memory and whether the
  * engine derived them, the agenda size, "why does this instance exist", "which instances of this class are there
- * or could there be" (backward chaining), a run to quiescence, and every trace event pushed to the page over
+ * or could there be" (backward chaining), "why has this behavior frame not fired", a run to quiescence, and every trace event pushed to the page over
  * {@code /api/events} as {@code {"type":"trace", ...}}.
  */
 final class InferenceResource implements Features.Inference {
@@ -84,6 +84,15 @@ final class InferenceResource implements Features.Inference {
     @Override public Object prove(String className) {
         requireClass(className, "prove");
         return engine.prove(className, Map.of()).stream().map(InferenceJson::proof).toList();
+    }
+
+    @Override public Object whyNot(String frame) {
+        kb.require(frame);
+        try {
+            return InferenceJson.whyNot(engine.whyNot(frame, Map.of()));
+        } catch (IllegalArgumentException e) {
+            throw new ApiException(422, e.getMessage());
+        }
     }
 
     /** Backward chaining answers with instances of a class: an instance has none, so it would answer nothing. */

@@ -165,6 +165,27 @@ class InferenceApiTest {
         assertThat(http.get("/api/inference/prove").statusCode()).isEqualTo(400);
     }
 
+    @Test void whyNot_saysWhatStopsEachBinding_andWhichSlotHasNoCandidate_withoutCreatingAnything() {
+        setUpUserAndMouth();
+        http.post("/api/inference/run", "{}");
+        int before = json(http.get("/api/frames")).size();
+
+        JsonNode asked = json(http.get("/api/inference/why-not?frame=AskUserName"));
+
+        assertThat(asked.get("summary").asText()).isEqualTo("'AskUserName' has 1 binding: 1 blocked.");
+        assertThat(asked.get("slots").get(0).get("candidates").get(0).asText()).isEqualTo("userA");
+        JsonNode b = asked.get("bindings").get(0);
+        assertThat(b.get("binding").get("mUser").asText()).isEqualTo("userA");
+        assertThat(b.get("outcome").asText()).isEqualTo("blocked");
+        assertThat(b.get("reason").asText()).isEqualTo("refraction: this binding has already fired");
+        assertThat(json(http.get("/api/frames")).size()).isEqualTo(before);
+        assertThat(http.get("/api/inference/why-not").statusCode()).isEqualTo(400);
+        assertThat(http.get("/api/inference/why-not?frame=Nope").statusCode()).isEqualTo(404);
+        HttpResponse<String> notBehavior = http.get("/api/inference/why-not?frame=User");
+        assertThat(notBehavior.statusCode()).isEqualTo(422);
+        assertThat(notBehavior.body()).contains("Frame 'User' is not a behavior frame");
+    }
+
     @Test void run_withoutLogin_answers401() {
         Http anonymous = new Http(server.port());
 

@@ -99,6 +99,11 @@ final class ForwardChainer {
         return List.copyOf(rules.values());
     }
 
+    /** The compiled rule of a behavior frame, if the frame is one. */
+    Optional<Rule> rule(String frame) {
+        return Optional.ofNullable(rules.get(frame));
+    }
+
     long firings() {
         return firings;
     }

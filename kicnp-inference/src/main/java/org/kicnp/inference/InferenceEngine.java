@@ -354,6 +354,38 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
         }
     }
 
+    /**
+     * Why a behavior frame has not fired, or not with some slots held: the instances that could fill each required
+     * slot, then every binding of them (up to {@link EngineOptions#maxAnswers}) with what stops it now — a false
+     * condition, refraction or a claim by an earlier firing, its place on the agenda — or that nothing does. No
+     * side effects: no script runs, nothing is created.
+     *
+     * @param partialBindings slot → instance for required slots to hold fixed (an instance that cannot fill its
+     *                        slot is reported among that slot's rejected candidates)
+     * @throws UnknownFrameException when there is no such frame
+     * @throws IllegalArgumentException when the frame is not a behavior frame (a class with a required instance
+     *                                  slot), or a partial binding names a slot that is not one of its required ones
+     */
+    public WhyNot whyNot(String frame, Map<String, String> partialBindings) {
+        requireNonNull(frame, "frame");
+        requireNonNull(partialBindings, "partialBindings");
+        lock.lock();
+        try {
+            drain();
+            Frame f = kb.frame(frame).orElseThrow(() -> new UnknownFrameException(frame));
+            Rule r = forward.rule(frame).orElseThrow(() -> new IllegalArgumentException("Frame '" + frame + "' is "
+                    + (f.isInstance() ? "an instance" : "not a behavior frame: it has no required instance slot")
+                    + ", so the engine never fires it."));
+            Set<BindingKey> waiting = new HashSet<>();
+            for (Activation a : forward.agenda()) {
+                waiting.add(a.key());
+            }
+            return new WhyNotCheck(kb, supports, options.maxAnswers()).check(r, partialBindings, waiting);
+        } finally {
+            lock.unlock();
+        }
+    }
+
     /** The proof trees of {@link #ask}. */
     public List<Proof> prove(String className, Map<String, Value> partialBindings) {
         return ask(className, partialBindings).stream().map(Answer::proof).toList();

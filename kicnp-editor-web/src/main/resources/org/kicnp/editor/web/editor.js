@@ -4,7 +4,7 @@ import { $, RELATIONS, api, el, show, showErrors, showMain, state } from './base
 import { loadFrames, renderNameLists, renderTree } from './tree.js';
 import { drawLinks, scheduleDrawLinks, swatch } from './links.js';
 import { create, markDirty, openFrame, remove, rename, renderFrame, save, setFrame, startCreate } from './frame.js';
-import { addTrace, askInference, loadInference, openInference, proveInference, runInference, scheduleInferenceReload } from './inference.js';
+import { addTrace, askInference, loadInference, openInference, proveInference, runInference, scheduleInferenceReload, whyNotInference } from './inference.js';
 import { openWorld, renderWorldSession, worldEvent, worldVisible } from './world.js';
 import { cancelWrong, chatLine, feedbackEvent, markWrong, renderActions, renderArgs, say, sendCommand } from './operate.js';
 
@@ -206,6 +206,7 @@ function wire() {
   $('run-button').addEventListener('click', runInference);
   $('ask-form').addEventListener('submit', askInference);
   $('prove-button').addEventListener('click', proveInference);
+  $('why-not-button').addEventListener('click', whyNotInference);
   $('import-apply').addEventListener('click', applyImport);
   $('world-button').addEventListener('click', openWorld);
   $('world-refresh').addEventListener('click', openWorld);

@@ -103,6 +103,26 @@ export async function proveInference() {
   }
 }
 
+/** Why the behavior frame named in the box has not fired: its slots' candidates, then each binding's outcome. */
+export async function whyNotInference() {
+  const frame = $('ask-class').value.trim();
+  if (!frame) return;
+  try {
+    const w = await api('GET', '/api/inference/why-not?frame=' + enc(frame));
+    const slots = w.slots.map((s) => el('li', {},
+      el('span', { class: 'what', text: s.slot }),
+      el('span', { class: 'how', text: ' (' + s.argument + ', ' + s.condition + '): '
+        + (s.candidates.length ? s.candidates.join(', ') : 'no candidate') }),
+      s.rejected.length ? el('ul', {}, s.rejected.map((r) => el('li', { class: 'muted', text: 'turned away: ' + r }))) : null));
+    const bindings = w.bindings.map((b) => el('li', { class: 'why-not-' + b.outcome },
+      el('span', { class: 'what', text: Object.entries(b.binding).map(([k, v]) => k + '=' + v).join(', ') }),
+      el('span', { class: 'how', text: ' — ' + b.reason })));
+    $('ask-answers').replaceChildren(el('li', { class: 'why-not-summary', text: w.summary }), ...slots, ...bindings);
+  } catch (e) {
+    showErrors('inference-errors', e);
+  }
+}
+
 function proofItem(p) {
   if (p.kind === 'exists') {
     return el('li', {}, el('span', { class: 'what', text: p.instance }),

@@ -1,0 +1,102 @@
+package org.kicnp.inference;
+
+import static java.util.Objects.requireNonNull;
+
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Map;
+import java.util.StringJoiner;
+
+/**
+ * The answer to "why has this behavior frame not fired?" ({@link InferenceEngine#whyNot}), the question a rule
+ * engine's users ask most after "why did it fire?". For each required slot, the instances that could fill it and
+ * those its own condition turns away; then every binding of the remaining candidates (up to the engine's answer
+ * limit), each with what stops it from firing now, checked in the order forward chaining checks: the slots'
+ * declarative conditions, then refraction and what unshared or unique slots hold, then the agenda. Read-only: no
+ * script runs and nothing is created, so a slot's script condition is named, not evaluated.
+ *
+ * @param frame     the behavior frame asked about
+ * @param slots     its required instance slots, in order, with their candidates
+ * @param bindings  the bindings of the candidates, each with its outcome
+ * @param truncated whether there were more bindings than the engine's answer limit ({@link EngineOptions#maxAnswers})
+ */
+public record WhyNot(String frame, List<SlotCandidates> slots, List<Verdict> bindings, boolean truncated) {
+    public WhyNot {
+        requireNonNull(frame, "frame");
+        slots = List.copyOf(slots);
+        bindings = List.copyOf(bindings);
+    }
+
+    /**
+     * One required slot: the class it needs, its condition's text ({@code COND_ANY} when it has none), the instances
+     * that could fill it, and those its condition rejects on their own ("name: why"), which no binding uses.
+     */
+    public record SlotCandidates(String slot, String argument, String condition, List<String> candidates,
+                                 List<String> rejected) {
+        public SlotCandidates {
+            candidates = List.copyOf(candidates);
+            rejected = List.copyOf(rejected);
+        }
+    }
+
+    /** What became of one binding (slot → instance, in slot order). */
+    public record Verdict(Map<String, String> binding, Outcome outcome, String reason) {
+        public Verdict {
+            binding = java.util.Collections.unmodifiableMap(new java.util.LinkedHashMap<>(binding));
+        }
+    }
+
+    /** Why a binding does not fire now, or that it will. */
+    public enum Outcome {
+        /** A declarative condition of a slot is false for it. */
+        CONDITION_FALSE("fails a condition"),
+        /** It fired already (refraction), or an unshared or unique slot's instance is held by an earlier firing. */
+        BLOCKED("blocked"),
+        /** It is on the agenda and fires when its turn comes. */
+        WAITING("waiting on the agenda"),
+        /** Nothing declarative stops it; a script condition decided, and whyNot does not run scripts. */
+        SCRIPT_CONDITION("left to a script condition"),
+        /**
+         * Nothing whyNot can see stops it, yet it is not on the agenda: the engine has not matched it. Not expected
+         * once the engine has processed its changes (whyNot processes them first); reported rather than hidden.
+         */
+        WOULD_FIRE("not matched yet");
+
+        private final String phrase;
+
+        Outcome(String phrase) {
+            this.phrase = phrase;
+        }
+
+        /** How the outcome reads in a sentence. */
+        public String phrase() {
+            return phrase;
+        }
+    }
+
+    /** One sentence: which slot has nothing to fill it, or how many bindings there are and what became of them. */
+    public String summary() {
+        for (SlotCandidates s : slots) {
+            if (s.candidates().isEmpty()) {
+                String why = s.rejected().isEmpty()
+                        ? "there is no instance of '" + s.argument() + "'"
+                        : s.rejected().size() + " instance" + (s.rejected().size() == 1 ? " of '" : "s of '")
+                                + s.argument() + "' exist" + (s.rejected().size() == 1 ? "s" : "")
+                                + " but its condition " + s.condition() + " turns " + (s.rejected().size() == 1
+                                ? "it" : "them all") + " away";
+                return "'" + frame + "' cannot fire: nothing can fill its slot '" + s.slot() + "' (" + why + ").";
+            }
+        }
+        if (bindings.isEmpty()) {
+            return "'" + frame + "' cannot fire: its slots could only be filled by one instance in two slots.";
+        }
+        Map<Outcome, Integer> counts = new EnumMap<>(Outcome.class);
+        for (Verdict v : bindings) {
+            counts.merge(v.outcome(), 1, Integer::sum);
+        }
+        StringJoiner parts = new StringJoiner(", ");
+        counts.forEach((o, n) -> parts.add(n + " " + o.phrase()));
+        return "'" + frame + "' has " + (truncated ? "more than " : "") + bindings.size() + " binding"
+                + (bindings.size() == 1 ? "" : "s") + ": " + parts + ".";
+    }
+}

@@ -1,0 +1,148 @@
+package org.kicnp.inference;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Value;
+
+/**
+ * Works out a {@link WhyNot}: the candidates of each required slot of a behavior frame, then every binding of them
+ * with what forward chaining would make of it now. Read-only; runs on the engine's thread, under its lock.
+ */
+final class WhyNotCheck {
+    private final KnowledgeBase kb;
+    private final Supports supports;
+    private final Conditions conditions;
+    private final int limit;
+
+    WhyNotCheck(KnowledgeBase kb, Supports supports, int limit) {
+        this.kb = kb;
+        this.supports = supports;
+        this.conditions = new Conditions(kb::value);
+        this.limit = limit;
+    }
+
+    /**
+     * @param partial slot → instance: bindings are looked for with these slots held (each must be a required slot)
+     * @param waiting the bindings on the agenda now
+     */
+    WhyNot check(Rule r, Map<String, String> partial, Set<BindingKey> waiting) {
+        for (String slot : partial.keySet()) {
+            if (r.pattern(slot).filter(SlotPattern::required).isEmpty()) {
+                throw new IllegalArgumentException("Frame '" + r.frame() + "' has no required instance slot '" + slot
+                        + "'; its required slots are " + r.requiredSlots() + ".");
+            }
+        }
+        List<WhyNot.SlotCandidates> slots = new ArrayList<>();
+        List<List<String>> pools = new ArrayList<>();
+        for (SlotPattern p : r.required()) {
+            List<String> candidates = new ArrayList<>();
+            List<String> rejected = new ArrayList<>();
+            String given = partial.get(p.slot());
+            if (given != null) {
+                Optional<Frame> f = kb.frame(given);
+                if (f.isEmpty() || !f.get().isInstance() || !kb.isA(given, p.argument())) {
+                    rejected.add(given + ": " + (f.isEmpty() ? "there is no frame of that name"
+                            : "not an instance of '" + p.argument() + "'"));
+                } else {
+                    sort(r, p, given, candidates, rejected);
+                }
+            } else {
+                for (Frame f : kb.instancesOf(p.argument())) {
+                    sort(r, p, f.name(), candidates, rejected);
+                }
+            }
+            slots.add(new WhyNot.SlotCandidates(p.slot(), p.argument(), p.conditionText(), candidates, rejected));
+            pools.add(candidates);
+        }
+        List<WhyNot.Verdict> verdicts = new ArrayList<>();
+        boolean complete = pools.stream().noneMatch(List::isEmpty)
+                && combine(r, pools, 0, new String[pools.size()], waiting, verdicts);
+        return new WhyNot(r.frame(), slots, verdicts, !complete && pools.stream().noneMatch(List::isEmpty));
+    }
+
+    /** A candidate goes to the slot's candidates, or to its rejected ones when its own condition is false for it. */
+    private void sort(Rule r, SlotPattern p, String instance, List<String> candidates, List<String> rejected) {
+        if (p.alpha() && !p.isScript() && !conditions.holds(p.condition(), Value.ref(instance), r.frame(), Map.of())) {
+            rejected.add(instance + ": " + falseFor(p, instance));
+        } else {
+            candidates.add(instance);
+        }
+    }
+
+    /** Every binding of distinct instances, in slot order; false when the limit cut it short. */
+    private boolean combine(Rule r, List<List<String>> pools, int k, String[] chosen, Set<BindingKey> waiting,
+                            List<WhyNot.Verdict> out) {
+        if (k == pools.size()) {
+            if (out.size() >= limit) {
+                return false;
+            }
+            out.add(verdict(r, chosen.clone(), waiting));
+            return true;
+        }
+        for (String c : pools.get(k)) {
+            if (bound(chosen, k, c)) {
+                continue; // forward chaining never binds one instance to two slots
+            }
+            chosen[k] = c;
+            if (!combine(r, pools, k + 1, chosen, waiting, out)) {
+                return false;
+            }
+        }
+        chosen[k] = null;
+        return true;
+    }
+
+    private static boolean bound(String[] chosen, int before, String c) {
+        for (int i = 0; i < before; i++) {
+            if (chosen[i].equals(c)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private WhyNot.Verdict verdict(Rule r, String[] facts, Set<BindingKey> waiting) {
+        Map<String, String> binding = Activation.bindingOf(r, facts);
+        for (SlotPattern p : r.required()) {
+            String own = binding.get(p.slot());
+            if (!p.isScript() && !conditions.holds(p.condition(), Value.ref(own), r.frame(), binding)) {
+                return new WhyNot.Verdict(binding, WhyNot.Outcome.CONDITION_FALSE, "slot '" + p.slot() + "': "
+                        + falseFor(p, own));
+            }
+        }
+        BindingKey key = new BindingKey(r.frame(), facts);
+        Optional<String> blocked = supports.blocked(r, facts, key);
+        if (blocked.isPresent()) {
+            return new WhyNot.Verdict(binding, WhyNot.Outcome.BLOCKED, blocked.get());
+        }
+        if (waiting.contains(key)) {
+            return new WhyNot.Verdict(binding, WhyNot.Outcome.WAITING, "on the agenda: it fires when its turn comes");
+        }
+        for (SlotPattern p : r.required()) {
+            if (p.isScript()) {
+                return new WhyNot.Verdict(binding, WhyNot.Outcome.SCRIPT_CONDITION, "slot '" + p.slot()
+                        + "' has a script condition, which the engine ran when it matched this binding and which"
+                        + " whyNot does not run: if the binding did not fire, it was false or threw (the trace's"
+                        + " blocked event says which)");
+            }
+        }
+        return new WhyNot.Verdict(binding, WhyNot.Outcome.WOULD_FIRE,
+                "nothing that whyNot sees stops it, yet the engine has not matched it; run the engine");
+    }
+
+    /** "COND is false", with the value the condition tested when it tests a path of the candidate. */
+    private String falseFor(SlotPattern p, String instance) {
+        String tested = p.condition().testedPath()
+                .map(path -> conditions.follow(Value.ref(instance), path)
+                        .map(v -> " ('" + instance + "'." + String.join(".", path) + " is " + v.text() + ")")
+                        .orElse(" ('" + instance + "' has no value at ." + String.join(".", path) + ")"))
+                .orElse("");
+        return p.conditionText() + " is false" + tested;
+    }
+}
