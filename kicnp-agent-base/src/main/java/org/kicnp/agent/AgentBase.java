@@ -177,6 +177,11 @@ public abstract class AgentBase implements AutoCloseable {
         return registered;
     }
 
+    /** How many commands this robot agent took and has neither reported done nor lost with its connection. */
+    public final int commandsInFlight() {
+        return commands.inFlight();
+    }
+
     /**
      * Why the agent stopped for good — refused by the server, or replaced by a newer connection under its name —
      * or empty while it runs or is reconnecting.
@@ -482,6 +487,8 @@ public abstract class AgentBase implements AutoCloseable {
         tickets.forEach((id, t) -> t.received(new Message.Feedback(id, t.command().robot(), FeedbackStage.FAILED,
                 Optional.empty(), "the connection to the gateway was lost before command '" + id + "' ended")));
         tickets.clear();
+        // The server fails the commands this robot runs, too: cancel them, so that the robot stops and its program hears.
+        commands.connectionLost(closed ? "agent '" + name() + "' was closed" : "the connection to the gateway was lost");
         if (was && !closed) {
             events.execute(() -> onDisconnected("connection lost"));
         }

@@ -202,6 +202,49 @@ class GatewayCancelTest {
     }
 
     @Test
+    void theGatewayGoingAway_cancelsTheRobotsCommandsInFlight_andIgnoresTheirLaterReports() throws Exception {
+        List<String> stops = new CopyOnWriteArrayList<>();
+        List<String> program = new CopyOnWriteArrayList<>();
+        CountDownLatch running = new CountDownLatch(1);
+        AgentBase scout = connect(new AgentBase(options("scout", AgentKind.ROBOT)
+                .withBackoff(Duration.ofMillis(20), Duration.ofMillis(200))) {
+            @Override protected void onCommand(Command command, ActionHandle handle) {
+                handle.started();
+                running.countDown();
+                long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+                while (!handle.isCancelRequested() && System.nanoTime() < deadline) {
+                    pause();
+                }
+                try {
+                    handle.progress(0.5, "half way");
+                    handle.ended("walked");
+                    program.add("reported after " + handle.cancelReason().orElse("no cancel"));
+                } catch (RuntimeException e) {
+                    program.add("thrown at: " + e.getMessage());
+                }
+            }
+
+            @Override protected void onCancel(ActionHandle handle, String reason) {
+                stops.add(reason);
+                super.onCancel(handle, reason);
+            }
+        });
+        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
+        CommandTicket walk = alice.command("scout", "walk", Map.of());
+        assertThat(running.await(10, TimeUnit.SECONDS)).isTrue();
+        assertThat(scout.commandsInFlight()).isOne();
+
+        server.close();
+
+        Eventually.await("the robot's program wound down", () -> !program.isEmpty());
+        assertThat(stops).containsExactly("the connection to the gateway was lost");
+        assertThat(program).containsExactly("reported after the connection to the gateway was lost");
+        assertThat(scout.commandsInFlight()).isZero();
+        assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class)
+                .hasMessageContaining("the connection to the gateway was lost");
+    }
+
+    @Test
     void aCancelWithAnEmptyReason_saysNoReasonWasGiven() throws Exception {
         SlowRobot scout = connect(new SlowRobot(options("scout", AgentKind.ROBOT), false));
         UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
