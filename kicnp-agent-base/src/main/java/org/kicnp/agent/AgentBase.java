@@ -101,7 +101,8 @@ public abstract class AgentBase implements AutoCloseable {
      * the platform. Stop the robot, then report through the handle — {@link ActionHandle#cancelled} for the usual
      * answer. By default the command is reported cancelled at once; the robot's own work on it is not interrupted,
      * so override this where the robot can stop. Runs on a virtual thread of its own. If it throws before the
-     * command was reported done, the SDK reports it cancelled, with the exception's message.
+     * command was reported done, the SDK reports it failed with "cancel failed: " and the exception's message — not
+     * cancelled, since the robot may still be moving; the connection stays.
      */
     protected void onCancel(ActionHandle handle, String reason) {
         handle.cancelled(reason);

@@ -14,7 +14,7 @@ import org.slf4j.LoggerFactory;
  * The robot side of an {@link AgentBase}: runs each command the server sends on a virtual thread of its own through
  * the agent's {@code onCommand}, with an {@link ActionHandle} whose feedback goes to the server, and keeps the
  * commands in flight so that a cancel finds its handle and runs the agent's {@code onCancel} once. A handler that
- * throws ends its command (failed, or cancelled) rather than leave it in flight for good; a lost connection cancels
+ * throws ends its command (failed, or "cancel failed") rather than leave it in flight for good; a lost connection cancels
  * every command in flight, since the server fails them and will not hear of them again.
  */
 final class CommandRunner {
@@ -126,10 +126,12 @@ final class CommandRunner {
             LOG.info("Agent '{}' lost its connection while cancelling '{}'.", agent, handle.command().id());
         } catch (RuntimeException e) {
             LOG.warn("Agent '{}' failed to cancel '{}'.", agent, handle.command().id(), e);
-            // As for a command whose onCommand throws: the command ends, rather than stay in flight for good.
+            // As for a command whose onCommand throws: the command ends, rather than stay in flight for good. Not as
+            // "cancelled", though: the robot may still be moving, and whoever asked it to stop must know.
             try {
                 if (!handle.isDone()) {
-                    handle.cancelled(reason + "; agent '" + agent + "' failed while stopping: " + e.getMessage());
+                    handle.failed("cancel failed: " + (e.getMessage() == null ? e.toString() : e.getMessage())
+                            + " (agent '" + agent + "', asked to stop: " + reason + "); the robot may not have stopped");
                 }
             } catch (NotConnectedException lost) {
                 LOG.info("Agent '{}' could not report the cancel of '{}': {}", agent, handle.command().id(),

@@ -177,9 +177,9 @@ class GatewayCancelTest {
     }
 
     @Test
-    void aRobotWhoseOnCancelThrows_stillEndsTheCommand_cancelledSayingWhatWentWrong() throws Exception {
+    void aRobotWhoseOnCancelThrows_failsTheCommandSayingTheCancelFailed_andKeepsItsConnection() throws Exception {
         CountDownLatch running = new CountDownLatch(1);
-        connect(new AgentBase(options("scout", AgentKind.ROBOT)) {
+        AgentBase scout = connect(new AgentBase(options("scout", AgentKind.ROBOT)) {
             @Override protected void onCommand(Command command, ActionHandle handle) {
                 handle.started(); // the robot works on it elsewhere and reports later
                 running.countDown();
@@ -195,10 +195,13 @@ class GatewayCancelTest {
 
         alice.cancel("scout", walk.command().id(), "stop");
 
+        // Not "cancelled": the robot may still be moving, and whoever asked must know.
         assertThatThrownBy(() -> walk.result(Duration.ofSeconds(5))).isInstanceOf(ActionFailedException.class)
-                .hasMessage("cancelled: stop (asked by 'alice'); agent 'scout' failed while stopping: the brake does "
-                        + "not answer");
+                .hasMessage("cancel failed: the brake does not answer (agent 'scout', asked to stop: stop (asked by "
+                        + "'alice')); the robot may not have stopped");
         Eventually.await("the command is no longer in flight", () -> server.commandsInFlight() == 0);
+        assertThat(scout.commandsInFlight()).isZero();
+        assertThat(scout.isConnected()).isTrue();
     }
 
     @Test
