@@ -11,7 +11,9 @@ import org.kicnp.protocol.Message.Feedback;
 /**
  * How a robot reports on one command: {@link #started()}, any number of {@link #progress}, then exactly one of
  * {@link #ended}, {@link #failed} or {@link #cancelled}. May be used from any thread, also after {@code onCommand}
- * returned. A cancel asked for while it runs shows in {@link #isCancelRequested()}.
+ * returned. A cancel asked for while it runs shows in {@link #isCancelRequested()}. When the agent's connection to the
+ * gateway is lost, the command is cancelled (reason "the connection to the gateway was lost") and every later report
+ * on it is ignored: the gateway has failed it already.
  */
 public final class ActionHandle {
     /** Where feedback goes: the agent's current connection. */
@@ -26,6 +28,8 @@ public final class ActionHandle {
     /** Why a cancel was asked for, or null; once the command is reported cancelled, later reports are ignored. */
     private volatile String cancelReason;
     private volatile boolean reportedCancelled;
+    /** Whether the connection the command came on is gone; its reports then go nowhere, and are dropped. */
+    private volatile boolean cutOff;
 
     ActionHandle(Command command, Sender sender) {
         this.command = requireNonNull(command, "command");
@@ -60,7 +64,7 @@ public final class ActionHandle {
      * robot's work on the command may still be winding down: its later reports (progress, ended, failed) are ignored.
      */
     public void cancelled(String reason) {
-        if (done.compareAndSet(false, true)) {
+        if (done.compareAndSet(false, true) && !cutOff) {
             reportedCancelled = true;
             sender.send(new Feedback(command.id(), command.robot(), FeedbackStage.FAILED, Optional.empty(),
                     "cancelled: " + requireNonNull(reason, "reason")));
@@ -86,6 +90,11 @@ public final class ActionHandle {
         return true;
     }
 
+    /** Marks the command as cut off from the server by a lost connection: later reports are ignored. */
+    void cutOff() {
+        cutOff = true;
+    }
+
     /** Whether {@link #ended} or {@link #failed} was called. */
     public boolean isDone() {
         return done.get();
@@ -101,6 +110,9 @@ public final class ActionHandle {
             }
             throw new IllegalStateException("Command '" + command.id() + "' was already reported as done.");
         }
+        if (cutOff) {
+            return;
+        }
         sender.send(new Feedback(command.id(), command.robot(), stage, Optional.empty(), requireNonNull(detail, "detail")));
     }
 
@@ -114,6 +126,9 @@ public final class ActionHandle {
             }
             throw new IllegalStateException("Command '" + command.id() + "' is done; no more " 
                     + stage.name().toLowerCase(java.util.Locale.ROOT) + " reports.");
+        }
+        if (cutOff) {
+            return;
         }
         sender.send(new Feedback(command.id(), command.robot(), stage, fraction, requireNonNull(note, "note")));
     }

@@ -101,7 +101,8 @@ public abstract class AgentBase implements AutoCloseable {
      * the platform. Stop the robot, then report through the handle — {@link ActionHandle#cancelled} for the usual
      * answer. By default the command is reported cancelled at once; the robot's own work on it is not interrupted,
      * so override this where the robot can stop. Runs on a virtual thread of its own. If it throws before the
-     * command was reported done, the SDK reports it cancelled, with the exception's message.
+     * command was reported done, the SDK reports it failed with "cancel failed: " and the exception's message — not
+     * cancelled, since the robot may still be moving; the connection stays.
      */
     protected void onCancel(ActionHandle handle, String reason) {
         handle.cancelled(reason);
@@ -175,6 +176,11 @@ public abstract class AgentBase implements AutoCloseable {
     /** Whether the agent is registered right now. */
     public final boolean isConnected() {
         return registered;
+    }
+
+    /** How many commands this robot agent took and has neither reported done nor lost with its connection. */
+    public final int commandsInFlight() {
+        return commands.inFlight();
     }
 
     /**
@@ -482,6 +488,8 @@ public abstract class AgentBase implements AutoCloseable {
         tickets.forEach((id, t) -> t.received(new Message.Feedback(id, t.command().robot(), FeedbackStage.FAILED,
                 Optional.empty(), "the connection to the gateway was lost before command '" + id + "' ended")));
         tickets.clear();
+        // The server fails the commands this robot runs, too: cancel them, so that the robot stops and its program hears.
+        commands.connectionLost(closed ? "agent '" + name() + "' was closed" : "the connection to the gateway was lost");
         if (was && !closed) {
             events.execute(() -> onDisconnected("connection lost"));
         }

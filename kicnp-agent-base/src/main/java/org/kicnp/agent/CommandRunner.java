@@ -14,7 +14,8 @@ import org.slf4j.LoggerFactory;
  * The robot side of an {@link AgentBase}: runs each command the server sends on a virtual thread of its own through
  * the agent's {@code onCommand}, with an {@link ActionHandle} whose feedback goes to the server, and keeps the
  * commands in flight so that a cancel finds its handle and runs the agent's {@code onCancel} once. A handler that
- * throws ends its command (failed, or cancelled) rather than leave it in flight for good.
+ * throws ends its command (failed, or "cancel failed") rather than leave it in flight for good; a lost connection cancels
+ * every command in flight, since the server fails them and will not hear of them again.
  */
 final class CommandRunner {
     /** The agent's own logger category, so that logging set up for the SDK still covers these lines. */
@@ -41,9 +42,37 @@ final class CommandRunner {
         this.sender = requireNonNull(sender, "sender");
     }
 
-    /** Runs a command from the server, on a virtual thread of its own; returns at once. */
+    /** How many commands are in flight. */
+    int inFlight() {
+        return running.size();
+    }
+
+    /**
+     * Runs a command from the server, on a virtual thread of its own; returns at once. The command is in flight from
+     * here on, so that a connection lost the next moment cancels it too (see {@link #connectionLost}).
+     */
     void command(Command cmd) {
-        Thread.ofVirtual().name("command-" + cmd.id()).start(() -> run(cmd));
+        ActionHandle handle = new ActionHandle(cmd, f -> report(cmd, f));
+        running.put(cmd.id(), handle);
+        Thread.ofVirtual().name("command-" + cmd.id()).start(() -> run(cmd, handle));
+    }
+
+    /**
+     * The connection the commands in flight came on is gone, and the server fails them: each handle is cut off (its
+     * later reports are ignored) and, unless it is being cancelled already, cancelled with {@code reason}, so that the
+     * agent's {@code onCancel} stops the robot and a program that checks {@link ActionHandle#isCancelRequested()}
+     * winds down, as for a cancel from the server.
+     */
+    void connectionLost(String reason) {
+        for (Map.Entry<String, ActionHandle> e : running.entrySet()) {
+            ActionHandle h = e.getValue();
+            running.remove(e.getKey(), h);
+            h.cutOff();
+            if (!h.isDone() && h.cancelRequested(reason)) {
+                LOG.info("Agent '{}' cancels command '{}': {}.", agent, e.getKey(), reason);
+                Thread.ofVirtual().name("cancel-" + e.getKey()).start(() -> runCancel(h, reason));
+            }
+        }
     }
 
     /**
@@ -61,14 +90,19 @@ final class CommandRunner {
         }
     }
 
-    private void run(Command cmd) {
-        ActionHandle handle = new ActionHandle(cmd, f -> {
-            if (f.stage().terminal()) {
-                running.remove(cmd.id());
-            }
+    private void report(Command cmd, Message.Feedback f) {
+        if (f.stage().terminal()) {
+            running.remove(cmd.id());
+        }
+        try {
             sender.send(f);
-        });
-        running.put(cmd.id(), handle);
+        } catch (NotConnectedException e) {
+            // The connection is going: its loss cancels the command, which is how the robot's program hears of it.
+            LOG.debug("Agent '{}' could not report on '{}': {}", agent, cmd.id(), e.getMessage());
+        }
+    }
+
+    private void run(Command cmd, ActionHandle handle) {
         try {
             onCommand.accept(cmd, handle);
         } catch (NotConnectedException e) {
@@ -92,10 +126,12 @@ final class CommandRunner {
             LOG.info("Agent '{}' lost its connection while cancelling '{}'.", agent, handle.command().id());
         } catch (RuntimeException e) {
             LOG.warn("Agent '{}' failed to cancel '{}'.", agent, handle.command().id(), e);
-            // As for a command whose onCommand throws: the command ends, rather than stay in flight for good.
+            // As for a command whose onCommand throws: the command ends, rather than stay in flight for good. Not as
+            // "cancelled", though: the robot may still be moving, and whoever asked it to stop must know.
             try {
                 if (!handle.isDone()) {
-                    handle.cancelled(reason + "; agent '" + agent + "' failed while stopping: " + e.getMessage());
+                    handle.failed("cancel failed: " + (e.getMessage() == null ? e.toString() : e.getMessage())
+                            + " (agent '" + agent + "', asked to stop: " + reason + "); the robot may not have stopped");
                 }
             } catch (NotConnectedException lost) {
                 LOG.info("Agent '{}' could not report the cancel of '{}': {}", agent, handle.command().id(),

@@ -19,7 +19,8 @@ public interface ActionSink {
 
     /**
      * Asks the robot to stop a command in flight; its answer is the command's last feedback ({@code failed}, with a
-     * reason that starts with "cancelled", or {@code ended} if it finished first). Never blocks on the network.
+     * reason that starts with "cancelled" — or "cancel failed" when the robot's agent could not stop it — or
+     * {@code ended} if it finished first). Never blocks on the network.
      *
      * @return false when no such command is in flight (it ended already, or was never sent)
      */

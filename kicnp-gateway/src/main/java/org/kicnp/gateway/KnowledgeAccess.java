@@ -8,6 +8,7 @@ import java.util.Set;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.stream.Collectors;
 import org.kicnp.core.BatchRejectedException;
 import org.kicnp.core.Change;
 import org.kicnp.core.ChangeSet;
@@ -18,6 +19,7 @@ import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.KnowledgeException;
 import org.kicnp.core.KnowledgeListener;
 import org.kicnp.core.Provenance;
+import org.kicnp.core.Slot;
 import org.kicnp.core.UnknownFrameException;
 import org.kicnp.protocol.AgentKind;
 import org.kicnp.protocol.ChangeKind;
@@ -153,25 +155,9 @@ final class KnowledgeAccess implements KnowledgeListener {
         }
         // A binding that names no instance, or a slot no answer could have, would only make the answer empty: say so.
         for (var b : p.bindings().entrySet()) {
-            Optional<Frame> bound = kb.frame(b.getValue());
-            if (bound.isEmpty()) {
-                return CompletableFuture.completedFuture(ErrorReply.to(p.id(), ErrorCode.UNKNOWN_FRAME, "Binding '"
-                        + b.getKey() + "' names '" + b.getValue() + "', but there is no frame of that name."));
-            }
-            if (!bound.get().isInstance()) {
-                return CompletableFuture.completedFuture(ErrorReply.to(p.id(), ErrorCode.REJECTED, "Binding '"
-                        + b.getKey() + "' names '" + b.getValue() + "', which is a class; a binding names an instance."));
-            }
-            Set<DataType> types = slotTypesAtOrBelow(p.ofClass(), b.getKey());
-            if (types.isEmpty()) {
-                return CompletableFuture.completedFuture(ErrorReply.to(p.id(), ErrorCode.REJECTED, "Neither class '"
-                        + p.ofClass() + "' nor any class below it has a slot '" + b.getKey() + "' to bind."));
-            }
-            if (!types.contains(DataType.INSTANCE) && !types.contains(DataType.FRAME)) {
-                return CompletableFuture.completedFuture(ErrorReply.to(p.id(), ErrorCode.REJECTED, "Slot '"
-                        + b.getKey() + "' of class '" + p.ofClass() + "' holds " + types.stream().map(DataType::xmlName)
-                        .sorted().collect(java.util.stream.Collectors.joining(" or ")) + " values, not instances; "
-                        + "a binding names an instance for an instance slot."));
+            Optional<ErrorReply> refused = refusedBinding(p, b.getKey(), b.getValue());
+            if (refused.isPresent()) {
+                return CompletableFuture.completedFuture(refused.get());
             }
         }
         try {
@@ -182,20 +168,56 @@ final class KnowledgeAccess implements KnowledgeListener {
         }
     }
 
-    /** The types the slot has where {@code cls}, or a class below it, has (or inherits) it; empty when none has. */
-    private Set<DataType> slotTypesAtOrBelow(String cls, String slot) {
+    /**
+     * Why a prove's binding of {@code slot} to {@code instance} could only make the answer empty — no such instance,
+     * a class, a slot no answer has, a slot that holds no instances, or none of the kind named — or empty if it may not.
+     */
+    private Optional<ErrorReply> refusedBinding(Message.Prove p, String slot, String instance) {
+        Optional<Frame> bound = kb.frame(instance);
+        if (bound.isEmpty()) {
+            return Optional.of(ErrorReply.to(p.id(), ErrorCode.UNKNOWN_FRAME, "Binding '" + slot + "' names '" + instance
+                    + "', but there is no frame of that name."));
+        }
+        if (!bound.get().isInstance()) {
+            return Optional.of(ErrorReply.to(p.id(), ErrorCode.REJECTED, "Binding '" + slot + "' names '" + instance
+                    + "', which is a class; a binding names an instance."));
+        }
+        List<Slot> slots = slotsAtOrBelow(p.ofClass(), slot);
+        if (slots.isEmpty()) {
+            return Optional.of(ErrorReply.to(p.id(), ErrorCode.REJECTED, "Neither class '" + p.ofClass()
+                    + "' nor any class below it has a slot '" + slot + "' to bind."));
+        }
+        List<Slot> instanceSlots = slots.stream().filter(s -> s.type() == DataType.INSTANCE || s.type() == DataType.FRAME)
+                .toList();
+        if (instanceSlots.isEmpty()) {
+            return Optional.of(ErrorReply.to(p.id(), ErrorCode.REJECTED, "Slot '" + slot + "' of class '" + p.ofClass()
+                    + "' holds " + slots.stream().map(s -> s.type().xmlName()).distinct().sorted()
+                    .collect(Collectors.joining(" or ")) + " values, not instances; a binding names an instance for an "
+                    + "instance slot."));
+        }
+        if (instanceSlots.stream().noneMatch(s -> s.argument().map(a -> kb.isA(instance, a)).orElse(true))) {
+            return Optional.of(ErrorReply.to(p.id(), ErrorCode.REJECTED, "Binding '" + slot + "' names '" + instance
+                    + "', an instance of '" + bound.get().parent().orElse("") + "', but slot '" + slot + "' of class '"
+                    + p.ofClass() + "' holds instances of " + instanceSlots.stream().flatMap(s -> s.argument().stream())
+                    .distinct().sorted().map(a -> "'" + a + "'").collect(Collectors.joining(" or ")) + " only."));
+        }
+        return Optional.empty();
+    }
+
+    /** The slot as {@code cls}, and each class below it, has (or inherits) it; empty when none has it. */
+    private List<Slot> slotsAtOrBelow(String cls, String slot) {
         java.util.ArrayDeque<String> todo = new java.util.ArrayDeque<>(List.of(cls));
         Set<String> seen = new HashSet<>();
-        Set<DataType> types = java.util.EnumSet.noneOf(DataType.class);
+        List<Slot> slots = new ArrayList<>();
         while (!todo.isEmpty()) {
             String f = todo.pop();
             if (!seen.add(f)) {
                 continue;
             }
-            kb.slot(f, slot).ifPresent(found -> types.add(found.slot().type()));
+            kb.slot(f, slot).ifPresent(found -> slots.add(found.slot()));
             kb.children(f).stream().filter(ch -> !ch.isInstance()).forEach(ch -> todo.push(ch.name()));
         }
-        return types;
+        return slots;
     }
 
     /** Why an instance exists, through the {@link Reasoning}. */

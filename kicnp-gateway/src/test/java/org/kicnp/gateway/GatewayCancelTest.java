@@ -177,9 +177,9 @@ class GatewayCancelTest {
     }
 
     @Test
-    void aRobotWhoseOnCancelThrows_stillEndsTheCommand_cancelledSayingWhatWentWrong() throws Exception {
+    void aRobotWhoseOnCancelThrows_failsTheCommandSayingTheCancelFailed_andKeepsItsConnection() throws Exception {
         CountDownLatch running = new CountDownLatch(1);
-        connect(new AgentBase(options("scout", AgentKind.ROBOT)) {
+        AgentBase scout = connect(new AgentBase(options("scout", AgentKind.ROBOT)) {
             @Override protected void onCommand(Command command, ActionHandle handle) {
                 handle.started(); // the robot works on it elsewhere and reports later
                 running.countDown();
@@ -195,10 +195,56 @@ class GatewayCancelTest {
 
         alice.cancel("scout", walk.command().id(), "stop");
 
+        // Not "cancelled": the robot may still be moving, and whoever asked must know.
         assertThatThrownBy(() -> walk.result(Duration.ofSeconds(5))).isInstanceOf(ActionFailedException.class)
-                .hasMessage("cancelled: stop (asked by 'alice'); agent 'scout' failed while stopping: the brake does "
-                        + "not answer");
+                .hasMessage("cancel failed: the brake does not answer (agent 'scout', asked to stop: stop (asked by "
+                        + "'alice')); the robot may not have stopped");
         Eventually.await("the command is no longer in flight", () -> server.commandsInFlight() == 0);
+        assertThat(scout.commandsInFlight()).isZero();
+        assertThat(scout.isConnected()).isTrue();
+    }
+
+    @Test
+    void theGatewayGoingAway_cancelsTheRobotsCommandsInFlight_andIgnoresTheirLaterReports() throws Exception {
+        List<String> stops = new CopyOnWriteArrayList<>();
+        List<String> program = new CopyOnWriteArrayList<>();
+        CountDownLatch running = new CountDownLatch(1);
+        AgentBase scout = connect(new AgentBase(options("scout", AgentKind.ROBOT)
+                .withBackoff(Duration.ofMillis(20), Duration.ofMillis(200))) {
+            @Override protected void onCommand(Command command, ActionHandle handle) {
+                handle.started();
+                running.countDown();
+                long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+                while (!handle.isCancelRequested() && System.nanoTime() < deadline) {
+                    pause();
+                }
+                try {
+                    handle.progress(0.5, "half way");
+                    handle.ended("walked");
+                    program.add("reported after " + handle.cancelReason().orElse("no cancel"));
+                } catch (RuntimeException e) {
+                    program.add("thrown at: " + e.getMessage());
+                }
+            }
+
+            @Override protected void onCancel(ActionHandle handle, String reason) {
+                stops.add(reason);
+                super.onCancel(handle, reason);
+            }
+        });
+        UserAgent alice = connect(new UserAgent(options("alice", AgentKind.USER)));
+        CommandTicket walk = alice.command("scout", "walk", Map.of());
+        assertThat(running.await(10, TimeUnit.SECONDS)).isTrue();
+        assertThat(scout.commandsInFlight()).isOne();
+
+        server.close();
+
+        Eventually.await("the robot's program wound down", () -> !program.isEmpty());
+        assertThat(stops).containsExactly("the connection to the gateway was lost");
+        assertThat(program).containsExactly("reported after the connection to the gateway was lost");
+        assertThat(scout.commandsInFlight()).isZero();
+        assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class)
+                .hasMessageContaining("the connection to the gateway was lost");
     }
 
     @Test

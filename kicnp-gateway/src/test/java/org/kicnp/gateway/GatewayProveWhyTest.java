@@ -88,6 +88,25 @@ class GatewayProveWhyTest {
     }
 
     @Test
+    void prove_withABindingNamingAnInstanceOfAClassTheSlotDoesNotHold_isRefusedNamingFrameSlotAndInstance() {
+        start(Reasoning.NONE);
+        kb.add(Frame.classFrame("KnownUser").parent("User").build());
+        kb.add(Frame.instance("taro", "KnownUser").build());
+        kb.add(Frame.instance("speech1", "Speech").build());
+
+        refused(() -> alice.prove("AskUserName", Map.of("mUser", "speech1")), ErrorCode.REJECTED,
+                "Binding 'mUser' names 'speech1', an instance of 'Speech', but slot 'mUser' of class 'AskUserName' "
+                        + "holds instances of 'User' only.");
+        refused(() -> alice.prove("Speech", Map.of("mUser", "speech1")), ErrorCode.REJECTED,
+                "Binding 'mUser' names 'speech1', an instance of 'Speech', but slot 'mUser' of class 'Speech' "
+                        + "holds instances of 'User' only.");
+        // An instance of a class below the slot's argument class is a fine binding: it reaches the reasoning.
+        refused(() -> alice.prove("AskUserName", Map.of("mUser", "taro")), ErrorCode.REJECTED,
+                "This server runs no inference engine");
+        assertThat(alice.isConnected()).isTrue();
+    }
+
+    @Test
     void why_ofAClass_isRefused_notExplainedAsIfItWereAnInstance() {
         start(Reasoning.NONE);
 

@@ -88,20 +88,41 @@ final class BackwardChainer {
 
     private List<Proof.Derivable> derive(Rule r, Map<String, Value> partial, int depth, Set<String> using,
                                          Map<String, Map<String, Value>> hypo, Conditions conds) {
+        if (!inheritsBinding(r, partial)) {
+            return List.of();
+        }
         List<List<Proof>> options = new ArrayList<>();
         for (SlotPattern p : r.required()) {
             Value want = partial.get(p.slot());
-            if (want instanceof Value.Ref ref) {
+            if (want == null) {
+                options.add(proofs(p.argument(), depth, using, hypo, conds));
+            } else if (want instanceof Value.Ref ref) {
                 options.add(kb.frame(ref.frame()).filter(f -> f.isInstance() && kb.isA(f.name(), p.argument()))
                         .<List<Proof>>map(f -> List.of(new Proof.Exists(f.name(), f.parent().orElseThrow())))
                         .orElse(List.of()));
             } else {
-                options.add(proofs(p.argument(), depth, using, hypo, conds));
+                return List.of(); // an instance slot holds a reference, never this value
             }
         }
         List<Proof.Derivable> out = new ArrayList<>();
         combine(r, options, 0, new LinkedHashMap<>(), out, hypo, conds);
         return out;
+    }
+
+    /**
+     * Whether an instance the rule would derive holds the bindings of the slots that are not its instance slots: it
+     * inherits their values from the behavior frame, so they are tested as an existing instance's are (a slot the
+     * frame has not holds nothing, and matches no binding). An optional instance slot's binding is not tested: what it
+     * holds depends on what fits when the rule fires.
+     */
+    private boolean inheritsBinding(Rule r, Map<String, Value> partial) {
+        for (Map.Entry<String, Value> e : partial.entrySet()) {
+            if (r.pattern(e.getKey()).isEmpty() && !kb.value(r.frame(), e.getKey())
+                    .map(v -> Values.test(v, Condition.Op.EQ, e.getValue())).orElse(false)) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private void combine(Rule r, List<List<Proof>> options, int k, Map<String, Proof> chosen,

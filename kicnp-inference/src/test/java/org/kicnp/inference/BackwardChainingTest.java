@@ -94,6 +94,23 @@ class BackwardChainingTest {
     }
 
     @Test
+    void ask_withABindingNoDerivationWouldHold_derivesNothing_asNoExistingInstanceWouldMatch() {
+        Fixture f = Fixture.paper();
+        f.assertFact("mouth1", "Mouth");
+        f.assertFact("n1", "NewUser");
+        InferenceEngine e = f.engine();
+
+        assertThat(e.ask("AskUserName", Map.of("mUser", Value.ref("n1")))).singleElement()
+                .satisfies(a -> assertThat(a.slots()).containsEntry("mUser", "n1"));
+        assertThat(e.ask("AskUserName", Map.of("mUser", Value.of("n1")))).as("a string, not a reference").isEmpty();
+        assertThat(e.ask("AskUserName", Map.of("mUser", Value.ref("mouth1")))).as("not a NewUser").isEmpty();
+        assertThat(e.ask("AskUserName", Map.of("mood", Value.of("calm")))).as("a slot AskUserName has not").isEmpty();
+        // A slot that is no instance slot: the instance would inherit the class's value.
+        assertThat(e.ask("AskUserName", Map.of("onInstantiate", Value.of("ask-name")))).hasSize(1);
+        assertThat(e.ask("AskUserName", Map.of("onInstantiate", Value.of("greet")))).isEmpty();
+    }
+
+    @Test
     void prove_throughAJoinCondition_testsTheHypotheticalInstanceSlots() {
         Fixture f = new Fixture();
         f.cls("User", null).cls("Order", null);

@@ -114,7 +114,8 @@ public sealed interface Message {
     /**
      * Asks that a command in flight be stopped (a user or service agent to the server; the server to the robot's
      * agent, with the same command id). The robot decides how to stop and answers with the command's last feedback,
-     * {@code failed} with a reason that starts with "cancelled" (or {@code ended}, when it had already finished).
+     * {@code failed} with a reason that starts with "cancelled" (or {@code ended}, when it had already finished; or
+     * {@code failed} with "cancel failed", when the robot's agent could not stop it and the robot may still move).
      */
     record Cancel(String id, String robot, String command, String reason) implements Request {
         public Cancel {
