@@ -241,6 +241,14 @@ public abstract class AgentBase implements AutoCloseable {
         return ((Message.Explained) request(new Message.Why(nextId(), instance))).reason();
     }
 
+    /**
+     * Why a behavior frame has not fired, with the required slots {@code bindings} names held (slot → instance):
+     * each slot's candidates, then each binding of them with what stops it. Nothing is created, no script runs.
+     */
+    public final Message.NotFired whyNot(String frame, Map<String, String> bindings) {
+        return (Message.NotFired) request(new Message.WhyNot(nextId(), frame, bindings));
+    }
+
     /** Adds or replaces an instance frame (stored as a RUNTIME frame). */
     public final void assertFrame(Frame instance) {
         request(new Message.Assert(nextId(), FrameText.toXml(instance)));
@@ -453,6 +461,7 @@ public abstract class AgentBase implements AutoCloseable {
                 case Message.Answer a -> complete(a.id(), a);
                 case Message.Proofs p -> complete(p.id(), p);
                 case Message.Explained x -> complete(x.id(), x);
+                case Message.NotFired x -> complete(x.id(), x);
                 case Message.AuthResult a -> complete(a.id(), a);
                 case Message.Hello h -> LOG.warn("Agent '{}' ignores an unexpected {}.", name(), h);
                 case Message.Register x -> LOG.warn("Agent '{}' ignores an unexpected register.", name());
@@ -468,6 +477,7 @@ public abstract class AgentBase implements AutoCloseable {
                 case Message.Cancel x -> commands.cancel(x);
                 case Message.Prove x -> LOG.warn("Agent '{}' ignores an unexpected prove.", name());
                 case Message.Why x -> LOG.warn("Agent '{}' ignores an unexpected why.", name());
+                case Message.WhyNot x -> LOG.warn("Agent '{}' ignores an unexpected why_not.", name());
             }
         }
     }

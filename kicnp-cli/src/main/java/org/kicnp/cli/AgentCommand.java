@@ -55,6 +55,7 @@ import picocli.CommandLine.Spec;
             AgentCommand.Ask.class,
             AgentCommand.Prove.class,
             AgentCommand.Why.class,
+            AgentCommand.WhyNot.class,
             AgentCommand.Assert.class,
             AgentCommand.Destroy.class,
             AgentCommand.Watch.class,
@@ -289,6 +290,30 @@ public final class AgentCommand {
                 reason = a.why(instance);
             }
             spec.commandLine().getOut().println(AgentJson.pretty(AgentJson.reason(reason)));
+            return 0;
+        }
+    }
+
+    @Command(name = "why-not", mixinStandardHelpOptions = true,
+            description = "Why a behavior frame has not fired, as one JSON object: {frame, summary, slots: [{slot, "
+                    + "argument, condition, candidates, rejected}], bindings: [{binding, outcome, reason}], truncated}; "
+                    + "the summary also on stderr. Nothing is created and no script runs.")
+    static final class WhyNot extends Subcommand {
+
+        @Parameters(index = "0", paramLabel = "FRAME", description = "The behavior frame.")
+        String frame;
+
+        @Parameters(index = "1..*", paramLabel = "SLOT=INSTANCE", description = "Required slots to hold fixed.")
+        List<String> bindings = new ArrayList<>();
+
+        @Override public Integer call() {
+            Map<String, String> fixed = pairs(spec, bindings);
+            Message.NotFired answer;
+            try (CliAgent a = connect(Hooks.NONE)) {
+                answer = a.whyNot(frame, fixed);
+            }
+            spec.commandLine().getOut().println(AgentJson.pretty(AgentJson.notFired(answer)));
+            spec.commandLine().getErr().println(answer.summary());
             return 0;
         }
     }

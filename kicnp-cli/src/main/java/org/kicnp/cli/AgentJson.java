@@ -72,6 +72,17 @@ final class AgentJson {
         return o;
     }
 
+    /** Why a behavior frame has not fired: {frame, summary, slots: [...], bindings: [...], truncated}. */
+    static ObjectNode notFired(Message.NotFired n) {
+        ObjectNode o = JSON.createObjectNode();
+        o.put("frame", n.frame());
+        o.put("summary", n.summary());
+        o.set("slots", JSON.valueToTree(n.slots()));
+        o.set("bindings", JSON.valueToTree(n.bindings()));
+        o.put("truncated", n.truncated());
+        return o;
+    }
+
     /** Why an instance exists: {instance, ofClass, derived, binding, conditions, supports: [...]}. */
     static ObjectNode reason(Message.Reason r) {
         ObjectNode o = JSON.createObjectNode();

@@ -8,6 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
@@ -31,6 +32,7 @@ import org.kicnp.gateway.FeedbackListener;
 import org.kicnp.gateway.GatewayConfig;
 import org.kicnp.gateway.GatewayServer;
 import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.Message;
 import org.kicnp.protocol.Message.Command;
 
 /** {@code kicnp agent} against a real gateway on loopback, with real agents on the other end. */
@@ -276,7 +278,7 @@ class AgentCommandTest {
     }
 
     @Test
-    void proveAndWhy_onAGatewayWithoutAnEngine_sayThereIsNone() {
+    void proveWhyAndWhyNot_onAGatewayWithoutAnEngine_sayThereIsNone() {
         CliRun prove = agent("prove", "Person");
         assertThat(prove.exitCode()).isEqualTo(1);
         assertThat(prove.err()).contains("kicnp agent prove: This server runs no inference engine, so it cannot "
@@ -293,6 +295,30 @@ class AgentCommandTest {
 
         CliRun unknown = agent("why", "nobody");
         assertThat(unknown.err()).contains("There is no frame named 'nobody'.");
+
+        CliRun whyNot = agent("why-not", "Person");
+        assertThat(whyNot.exitCode()).isEqualTo(1);
+        assertThat(whyNot.err()).contains("kicnp agent why-not: This server runs no inference engine");
+        CliRun badBinding = agent("why-not", "Person", "ken");
+        assertThat(badBinding.exitCode()).isEqualTo(2);
+        assertThat(badBinding.err()).contains("Argument 'ken' is not NAME=VALUE.");
+    }
+
+    @Test
+    void whyNotsJson_carriesTheSummarySlotsAndBindings_asTheHelpSays() throws Exception {
+        Message.NotFired answer = new Message.NotFired("1", "Greeting", "'Greeting' has 1 binding: 1 blocked.",
+                List.of(new Message.SlotCandidates("mUser", "KnownUser", "COND_ANY", List.of("taro"), List.of())),
+                List.of(new Message.BindingOutcome(Map.of("mUser", "taro"), "blocked",
+                        "refraction: this binding has already fired")), false);
+
+        JsonNode json = JSON.readTree(AgentJson.pretty(AgentJson.notFired(answer)));
+
+        assertThat(json.get("frame").asText()).isEqualTo("Greeting");
+        assertThat(json.get("summary").asText()).isEqualTo("'Greeting' has 1 binding: 1 blocked.");
+        assertThat(json.get("slots").get(0).get("candidates").get(0).asText()).isEqualTo("taro");
+        assertThat(json.get("bindings").get(0).get("binding").get("mUser").asText()).isEqualTo("taro");
+        assertThat(json.get("bindings").get(0).get("outcome").asText()).isEqualTo("blocked");
+        assertThat(json.get("truncated").asBoolean()).isFalse();
     }
 
     @Test

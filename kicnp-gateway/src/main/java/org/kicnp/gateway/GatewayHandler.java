@@ -146,6 +146,7 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter {
             case Message.Pull p -> reply(kb.pull(p));
             case Message.Prove p -> kb.prove(p).thenAccept(this::reply);
             case Message.Why w -> kb.why(w).thenAccept(this::reply);
+            case Message.WhyNot w -> kb.whyNot(w).thenAccept(this::reply);
             case Message.ErrorReply e -> LOG.info("Agent {} reports {}: {}", session, e.code(), e.message());
             case Message.AuthResult m -> serverOnly("auth_result");
             case Message.Ack m -> serverOnly("ack");
@@ -154,6 +155,7 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter {
             case Message.Changed m -> serverOnly("changed");
             case Message.Proofs m -> serverOnly("proofs");
             case Message.Explained m -> serverOnly("explained");
+            case Message.NotFired m -> serverOnly("not_fired");
         }
     }
 

@@ -238,6 +238,19 @@ final class KnowledgeAccess implements KnowledgeListener {
         }
     }
 
+    /** Why a behavior frame has not fired, through the {@link Reasoning}. */
+    CompletableFuture<Message> whyNot(Message.WhyNot w) {
+        if (!kb.contains(w.frame())) {
+            return CompletableFuture.completedFuture(unknown(w.id(), w.frame()));
+        }
+        try {
+            return reasoning.whyNot(w.id(), w.frame(), w.bindings()).handle((answer, failure) -> failure == null
+                    ? answer : refusal(w.id(), cause(failure)));
+        } catch (RuntimeException e) {
+            return CompletableFuture.completedFuture(refusal(w.id(), e));
+        }
+    }
+
     /** Whether an exception's message is a sentence for the agent (the platform's refusals are), not a JDK detail. */
     private static boolean isSentence(Throwable e) {
         return e.getMessage() != null && e.getMessage().endsWith(".");

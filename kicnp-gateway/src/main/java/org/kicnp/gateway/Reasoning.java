@@ -18,13 +18,25 @@ public interface Reasoning {
     /** Why an instance exists, back to the stimuli. */
     CompletableFuture<Message.Reason> why(String instance);
 
-    /** A gateway without an inference engine: both are refused, saying so. */
+    /**
+     * Why a behavior frame has not fired, with the slots {@code bindings} names held (slot → instance): the answer
+     * to the request {@code id}. Refused (a failed future whose message is a sentence) when the frame is not a
+     * behavior frame or a binding names a slot it does not require.
+     */
+    CompletableFuture<Message.NotFired> whyNot(String id, String frame, Map<String, String> bindings);
+
+    /** A gateway without an inference engine: each is refused, saying so. */
     Reasoning NONE = new Reasoning() {
         @Override public CompletableFuture<List<Message.ProofNode>> prove(String ofClass, Map<String, String> b) {
             return CompletableFuture.failedFuture(none());
         }
 
         @Override public CompletableFuture<Message.Reason> why(String instance) {
+            return CompletableFuture.failedFuture(none());
+        }
+
+        @Override public CompletableFuture<Message.NotFired> whyNot(String id, String frame,
+                                                                    Map<String, String> bindings) {
             return CompletableFuture.failedFuture(none());
         }
 

@@ -113,6 +113,8 @@ class GatewayProveWhyTest {
         refused(() -> alice.why("AskUserName"), ErrorCode.REJECTED,
                 "Frame 'AskUserName' is a class; why explains instances only.");
         refused(() -> alice.why("userA"), ErrorCode.REJECTED, "This server runs no inference engine");
+        refused(() -> alice.whyNot("AskUserName", Map.of()), ErrorCode.REJECTED, "This server runs no inference engine");
+        refused(() -> alice.whyNot("Nope", Map.of()), ErrorCode.UNKNOWN_FRAME, "Nope");
     }
 
     @Test
@@ -125,10 +127,16 @@ class GatewayProveWhyTest {
             @Override public CompletableFuture<Message.Reason> why(String instance) {
                 throw new IllegalStateException("The inference engine is still starting.");
             }
+
+            @Override public CompletableFuture<Message.NotFired> whyNot(String id, String frame, Map<String, String> b) {
+                return CompletableFuture.failedFuture(new IllegalArgumentException("Frame '" + frame
+                        + "' is not a behavior frame: it has no required instance slot, so the engine never fires it."));
+            }
         });
 
         refused(() -> alice.prove("AskUserName", Map.of()), ErrorCode.REJECTED, "A frame reference needs a frame name.");
         refused(() -> alice.why("userA"), ErrorCode.REJECTED, "The inference engine is still starting.");
+        refused(() -> alice.whyNot("User", Map.of()), ErrorCode.REJECTED, "Frame 'User' is not a behavior frame");
         assertThat(alice.isConnected()).isTrue();
         assertThat(alice.query("User")).hasSize(1);
     }

@@ -20,7 +20,7 @@ public sealed interface Message {
 
     /** A message that expects an answer echoing its {@link #id()}. */
     sealed interface Request extends Message permits Hello, Register, Relay, Command, Query, Ask, Assert, Destroy,
-            Subscribe, Unsubscribe, Push, Pull, Prove, Why, Cancel {
+            Subscribe, Unsubscribe, Push, Pull, Prove, Why, WhyNot, Cancel {
         /** The correlation id, chosen by the sender and echoed by the answer. */
         String id();
     }
@@ -313,6 +313,58 @@ public sealed interface Message {
             binding = ordered(binding);
             conditions = List.copyOf(conditions);
             supports = List.copyOf(supports);
+        }
+    }
+
+    /**
+     * Why the behavior frame {@code frame} has not fired, with the required slots {@code bindings} names held fixed
+     * (slot → instance). Nothing is created and no script runs on the server.
+     */
+    record WhyNot(String id, String frame, Map<String, String> bindings) implements Request {
+        public WhyNot {
+            requireNonNull(id, "id");
+            requireNonNull(frame, "frame");
+            bindings = ordered(bindings);
+        }
+    }
+
+    /**
+     * The answer to a {@code why_not}: a one-sentence {@code summary}; each required slot with the instances that
+     * could fill it and those its own condition turns away; then each binding of them (up to the server's answer
+     * limit, {@code truncated} beyond) with its {@code outcome} and the reason.
+     */
+    record NotFired(String id, String frame, String summary, List<SlotCandidates> slots, List<BindingOutcome> bindings,
+                    boolean truncated) implements Message {
+        public NotFired {
+            requireNonNull(id, "id");
+            requireNonNull(frame, "frame");
+            requireNonNull(summary, "summary");
+            slots = List.copyOf(slots);
+            bindings = List.copyOf(bindings);
+        }
+    }
+
+    /** A required slot of a {@code not_fired}: its class and condition, its candidates, and those turned away. */
+    record SlotCandidates(String slot, String argument, String condition, List<String> candidates,
+                          List<String> rejected) {
+        public SlotCandidates {
+            requireNonNull(slot, "slot");
+            requireNonNull(argument, "argument");
+            requireNonNull(condition, "condition");
+            candidates = List.copyOf(candidates);
+            rejected = List.copyOf(rejected);
+        }
+    }
+
+    /**
+     * One binding of a {@code not_fired} (slot → instance) and what stops it: {@code condition_false},
+     * {@code blocked}, {@code waiting}, {@code script_condition} or {@code would_fire}.
+     */
+    record BindingOutcome(Map<String, String> binding, String outcome, String reason) {
+        public BindingOutcome {
+            binding = ordered(binding);
+            requireNonNull(outcome, "outcome");
+            requireNonNull(reason, "reason");
         }
     }
 

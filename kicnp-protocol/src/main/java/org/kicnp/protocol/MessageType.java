@@ -34,6 +34,8 @@ public enum MessageType {
     PROOFS(Message.Proofs.class),
     WHY(Message.Why.class),
     EXPLAINED(Message.Explained.class),
+    WHY_NOT(Message.WhyNot.class),
+    NOT_FIRED(Message.NotFired.class),
     ERROR(Message.ErrorReply.class);
 
     private static final Map<String, MessageType> BY_WIRE_NAME =

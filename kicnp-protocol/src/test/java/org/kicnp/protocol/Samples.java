@@ -52,6 +52,14 @@ final class Samples {
                 new Message.Explained("14", new Message.Reason("AskUserName-1", "AskUserName", true,
                         Map.of("mUser", "userA"), List.of("mUser: Any = userA"), List.of(new Message.Reason("userA",
                         "NewUser", false, Map.of(), List.of(), List.of())))),
+                new Message.WhyNot("15", "Greeting", Map.of("mMouth", "mouth1")),
+                new Message.WhyNot("16", "Greeting", Map.of()),
+                new Message.NotFired("15", "Greeting", "'Greeting' has 1 binding: 1 blocked.", List.of(
+                        new Message.SlotCandidates("mUser", "KnownUser", "COND_ANY", List.of("taro"), List.of()),
+                        new Message.SlotCandidates("mMouth", "Mouth", "COND_ANY", List.of("mouth1"),
+                                List.of("mouth2: .open == true is false ('mouth2'.open is false)"))),
+                        List.of(new Message.BindingOutcome(Map.of("mUser", "taro"), "blocked",
+                                "refraction: this binding has already fired")), false),
                 Message.ErrorReply.to("3", ErrorCode.UNKNOWN_AGENT, "No agent 'pino' is connected."),
                 Message.ErrorReply.of(ErrorCode.BAD_JSON, "The frame is not valid JSON."));
     }

@@ -84,7 +84,7 @@ final class SchemaGenerator {
 
     /** The records that are parts of messages, not messages: each defined once under {@code $defs}. */
     private static final java.util.List<Class<?>> NESTED = java.util.List.of(Message.ProofNode.class,
-            Message.Reason.class);
+            Message.Reason.class, Message.SlotCandidates.class, Message.BindingOutcome.class);
 
     private static String defName(Class<?> c) {
         return Character.toLowerCase(c.getSimpleName().charAt(0)) + c.getSimpleName().substring(1);

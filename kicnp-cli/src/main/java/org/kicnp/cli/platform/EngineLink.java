@@ -2,6 +2,7 @@ package org.kicnp.cli.platform;
 
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
@@ -18,6 +19,7 @@ import org.kicnp.inference.Derivation;
 import org.kicnp.inference.Explanation;
 import org.kicnp.inference.InferenceEngine;
 import org.kicnp.inference.Proof;
+import org.kicnp.inference.WhyNot;
 import org.kicnp.protocol.Message;
 
 /**
@@ -27,7 +29,7 @@ import org.kicnp.protocol.Message;
  *   <li>{@link Retraction}: the runtime frames of an agent that left, and an instance an agent destroys, go through
  *   the engine — the frame and every instance derived from it in one batch (a plain removal is refused while a derived
  *   instance refers to the frame);</li>
- *   <li>{@link Reasoning}: backward chaining and explanations ({@code prove}, {@code why}), turned into the
+ *   <li>{@link Reasoning}: backward chaining and explanations ({@code prove}, {@code why}, {@code why_not}), turned into the
  *   protocol's records.</li>
  * </ul>
  * The gateway starts before the engine exists; until the engine is {@linkplain #attach attached}, frames are removed
@@ -92,6 +94,11 @@ final class EngineLink implements Retraction, Reasoning {
         return onEngine(e -> reason(e.why(instance)));
     }
 
+    @Override public CompletableFuture<Message.NotFired> whyNot(String id, String frame,
+                                                                Map<String, String> bindings) {
+        return onEngine(e -> notFired(id, e.whyNot(frame, bindings)));
+    }
+
     private <T> CompletableFuture<T> onEngine(Function<InferenceEngine, T> work) {
         InferenceEngine e = engine.get();
         if (e == null) {
@@ -109,6 +116,13 @@ final class EngineLink implements Retraction, Reasoning {
                 yield new Message.ProofNode(d.frame(), Optional.empty(), slots, d.assumptions());
             }
         };
+    }
+
+    static Message.NotFired notFired(String id, WhyNot w) {
+        return new Message.NotFired(id, w.frame(), w.summary(), w.slots().stream().map(s -> new Message.SlotCandidates(
+                s.slot(), s.argument(), s.condition(), s.candidates(), s.rejected())).toList(),
+                w.bindings().stream().map(v -> new Message.BindingOutcome(v.binding(),
+                        v.outcome().name().toLowerCase(Locale.ROOT), v.reason())).toList(), w.truncated());
     }
 
     static Message.Reason reason(Explanation e) {

@@ -185,7 +185,7 @@ class PlatformTest {
     }
 
     @Test
-    void serve_agentsProveAndAskWhy_throughTheEngine() throws Exception {
+    void serve_agentsProveAndAskWhyAndWhyNot_throughTheEngine() throws Exception {
         Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
         try (Platform platform = Platform.start(PlatformConfig.of(kb).withEphemeralPorts());
              UserAgent user = user(platform)) {
@@ -207,6 +207,19 @@ class PlatformTest {
 
             assertThatThrownBy(() -> user.why("nobody")).isInstanceOf(RequestRefusedException.class)
                     .hasMessageContaining("'nobody'");
+
+            // Why not: AskUserName has fired for userA (refraction); Greeting has no known user to greet.
+            Message.NotFired again = user.whyNot("AskUserName", Map.of("mUser", "userA"));
+            assertThat(again.bindings()).singleElement().satisfies(b -> {
+                assertThat(b.outcome()).isEqualTo("blocked");
+                assertThat(b.reason()).isEqualTo("refraction: this binding has already fired");
+            });
+            assertThat(user.whyNot("Greeting", Map.of()).summary()).isEqualTo("'Greeting' cannot fire: nothing can "
+                    + "fill its slot 'mUser' (there is no instance of 'KnownUser').");
+            assertThatThrownBy(() -> user.whyNot("User", Map.of())).isInstanceOf(RequestRefusedException.class)
+                    .hasMessage("Frame 'User' is not a behavior frame: it has no required instance slot, so the engine "
+                            + "never fires it.");
+            assertThat(user.isConnected()).isTrue();
         }
     }
 
