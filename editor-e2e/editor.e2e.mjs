@@ -206,6 +206,14 @@ try {
   check((await page.textContent('#ask-answers')).includes('refraction: this binding has already fired'),
     'why not does not say the binding fired already');
   await page.screenshot({ path: join(artifacts, '04b-why-not.png') });
+  await tree.locator('[data-frame="AskUserName"]').first().click();
+  await page.locator('#frame-title', { hasText: 'AskUserName' }).waitFor();
+  await page.click('#why-not-frame-button');
+  await page.locator('#inference-panel').waitFor({ state: 'visible' });
+  await page.locator('#ask-answers li.why-not-summary', { hasText: "'AskUserName' has 1 binding: 1 blocked." }).waitFor();
+  await tree.locator('[data-frame="Mouth"]').first().click();
+  await page.locator('#frame-title', { hasText: 'Mouth' }).waitFor();
+  check(await page.isHidden('#why-not-frame-button'), 'Why not? is offered on a class that is no behavior frame');
 
   step = 'delete an instance: what was derived from it goes too';
   await tree.locator('[data-frame="mouth1"]').click();

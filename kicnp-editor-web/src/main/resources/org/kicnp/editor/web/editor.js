@@ -207,6 +207,13 @@ function wire() {
   $('ask-form').addEventListener('submit', askInference);
   $('prove-button').addEventListener('click', proveInference);
   $('why-not-button').addEventListener('click', whyNotInference);
+  $('why-not-frame-button').addEventListener('click', async () => {
+    const frame = state.frame.name;
+    await openInference();
+    if ($('inference-panel').hidden) return; // the unsaved changes were kept
+    $('ask-class').value = frame;
+    await whyNotInference();
+  });
   $('import-apply').addEventListener('click', applyImport);
   $('world-button').addEventListener('click', openWorld);
   $('world-refresh').addEventListener('click', openWorld);

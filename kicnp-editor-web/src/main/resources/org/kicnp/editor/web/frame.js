@@ -64,6 +64,9 @@ export function renderFrame() {
     $(id).disabled = !editable;
   }
   $('new-child-button').disabled = !editable || f.kind !== 'CLASS';
+  // A behavior frame (a class with a required instance slot, its own or inherited) can be asked why it has not fired.
+  $('why-not-frame-button').hidden = !state.session.inference || f.kind !== 'CLASS'
+    || !f.effectiveSlots.some((e) => e.slot.required && e.slot.type === 'TYPE_INSTANCE');
   $('save-button').disabled = !editable || !state.dirty;
   $('revert-button').disabled = !state.dirty;
   renderItems(editable);
