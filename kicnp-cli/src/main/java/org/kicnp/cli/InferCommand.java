@@ -199,14 +199,23 @@ public final class InferCommand implements Callable<Integer> {
         out.println("Why not " + w.frame() + ": " + w.summary());
         for (WhyNot.SlotCandidates s : w.slots()) {
             out.println("  slot " + s.slot() + " (" + s.argument() + ", " + s.condition() + "): "
-                    + (s.candidates().isEmpty() ? "no candidate" : String.join(" ", s.candidates())));
+                    + (s.candidates().isEmpty() ? "no candidate" : String.join(" ", s.candidates()))
+                    + more(s.candidateCount(), s.candidates().size()));
             s.rejected().forEach(r -> out.println("    turned away: " + r));
+            if (s.rejectedCount() > s.rejected().size()) {
+                out.println("    turned away:" + more(s.rejectedCount(), s.rejected().size()));
+            }
         }
         for (WhyNot.Verdict v : w.bindings()) {
             StringBuilder sb = new StringBuilder("  ");
             v.binding().forEach((slot, fact) -> sb.append(slot).append('=').append(fact).append(' '));
             out.println(sb.append("-> ").append(v.outcome().phrase()).append(": ").append(v.reason()));
         }
+    }
+
+    /** " … and N more" when a list was cut at the engine's answer limit, else "". */
+    private static String more(int count, int listed) {
+        return count > listed ? " … and " + (count - listed) + " more" : "";
     }
 
     private static void print(PrintWriter out, KnowledgeBase kb, Map<String, String> created, List<Action> sent) {

@@ -307,7 +307,7 @@ class AgentCommandTest {
     @Test
     void whyNotsJson_carriesTheSummarySlotsAndBindings_asTheHelpSays() throws Exception {
         Message.NotFired answer = new Message.NotFired("1", "Greeting", "'Greeting' has 1 binding: 1 blocked.",
-                List.of(new Message.SlotCandidates("mUser", "KnownUser", "COND_ANY", List.of("taro"), List.of())),
+                List.of(new Message.SlotCandidates("mUser", "KnownUser", "COND_ANY", List.of("taro"), List.of(), 1, 0)),
                 List.of(new Message.BindingOutcome(Map.of("mUser", "taro"), "blocked",
                         "refraction: this binding has already fired")), false);
 

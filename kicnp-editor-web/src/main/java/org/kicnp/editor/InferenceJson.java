@@ -126,6 +126,8 @@ final class InferenceJson {
             row.put("condition", s.condition());
             row.put("candidates", s.candidates());
             row.put("rejected", s.rejected());
+            row.put("candidateCount", s.candidateCount());
+            row.put("rejectedCount", s.rejectedCount());
             slots.add(row);
         }
         out.put("slots", slots);

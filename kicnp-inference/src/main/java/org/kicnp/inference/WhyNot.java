@@ -29,13 +29,17 @@ public record WhyNot(String frame, List<SlotCandidates> slots, List<Verdict> bin
 
     /**
      * One required slot: the class it needs, its condition's text ({@code COND_ANY} when it has none), the instances
-     * that could fill it, and those its condition rejects on their own ("name: why"), which no binding uses.
+     * that could fill it, and those its condition rejects on their own ("name: why"), which no binding uses. Each
+     * list holds at most the engine's answer limit; the counts say how many there are.
      */
     public record SlotCandidates(String slot, String argument, String condition, List<String> candidates,
-                                 List<String> rejected) {
+                                 List<String> rejected, int candidateCount, int rejectedCount) {
         public SlotCandidates {
             candidates = List.copyOf(candidates);
             rejected = List.copyOf(rejected);
+            if (candidateCount < candidates.size() || rejectedCount < rejected.size()) {
+                throw new IllegalArgumentException("A count is smaller than its list.");
+            }
         }
     }
 
@@ -77,13 +81,13 @@ public record WhyNot(String frame, List<SlotCandidates> slots, List<Verdict> bin
     /** One sentence: which slot has nothing to fill it, or how many bindings there are and what became of them. */
     public String summary() {
         for (SlotCandidates s : slots) {
-            if (s.candidates().isEmpty()) {
-                String why = s.rejected().isEmpty()
+            if (s.candidateCount() == 0) {
+                int n = s.rejectedCount();
+                String why = n == 0
                         ? "there is no instance of '" + s.argument() + "'"
-                        : s.rejected().size() + " instance" + (s.rejected().size() == 1 ? " of '" : "s of '")
-                                + s.argument() + "' exist" + (s.rejected().size() == 1 ? "s" : "")
-                                + " but its condition " + s.condition() + " turns " + (s.rejected().size() == 1
-                                ? "it" : "them all") + " away";
+                        : n + " instance" + (n == 1 ? " of '" : "s of '") + s.argument() + "' exist" + (n == 1 ? "s" : "")
+                                + " but its condition " + s.condition() + " turns " + (n == 1 ? "it" : "them all")
+                                + " away";
                 return "'" + frame + "' cannot fire: nothing can fill its slot '" + s.slot() + "' (" + why + ").";
             }
         }

@@ -43,21 +43,25 @@ final class WhyNotCheck {
         for (SlotPattern p : r.required()) {
             List<String> candidates = new ArrayList<>();
             List<String> rejected = new ArrayList<>();
+            int[] turnedAway = {0};
             String given = partial.get(p.slot());
             if (given != null) {
                 Optional<Frame> f = kb.frame(given);
                 if (f.isEmpty() || !f.get().isInstance() || !kb.isA(given, p.argument())) {
+                    turnedAway[0]++;
                     rejected.add(given + ": " + (f.isEmpty() ? "there is no frame of that name"
                             : "not an instance of '" + p.argument() + "'"));
                 } else {
-                    sort(r, p, given, candidates, rejected);
+                    sort(r, p, given, candidates, rejected, turnedAway);
                 }
             } else {
                 for (Frame f : kb.instancesOf(p.argument())) {
-                    sort(r, p, f.name(), candidates, rejected);
+                    sort(r, p, f.name(), candidates, rejected, turnedAway);
                 }
             }
-            slots.add(new WhyNot.SlotCandidates(p.slot(), p.argument(), p.conditionText(), candidates, rejected));
+            slots.add(new WhyNot.SlotCandidates(p.slot(), p.argument(), p.conditionText(),
+                    candidates.subList(0, Math.min(limit, candidates.size())), rejected, candidates.size(),
+                    turnedAway[0]));
             pools.add(candidates);
         }
         List<WhyNot.Verdict> verdicts = new ArrayList<>();
@@ -66,10 +70,17 @@ final class WhyNotCheck {
         return new WhyNot(r.frame(), slots, verdicts, !complete && pools.stream().noneMatch(List::isEmpty));
     }
 
-    /** A candidate goes to the slot's candidates, or to its rejected ones when its own condition is false for it. */
-    private void sort(Rule r, SlotPattern p, String instance, List<String> candidates, List<String> rejected) {
+    /**
+     * A candidate goes to the slot's candidates, or is counted as turned away when its own condition is false for it
+     * (and listed, with the value tested, while the list is under the limit).
+     */
+    private void sort(Rule r, SlotPattern p, String instance, List<String> candidates, List<String> rejected,
+                      int[] turnedAway) {
         if (p.alpha() && !p.isScript() && !conditions.holds(p.condition(), Value.ref(instance), r.frame(), Map.of())) {
-            rejected.add(instance + ": " + falseFor(p, instance));
+            turnedAway[0]++;
+            if (rejected.size() < limit) {
+                rejected.add(instance + ": " + falseFor(p, instance));
+            }
         } else {
             candidates.add(instance);
         }

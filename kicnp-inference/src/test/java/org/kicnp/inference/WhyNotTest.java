@@ -187,7 +187,32 @@ class WhyNotTest {
 
         assertThat(w.bindings()).hasSize(3);
         assertThat(w.truncated()).isTrue();
+        assertThat(w.slots().getFirst().candidates()).as("listed up to the limit").hasSize(3);
+        assertThat(w.slots().getFirst().candidateCount()).isEqualTo(3);
         assertThat(w.summary()).startsWith("'Pair' has more than 3 bindings: 3 fails a condition");
+    }
+
+    @Test
+    void whyNot_listsCandidatesAndTurnedAwayInstancesUpToTheLimit_andCountsThemAll() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Order", null);
+        f.kb.add(Frame.classFrame("Deliver").slot(Fixture.inst("mUser", "User"))
+                .slot(Fixture.inst("mOrder", "Order", ".drink == \"tea\"")).build());
+        InferenceEngine e = f.engine(new EngineOptions(10_000, Duration.ofSeconds(30), 8, 2));
+        for (int i = 0; i < 5; i++) {
+            f.assertFact("u" + i, "User");
+            f.assertFact("o" + i, "Order", "drink", "coffee");
+        }
+        e.runToQuiescence();
+
+        WhyNot w = e.whyNot("Deliver", Map.of());
+
+        assertThat(w.slots().get(0).candidates()).containsExactly("u0", "u1");
+        assertThat(w.slots().get(0).candidateCount()).isEqualTo(5);
+        assertThat(w.slots().get(1).rejected()).hasSize(2);
+        assertThat(w.slots().get(1).rejectedCount()).isEqualTo(5);
+        assertThat(w.summary()).isEqualTo("'Deliver' cannot fire: nothing can fill its slot 'mOrder' (5 instances of "
+                + "'Order' exist but its condition .drink == \"tea\" turns them all away).");
     }
 
     /** Pair(mA: A, mB: B) joined on equal keys. */

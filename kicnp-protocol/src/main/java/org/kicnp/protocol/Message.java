@@ -344,9 +344,12 @@ public sealed interface Message {
         }
     }
 
-    /** A required slot of a {@code not_fired}: its class and condition, its candidates, and those turned away. */
+    /**
+     * A required slot of a {@code not_fired}: its class and condition, its candidates, and those turned away; each
+     * list is cut at the server's answer limit, the counts say how many there are.
+     */
     record SlotCandidates(String slot, String argument, String condition, List<String> candidates,
-                          List<String> rejected) {
+                          List<String> rejected, int candidateCount, int rejectedCount) {
         public SlotCandidates {
             requireNonNull(slot, "slot");
             requireNonNull(argument, "argument");

@@ -55,9 +55,9 @@ final class Samples {
                 new Message.WhyNot("15", "Greeting", Map.of("mMouth", "mouth1")),
                 new Message.WhyNot("16", "Greeting", Map.of()),
                 new Message.NotFired("15", "Greeting", "'Greeting' has 1 binding: 1 blocked.", List.of(
-                        new Message.SlotCandidates("mUser", "KnownUser", "COND_ANY", List.of("taro"), List.of()),
+                        new Message.SlotCandidates("mUser", "KnownUser", "COND_ANY", List.of("taro"), List.of(), 1, 0),
                         new Message.SlotCandidates("mMouth", "Mouth", "COND_ANY", List.of("mouth1"),
-                                List.of("mouth2: .open == true is false ('mouth2'.open is false)"))),
+                                List.of("mouth2: .open == true is false ('mouth2'.open is false)"), 1, 1)),
                         List.of(new Message.BindingOutcome(Map.of("mUser", "taro"), "blocked",
                                 "refraction: this binding has already fired")), false),
                 Message.ErrorReply.to("3", ErrorCode.UNKNOWN_AGENT, "No agent 'pino' is connected."),

@@ -120,7 +120,8 @@ final class EngineLink implements Retraction, Reasoning {
 
     static Message.NotFired notFired(String id, WhyNot w) {
         return new Message.NotFired(id, w.frame(), w.summary(), w.slots().stream().map(s -> new Message.SlotCandidates(
-                s.slot(), s.argument(), s.condition(), s.candidates(), s.rejected())).toList(),
+                s.slot(), s.argument(), s.condition(), s.candidates(), s.rejected(), s.candidateCount(),
+                s.rejectedCount())).toList(),
                 w.bindings().stream().map(v -> new Message.BindingOutcome(v.binding(),
                         v.outcome().name().toLowerCase(Locale.ROOT), v.reason())).toList(), w.truncated());
     }

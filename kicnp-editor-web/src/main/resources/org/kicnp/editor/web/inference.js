@@ -112,7 +112,8 @@ export async function whyNotInference() {
     const slots = w.slots.map((s) => el('li', {},
       el('span', { class: 'what', text: s.slot }),
       el('span', { class: 'how', text: ' (' + s.argument + ', ' + s.condition + '): '
-        + (s.candidates.length ? s.candidates.join(', ') : 'no candidate') }),
+        + (s.candidates.length ? s.candidates.join(', ') : 'no candidate')
+        + (s.candidateCount > s.candidates.length ? ' … and ' + (s.candidateCount - s.candidates.length) + ' more' : '') }),
       s.rejected.length ? el('ul', {}, s.rejected.map((r) => el('li', { class: 'muted', text: 'turned away: ' + r }))) : null));
     const bindings = w.bindings.map((b) => el('li', { class: 'why-not-' + b.outcome },
       el('span', { class: 'what', text: Object.entries(b.binding).map(([k, v]) => k + '=' + v).join(', ') }),
