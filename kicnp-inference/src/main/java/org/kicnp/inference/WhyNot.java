@@ -72,9 +72,14 @@ public record WhyNot(String frame, List<SlotCandidates> slots, List<Verdict> bin
             this.phrase = phrase;
         }
 
-        /** How the outcome reads in a sentence. */
+        /** How the outcome reads in a sentence, of one binding. */
         public String phrase() {
             return phrase;
+        }
+
+        /** How the outcome reads after a count of bindings ("2 fail a condition"). */
+        public String phrase(int count) {
+            return count != 1 && this == CONDITION_FALSE ? "fail a condition" : phrase;
         }
     }
 
@@ -99,7 +104,7 @@ public record WhyNot(String frame, List<SlotCandidates> slots, List<Verdict> bin
             counts.merge(v.outcome(), 1, Integer::sum);
         }
         StringJoiner parts = new StringJoiner(", ");
-        counts.forEach((o, n) -> parts.add(n + " " + o.phrase()));
+        counts.forEach((o, n) -> parts.add(n + " " + o.phrase(n)));
         return "'" + frame + "' has " + (truncated ? "more than " : "") + bindings.size() + " binding"
                 + (bindings.size() == 1 ? "" : "s") + ": " + parts + ".";
     }

@@ -189,7 +189,7 @@ class WhyNotTest {
         assertThat(w.truncated()).isTrue();
         assertThat(w.slots().getFirst().candidates()).as("listed up to the limit").hasSize(3);
         assertThat(w.slots().getFirst().candidateCount()).isEqualTo(3);
-        assertThat(w.summary()).startsWith("'Pair' has more than 3 bindings: 3 fails a condition");
+        assertThat(w.summary()).isEqualTo("'Pair' has more than 3 bindings: 3 fail a condition.");
     }
 
     @Test
