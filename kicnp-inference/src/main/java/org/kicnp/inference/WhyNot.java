@@ -2,7 +2,9 @@ package org.kicnp.inference;
 
 import static java.util.Objects.requireNonNull;
 
+import java.util.Collections;
 import java.util.EnumMap;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.StringJoiner;
@@ -46,7 +48,7 @@ public record WhyNot(String frame, List<SlotCandidates> slots, List<Verdict> bin
     /** What became of one binding (slot → instance, in slot order). */
     public record Verdict(Map<String, String> binding, Outcome outcome, String reason) {
         public Verdict {
-            binding = java.util.Collections.unmodifiableMap(new java.util.LinkedHashMap<>(binding));
+            binding = Collections.unmodifiableMap(new LinkedHashMap<>(binding));
         }
     }
 
