@@ -111,10 +111,14 @@ public final class Table5Run implements AutoCloseable {
         playReturn(name);
     }
 
-    /** User A, already known, comes in: Robovie should greet them by name. */
+    /**
+     * User A, already known, comes in: Robovie should greet them by name. Returns once Robovie has finished saying so,
+     * so that a run closed next does not cut its last action short (it was reported failed, "disconnected").
+     */
     public void playReturn(String name) throws TimeoutException, InterruptedException {
         user.appear();
         record.awaitLine("Hi, " + name + ". Good to see you again.", STEP);
+        record.awaitFinished("WelcomeBack", STEP);
     }
 
     @Override public void close() {

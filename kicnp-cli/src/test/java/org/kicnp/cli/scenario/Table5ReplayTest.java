@@ -91,6 +91,8 @@ class Table5ReplayTest {
             List<String> second = run.record().lines().subList(before, run.record().lines().size());
             assertThat(second).contains("Hi! Nice to meet you. Welcome to visit my room!")
                     .noneMatch(l -> l.contains("What is your name?"));
+            assertThat(run.record().stepsOf("WelcomeBack")).as("the greeting by name is said to its end")
+                    .singleElement().satisfies(s -> assertThat(s.outcome()).isEqualTo("ended"));
         }
         assertThat(Files.readString(kb.resolve("learned.xml"))).contains("<NAME>Taro</NAME>");
         try (Table5Run again = start(kb, "after-restart")) {
