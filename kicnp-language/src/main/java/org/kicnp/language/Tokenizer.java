@@ -6,8 +6,9 @@ import java.util.Locale;
 import java.util.Map;
 
 /**
- * Splits a sentence into {@link Token}s: lower-cases, keeps commas (and turns ; : and dashes into commas), drops the
- * final . ! ? and quotes, and expands contractions ("I'm" → i am, "I'd" → i would, "it's" → it is, "don't" → do
+ * Splits a sentence into {@link Token}s: lower-cases, keeps commas (and turns ; : dashes, and a . ! ? or … with more
+ * words after it, into commas: "Hello! My name is Ken." is typed as one line), drops the final . ! ? and quotes, and
+ * expands contractions ("I'm" → i am, "I'd" → i would, "it's" → it is, "don't" → do
  * not). A trailing {@code 's} that is not "is" is a possessive and is dropped ("Ken's" → ken).
  */
 final class Tokenizer {
@@ -35,7 +36,8 @@ final class Tokenizer {
                 continue;
             }
             flush(word, out);
-            if (c == ',' || c == ';' || c == ':' || c == '-' || c == '\u2014') {
+            if (c == ',' || c == ';' || c == ':' || c == '-' || c == '\u2014' || c == '.' || c == '!' || c == '?'
+                    || c == '\u2026') {
                 if (!out.isEmpty() && !out.getLast().isComma()) {
                     out.add(Token.COMMA);
                 }

@@ -58,9 +58,9 @@ class SentenceParserTest {
     }
 
     @Test
-    void tokenizer_expandsContractions_keepsCommas_andDropsFinalPunctuation() {
+    void tokenizer_expandsContractions_keepsCommas_separatesAtInnerStops_andDropsFinalPunctuation() {
         assertThat(new Tokenizer().tokenize("I'm Ken, it's me! Don't stop?")).extracting(Token::word)
-                .containsExactly("i", "am", "ken", ",", "it", "is", "me", "do", "not", "stop");
+                .containsExactly("i", "am", "ken", ",", "it", "is", "me", ",", "do", "not", "stop");
     }
 
     @Test
