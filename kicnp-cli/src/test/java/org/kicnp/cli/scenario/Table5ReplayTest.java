@@ -100,6 +100,29 @@ class Table5ReplayTest {
     }
 
     @Test
+    void aNameWithAnAccentAnApostropheAndTwoWords_isSaidAsGiven_andRemembered_alsoAfterARestart() throws Exception {
+        String name = "José O'Brien";
+        Path kb = kb();
+        try (Table5Run run = start(kb, "name-as-said")) {
+            run.playFirstVisit(name, "Tea, please.");
+            run.awaitEnd();
+            assertThat(Table5Checks.problems(run.record(), name)).isEmpty();
+            run.playSecondVisit(name);
+        }
+        try (Table5Run again = start(kb, "name-as-said-after-restart")) {
+            again.playReturn(name);
+        }
+    }
+
+    @Test
+    void aNameInJapanese_isLearned_andTheVisitGoesOn() throws Exception {
+        try (Table5Run run = start(kb(), "name-japanese")) {
+            run.playUntilAskedForADrink("太郎");
+            assertThat(run.record().lines()).contains("Hi, 太郎. Nice to meet you. Welcome you to visit my room.");
+        }
+    }
+
+    @Test
     void coffee_scoutBringsCoffee() throws Exception {
         try (Table5Run run = start(kb(), "coffee")) {
             run.playFirstVisit("Hanako", "I'd like a coffee.");
