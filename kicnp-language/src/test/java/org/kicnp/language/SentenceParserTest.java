@@ -35,6 +35,11 @@ class SentenceParserTest {
     }
 
     @Test
+    void notUnderstood_whenTheNameGivenIsARobots_saysSo() {
+        assertThat(reason("My name is Scout")).isEqualTo("'Scout' is a robot's name, not a person's.");
+    }
+
+    @Test
     void extendedLexicon_knowsANewDrink_andANewVerb() {
         Lexicon lexicon = Lexicon.standard().toBuilder()
                 .noun("lemonade", "lemonade", SemanticClass.DRINK)
