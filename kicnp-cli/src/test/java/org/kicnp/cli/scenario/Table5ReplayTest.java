@@ -123,6 +123,22 @@ class Table5ReplayTest {
     }
 
     @Test
+    void bareAnswers_aNameAlone_andADrinkAlone_answerRoboviesQuestions() throws Exception {
+        try (Table5Run run = start(kb(), "bare-answers")) {
+            run.user().appear();
+            run.record().awaitLine("What is your name?", Table5Run.STEP);
+            run.record().awaitFinished("AskUserName", Table5Run.STEP);
+            run.user().say("Ken.");
+            run.record().awaitLine("Hi, Ken. Nice to meet you. Welcome you to visit my room.", Table5Run.STEP);
+            run.record().awaitLine("What do you want to drink?", Table5Run.STEP.multipliedBy(2));
+            run.record().awaitFinished("AskDrink", Table5Run.STEP);
+            run.user().say("Lemonade.");
+            run.record().awaitLine("I am sorry, we have no lemonade. We have tea and coffee.", Table5Run.STEP);
+            assertThat(run.user().sayAgainReplies()).isEmpty();
+        }
+    }
+
+    @Test
     void coffee_scoutBringsCoffee() throws Exception {
         try (Table5Run run = start(kb(), "coffee")) {
             run.playFirstVisit("Hanako", "I'd like a coffee.");
