@@ -14,6 +14,12 @@ import java.util.Set;
  * the whole clause. Nothing matches: {@link ParseResult.NotUnderstood}, never a guess. Immutable and thread-safe.
  */
 public final class SentenceParser {
+    /**
+     * The longest sentence read, in characters: far more than anyone says in one breath. A longer one (a paste) is not
+     * understood, and its reason does not quote it, so what the parser agent asserts stays small.
+     */
+    public static final int MAX_LENGTH = 1_000;
+
     private static final Set<String> FILLERS = Set.of("um", "uh", "er", "erm", "hmm", "oh", "well", "ah", "so", "just");
     /** "please" and how it is typed in a hurry. */
     private static final Set<String> PLEASE = Set.of("please", "pls", "plz", "plse");
@@ -50,6 +56,10 @@ public final class SentenceParser {
     public ParseResult parse(String sentence, Expectation expectation) {
         requireNonNull(sentence, "sentence");
         requireNonNull(expectation, "expectation");
+        if (sentence.strip().length() > MAX_LENGTH) {
+            return ParseResult.NotUnderstood.because("The sentence is " + sentence.strip().length()
+                    + " characters long; at most " + MAX_LENGTH + " are read.");
+        }
         Reading u = new Reading(sentence.strip(), expectation);
         List<List<Token>> segments = segments(tokenizer.tokenize(sentence));
         if (segments.isEmpty()) {

@@ -40,6 +40,13 @@ class SentenceParserTest {
     }
 
     @Test
+    void notUnderstood_whenTheSentenceIsLongerThanAnyoneSays_withoutQuotingIt() {
+        String said = "Tea, please " + "blorf ".repeat(1_000);
+        assertThat(reason(said)).isEqualTo("The sentence is " + said.strip().length() + " characters long; at most "
+                + SentenceParser.MAX_LENGTH + " are read.");
+    }
+
+    @Test
     void extendedLexicon_knowsANewDrink_andANewVerb() {
         Lexicon lexicon = Lexicon.standard().toBuilder()
                 .noun("lemonade", "lemonade", SemanticClass.DRINK)
