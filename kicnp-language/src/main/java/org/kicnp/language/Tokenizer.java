@@ -1,5 +1,6 @@
 package org.kicnp.language;
 
+import java.text.Normalizer;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -24,15 +25,17 @@ final class Tokenizer {
             Map.entry("y'know", "you know"), Map.entry("gimme", "give me"), Map.entry("wanna", "want to"));
 
     List<Token> tokenize(String sentence) {
-        String text = sentence.replace('\u2019', '\'').replace('\u2018', '\'');
+        // NFC: an accent typed as a combining mark ("e" + U+0301) is one letter with it, "é".
+        String text = Normalizer.normalize(sentence, Normalizer.Form.NFC).replace('\u2019', '\'').replace('\u2018', '\'');
         List<Token> out = new ArrayList<>();
         StringBuilder word = new StringBuilder();
-        for (int i = 0; i <= text.length(); i++) {
-            char c = i < text.length() ? text.charAt(i) : ' ';
-            boolean inner = (c == '\'' || c == '-') && !word.isEmpty() && i + 1 < text.length()
-                    && Character.isLetterOrDigit(text.charAt(i + 1));
-            if (Character.isLetterOrDigit(c) || inner) {
-                word.append(c);
+        for (int i = 0, next; i <= text.length(); i = next) { // by code point: letters beyond U+FFFF are letters too
+            int c = i < text.length() ? text.codePointAt(i) : ' ';
+            next = i + Character.charCount(c);
+            boolean inner = (c == '\'' || c == '-') && !word.isEmpty() && next < text.length()
+                    && Character.isLetterOrDigit(text.codePointAt(next));
+            if (Character.isLetterOrDigit(c) || inner || !word.isEmpty() && Token.isMark(c)) {
+                word.appendCodePoint(c);
                 continue;
             }
             flush(word, out);

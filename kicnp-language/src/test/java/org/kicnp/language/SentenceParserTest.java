@@ -88,6 +88,18 @@ class SentenceParserTest {
     }
 
     @Test
+    void name_keepsAccentsTypedAsCombiningMarks_lettersBeyondTheBasicPlane_andVowelSigns() {
+        assertThat(name("My name is Jose\u0301.")).isEqualTo("Jos\u00e9");
+        assertThat(name("My name is \uD842\uDFB7\u91CE.")).isEqualTo("\uD842\uDFB7\u91CE"); // Yoshino, 𠮷 (U+20BB7)
+        String priya = "\u092A\u094D\u0930\u093F\u092F\u093E"; // in Devanagari, with a virama and two vowel signs
+        assertThat(name("My name is " + priya)).isEqualTo(priya);
+    }
+
+    private String name(String sentence) {
+        return ((ParseResult.Parsed) parser.parse(sentence)).frame().value(Case.ATTRIBUTE).orElseThrow();
+    }
+
+    @Test
     void name_keepsTheSpeakersCapitals() {
         CaseFrame f = ((ParseResult.Parsed) parser.parse("Call me McKenzie")).frame();
         assertThat(f.value(Case.ATTRIBUTE)).contains("McKenzie");
