@@ -4,6 +4,7 @@ import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 
 /**
  * The fixed expressions, which have no verb frame worth the name: yes/no answers, greetings, and the ways of saying
@@ -27,6 +28,16 @@ final class FixedExpressions {
             "i am", "you can call me", "call me", "they call me", "people call me", "everyone calls me",
             "friends call me", "it is me", "it is", "this is", "i go by");
     private static final List<String> NAME_AFTER = List.of("is my name");
+    /**
+     * The expressions that say a name and nothing else, so a word the lexicon has is a name there too ("My name is
+     * Will", "Call me Barry White"); after the others ("I am", "it is", "this is") it is not: "I am thirsty".
+     */
+    private static final Set<String> ONLY_NAMES = Set.of("my name is", "the name is", "name is", "i am called",
+            "you can call me", "call me", "they call me", "people call me", "everyone calls me", "friends call me",
+            "i go by", "is my name");
+    /** Words that are in no name even after "my name is": "My name is not Ken", "My name is a secret". */
+    private static final Set<String> NEVER_IN_A_NAME = Set.of("not", "no", "and", "or", "but", "i", "you", "me", "it",
+            "is", "am", "are", "was", "what", "who", "how", "why", "if", "so", "very", "too", "please", "thanks");
 
     private final Lexicon lexicon;
 
@@ -77,7 +88,7 @@ final class FixedExpressions {
         for (String before : NAME_BEFORE) {
             int n = before.split(" ").length;
             if (t.size() > n && words(t, 0, n).equals(before)) {
-                Optional<CaseFrame> f = nameAt(t, n, t.size(), u);
+                Optional<CaseFrame> f = nameAt(t, n, t.size(), ONLY_NAMES.contains(before), u);
                 if (f.isPresent()) {
                     return f;
                 }
@@ -86,23 +97,28 @@ final class FixedExpressions {
         for (String after : NAME_AFTER) {
             int n = after.split(" ").length;
             if (t.size() > n && words(t, t.size() - n, t.size()).equals(after)) {
-                Optional<CaseFrame> f = nameAt(t, 0, t.size() - n, u);
+                Optional<CaseFrame> f = nameAt(t, 0, t.size() - n, ONLY_NAMES.contains(after), u);
                 if (f.isPresent()) {
                     return f;
                 }
             }
         }
-        return u.expectation == Expectation.NAME ? nameAt(t, 0, t.size(), u) : Optional.empty();
+        return u.expectation == Expectation.NAME ? nameAt(t, 0, t.size(), false, u) : Optional.empty();
     }
 
-    private Optional<CaseFrame> nameAt(List<Token> t, int from, int to, Reading u) {
+    /** The name in {@code t[from, to)}; {@code onlyNames}: said after an expression that gives nothing but a name. */
+    private Optional<CaseFrame> nameAt(List<Token> t, int from, int to, boolean onlyNames, Reading u) {
         if (to - from < 1 || to - from > 3) {
             return Optional.empty();
         }
         StringBuilder name = new StringBuilder();
         for (int i = from; i < to; i++) {
             Token w = t.get(i);
-            if (!w.isAlphabetic() || lexicon.isKnownWord(w.word())) {
+            if (onlyNames && lexicon.robot(w.word()).isPresent()) {
+                u.miss("'" + w.surface() + "' is a robot's name, not a person's.");
+                return Optional.empty();
+            }
+            if (!w.isAlphabetic() || lexicon.isKnownWord(w.word()) && !(onlyNames && nameWord(w.word()))) {
                 return Optional.empty();
             }
             name.append(i > from ? " " : "").append(w.capitalized() ? w.surface()
@@ -110,6 +126,17 @@ final class FixedExpressions {
         }
         return Optional.of(u.frame(Act.NAME_STATEMENT, Map.of(Case.ATTRIBUTE,
                 Filler.known(NounPhrases.text(t, from, to), SemanticClass.NAME, name.toString()))));
+    }
+
+    /**
+     * A word the lexicon has that may still be part of a name said after "my name is": not a determiner, number,
+     * preposition, time or direction ("Call me later" is no name), not a person's role ("user", "guest": frames of
+     * the scenario, never a name to learn) and not one of {@link #NEVER_IN_A_NAME}.
+     */
+    private boolean nameWord(String word) {
+        return !NEVER_IN_A_NAME.contains(word) && !Lexicon.DETERMINERS.contains(word) && !Lexicon.NUMBERS.containsKey(word)
+                && lexicon.marker(word).isEmpty() && !Lexicon.TIMES.containsKey(word) && !Lexicon.DIRECTIONS.contains(word)
+                && lexicon.noun(word).filter(n -> n.semanticClass() == SemanticClass.PERSON).isEmpty();
     }
 
     static String words(List<Token> t, int from, int to) {

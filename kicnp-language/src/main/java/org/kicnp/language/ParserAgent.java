@@ -62,23 +62,24 @@ public final class ParserAgent extends AgentBase {
         Expectation expectation = expectation(subject);
         String speaker = relay.from();
         String instance = "said-" + safe(speaker) + "-" + counter.incrementAndGet();
+        String text = shortened(relay.body());
         try {
             switch (parser.parse(relay.body(), expectation)) {
                 case ParseResult.Parsed p -> {
                     assertFrame(CaseFrames.toFrame(p.frame(), instance, speaker));
                     remember(instance);
-                    LOG.debug("'{}' said '{}': {}", speaker, relay.body(), p.frame());
+                    LOG.debug("'{}' said '{}': {}", speaker, text, p.frame());
                     relayTo(speaker, UNDERSTOOD, instance);
                 }
                 case ParseResult.NotUnderstood n -> {
-                    assertFrame(CaseFrames.unknown(n, relay.body(), instance, speaker));
+                    assertFrame(CaseFrames.unknown(n, text, instance, speaker));
                     remember(instance);
-                    LOG.debug("Did not understand '{}' from '{}': {}", relay.body(), speaker, n.reason());
+                    LOG.debug("Did not understand '{}' from '{}': {}", text, speaker, n.reason());
                     relayTo(speaker, SAY_AGAIN, n.reply());
                 }
             }
         } catch (AgentException e) {
-            LOG.warn("Could not handle '{}' from '{}': {}", relay.body(), speaker, e.getMessage());
+            LOG.warn("Could not handle '{}' from '{}': {}", text, speaker, e.getMessage());
         }
     }
 
@@ -108,6 +109,14 @@ public final class ParserAgent extends AgentBase {
         }
         LOG.warn("Unknown expectation '{}' in subject '{}'; parsing without one.", name, subject);
         return Expectation.NONE;
+    }
+
+    /**
+     * The sentence as the instance keeps it: a paste longer than the parser reads is cut there, so the instance
+     * asserted stays far below the gateway's frame limit (which closes the connection of an agent that sends more).
+     */
+    private static String shortened(String body) {
+        return body.length() <= SentenceParser.MAX_LENGTH ? body : body.substring(0, SentenceParser.MAX_LENGTH) + "…";
     }
 
     /** Keeps the characters a frame name may hold. */

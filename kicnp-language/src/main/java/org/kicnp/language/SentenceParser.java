@@ -14,7 +14,15 @@ import java.util.Set;
  * the whole clause. Nothing matches: {@link ParseResult.NotUnderstood}, never a guess. Immutable and thread-safe.
  */
 public final class SentenceParser {
+    /**
+     * The longest sentence read, in characters: far more than anyone says in one breath. A longer one (a paste) is not
+     * understood, and its reason does not quote it, so what the parser agent asserts stays small.
+     */
+    public static final int MAX_LENGTH = 1_000;
+
     private static final Set<String> FILLERS = Set.of("um", "uh", "er", "erm", "hmm", "oh", "well", "ah", "so", "just");
+    /** "please" and how it is typed in a hurry. */
+    private static final Set<String> PLEASE = Set.of("please", "pls", "plz", "plse");
     private static final Set<String> CORRECTIONS = Set.of("no", "nope", "actually", "sorry", "oops", "oh no", "no no",
             "wait no", "no sorry");
 
@@ -48,6 +56,10 @@ public final class SentenceParser {
     public ParseResult parse(String sentence, Expectation expectation) {
         requireNonNull(sentence, "sentence");
         requireNonNull(expectation, "expectation");
+        if (sentence.strip().length() > MAX_LENGTH) {
+            return ParseResult.NotUnderstood.because("The sentence is " + sentence.strip().length()
+                    + " characters long; at most " + MAX_LENGTH + " are read.");
+        }
         Reading u = new Reading(sentence.strip(), expectation);
         List<List<Token>> segments = segments(tokenizer.tokenize(sentence));
         if (segments.isEmpty()) {
@@ -163,16 +175,17 @@ public final class SentenceParser {
     }
 
     /**
-     * Drops fillers at the start, every "please" (which marks a request) and "thanks"/"thank you" (which does not:
-     * "thanks blorf" is no request for a blorf).
+     * Drops fillers at the start, every "please" or "pls" (which marks a request) and "thanks"/"thx"/"thank you"
+     * (which does not: "thanks blorf" is no request for a blorf).
      */
     private static List<Token> strip(List<Token> seg, Reading u) {
         List<Token> out = new ArrayList<>();
         for (int i = 0; i < seg.size(); i++) {
             String w = seg.get(i).word();
-            if (w.equals("please")) {
+            if (PLEASE.contains(w)) {
                 u.polite = true;
-            } else if (w.equals("thanks") || w.equals("thank") && i + 1 < seg.size() && seg.get(i + 1).word().equals("you")) {
+            } else if (w.equals("thanks") || w.equals("thx")
+                    || w.equals("thank") && i + 1 < seg.size() && seg.get(i + 1).word().equals("you")) {
                 u.thanked = true;
                 i += w.equals("thank") ? 1 : 0;
             } else if (!(out.isEmpty() && FILLERS.contains(w))) {

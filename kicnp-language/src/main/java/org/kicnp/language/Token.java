@@ -13,21 +13,32 @@ record Token(String word, String surface) {
 
     /** True if the speaker wrote it with a capital letter, as a proper name. */
     boolean capitalized() {
-        return !surface.isEmpty() && Character.isUpperCase(surface.charAt(0));
+        return !surface.isEmpty() && Character.isUpperCase(surface.codePointAt(0));
     }
 
-    /** Letters only (with inner hyphens or apostrophes): what a name or a noun may be made of. */
+    /**
+     * Letters only (with inner hyphens or apostrophes, and the marks that belong to letters, such as the vowel signs
+     * of Devanagari): what a name or a noun may be made of.
+     */
     boolean isAlphabetic() {
-        if (word.isEmpty() || !Character.isLetter(word.charAt(0))) {
+        if (word.isEmpty() || !Character.isLetter(word.codePointAt(0))) {
             return false;
         }
-        for (int i = 1; i < word.length(); i++) {
-            char c = word.charAt(i);
-            if (!Character.isLetter(c) && c != '-' && c != '\'') {
+        for (int i = Character.charCount(word.codePointAt(0)); i < word.length(); ) {
+            int c = word.codePointAt(i);
+            if (!Character.isLetter(c) && !isMark(c) && c != '-' && c != '\'') {
                 return false;
             }
+            i += Character.charCount(c);
         }
         return true;
+    }
+
+    /** A combining mark, part of the letter before it. */
+    static boolean isMark(int codePoint) {
+        int type = Character.getType(codePoint);
+        return type == Character.NON_SPACING_MARK || type == Character.COMBINING_SPACING_MARK
+                || type == Character.ENCLOSING_MARK;
     }
 
     @Override public String toString() {

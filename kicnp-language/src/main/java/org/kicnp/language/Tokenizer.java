@@ -1,13 +1,15 @@
 package org.kicnp.language;
 
+import java.text.Normalizer;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 
 /**
- * Splits a sentence into {@link Token}s: lower-cases, keeps commas (and turns ; : and dashes into commas), drops the
- * final . ! ? and quotes, and expands contractions ("I'm" → i am, "I'd" → i would, "it's" → it is, "don't" → do
+ * Splits a sentence into {@link Token}s: lower-cases, keeps commas (and turns ; : dashes, and a . ! ? or … with more
+ * words after it, into commas: "Hello! My name is Ken." is typed as one line), drops the final . ! ? and quotes, and
+ * expands contractions ("I'm" → i am, "I'd" → i would, "it's" → it is, "don't" → do
  * not). A trailing {@code 's} that is not "is" is a possessive and is dropped ("Ken's" → ken).
  */
 final class Tokenizer {
@@ -23,19 +25,22 @@ final class Tokenizer {
             Map.entry("y'know", "you know"), Map.entry("gimme", "give me"), Map.entry("wanna", "want to"));
 
     List<Token> tokenize(String sentence) {
-        String text = sentence.replace('\u2019', '\'').replace('\u2018', '\'');
+        // NFC: an accent typed as a combining mark ("e" + U+0301) is one letter with it, "é".
+        String text = Normalizer.normalize(sentence, Normalizer.Form.NFC).replace('\u2019', '\'').replace('\u2018', '\'');
         List<Token> out = new ArrayList<>();
         StringBuilder word = new StringBuilder();
-        for (int i = 0; i <= text.length(); i++) {
-            char c = i < text.length() ? text.charAt(i) : ' ';
-            boolean inner = (c == '\'' || c == '-') && !word.isEmpty() && i + 1 < text.length()
-                    && Character.isLetterOrDigit(text.charAt(i + 1));
-            if (Character.isLetterOrDigit(c) || inner) {
-                word.append(c);
+        for (int i = 0, next; i <= text.length(); i = next) { // by code point: letters beyond U+FFFF are letters too
+            int c = i < text.length() ? text.codePointAt(i) : ' ';
+            next = i + Character.charCount(c);
+            boolean inner = (c == '\'' || c == '-') && !word.isEmpty() && next < text.length()
+                    && Character.isLetterOrDigit(text.codePointAt(next));
+            if (Character.isLetterOrDigit(c) || inner || !word.isEmpty() && Token.isMark(c)) {
+                word.appendCodePoint(c);
                 continue;
             }
             flush(word, out);
-            if (c == ',' || c == ';' || c == ':' || c == '-' || c == '\u2014') {
+            if (c == ',' || c == ';' || c == ':' || c == '-' || c == '\u2014' || c == '.' || c == '!' || c == '?'
+                    || c == '\u2026') {
                 if (!out.isEmpty() && !out.getLast().isComma()) {
                     out.add(Token.COMMA);
                 }

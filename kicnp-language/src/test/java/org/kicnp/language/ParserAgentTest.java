@@ -112,6 +112,14 @@ class ParserAgentTest {
         assertThat(kb.contains("said-alice-" + n)).isTrue();
     }
 
+    @Test
+    void veryLongSentence_getsThePoliteReply_andTheParserKeepsUnderstanding() {
+        alice.relayTo("parser", ParserAgent.SUBJECT, "blorf ".repeat(100_000));
+        assertThat(awaitReply(0).subject()).isEqualTo(ParserAgent.SAY_AGAIN);
+        alice.relayTo("parser", ParserAgent.SUBJECT, "Tea, please");
+        assertThat(awaitReply(1).subject()).isEqualTo(ParserAgent.UNDERSTOOD);
+    }
+
     private Message.Relay awaitReply(int index) {
         await("reply " + index + " reaches alice", () -> alice.relays().size() > index);
         return alice.relays().get(index);

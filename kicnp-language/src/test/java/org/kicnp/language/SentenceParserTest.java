@@ -35,6 +35,18 @@ class SentenceParserTest {
     }
 
     @Test
+    void notUnderstood_whenTheNameGivenIsARobots_saysSo() {
+        assertThat(reason("My name is Scout")).isEqualTo("'Scout' is a robot's name, not a person's.");
+    }
+
+    @Test
+    void notUnderstood_whenTheSentenceIsLongerThanAnyoneSays_withoutQuotingIt() {
+        String said = "Tea, please " + "blorf ".repeat(1_000);
+        assertThat(reason(said)).isEqualTo("The sentence is " + said.strip().length() + " characters long; at most "
+                + SentenceParser.MAX_LENGTH + " are read.");
+    }
+
+    @Test
     void extendedLexicon_knowsANewDrink_andANewVerb() {
         Lexicon lexicon = Lexicon.standard().toBuilder()
                 .noun("lemonade", "lemonade", SemanticClass.DRINK)
@@ -58,9 +70,9 @@ class SentenceParserTest {
     }
 
     @Test
-    void tokenizer_expandsContractions_keepsCommas_andDropsFinalPunctuation() {
+    void tokenizer_expandsContractions_keepsCommas_separatesAtInnerStops_andDropsFinalPunctuation() {
         assertThat(new Tokenizer().tokenize("I'm Ken, it's me! Don't stop?")).extracting(Token::word)
-                .containsExactly("i", "am", "ken", ",", "it", "is", "me", "do", "not", "stop");
+                .containsExactly("i", "am", "ken", ",", "it", "is", "me", ",", "do", "not", "stop");
     }
 
     @Test
@@ -73,6 +85,18 @@ class SentenceParserTest {
     void tokenizer_readsCurlyApostrophes_andPossessives() {
         assertThat(new Tokenizer().tokenize("I\u2019d like Ken's tea")).extracting(Token::word)
                 .containsExactly("i", "would", "like", "ken", "tea");
+    }
+
+    @Test
+    void name_keepsAccentsTypedAsCombiningMarks_lettersBeyondTheBasicPlane_andVowelSigns() {
+        assertThat(name("My name is Jose\u0301.")).isEqualTo("Jos\u00e9");
+        assertThat(name("My name is \uD842\uDFB7\u91CE.")).isEqualTo("\uD842\uDFB7\u91CE"); // Yoshino, 𠮷 (U+20BB7)
+        String priya = "\u092A\u094D\u0930\u093F\u092F\u093E"; // in Devanagari, with a virama and two vowel signs
+        assertThat(name("My name is " + priya)).isEqualTo(priya);
+    }
+
+    private String name(String sentence) {
+        return ((ParseResult.Parsed) parser.parse(sentence)).frame().value(Case.ATTRIBUTE).orElseThrow();
     }
 
     @Test

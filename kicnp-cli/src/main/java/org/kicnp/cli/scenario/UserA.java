@@ -1,11 +1,14 @@
 package org.kicnp.cli.scenario;
 
 import java.time.Duration;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import java.util.function.Consumer;
 import org.kicnp.agent.AgentOptions;
 import org.kicnp.agent.UserAgent;
 import org.kicnp.cli.platform.Platform;
+import org.kicnp.cli.platform.PlatformEvent;
 import org.kicnp.language.ParserAgent;
 import org.kicnp.protocol.AgentKind;
 import org.kicnp.robots.SimRequest;
@@ -14,13 +17,19 @@ import org.kicnp.robots.SimWorld;
 /**
  * User A: a person in the simulated room (who appears before Robovie's eye cameras and leaves again) and a
  * wireless microphone: a user agent, named like the person in the room, that relays what they say to the
- * sentence parser. A script or a person at the terminal drives it.
+ * sentence parser. A script or a person at the terminal drives it. The microphone hears Robovie too: after a
+ * question for a name or a drink ("What is your name?", "What do you want to drink?") it relays with subject
+ * {@code utterance:name} or {@code utterance:drink}, so that an answer of a name or a drink alone ("Ken.",
+ * "Lemonade.") is understood as one.
  */
 public final class UserA implements AutoCloseable {
     private final Platform platform;
     private final SimWorld sim;
     private final String simName;
     private final UserAgent mic;
+    private final Consumer<PlatformEvent> listener = this::heard;
+    /** What Robovie's last line asked for: the subject's suffix ("name", "drink") or "" for no question. */
+    private volatile String asked = "";
 
     private UserA(Platform platform, SimWorld sim, String simName, UserAgent mic) {
         this.platform = platform;
@@ -33,7 +42,25 @@ public final class UserA implements AutoCloseable {
         UserAgent mic = new UserAgent(AgentOptions.of("127.0.0.1", platform.gatewayPort(), simName, AgentKind.USER,
                 platform.token(simName)));
         mic.startAndAwait(Duration.ofSeconds(30));
-        return new UserA(platform, sim, simName, mic);
+        UserA user = new UserA(platform, sim, simName, mic);
+        platform.events().subscribe(user.listener);
+        return user;
+    }
+
+    /** Robovie's speech (the {@code utterance} events): remembers whether it asked for a name or a drink. */
+    private void heard(PlatformEvent e) {
+        if (e.kind().equals("utterance")) {
+            asked = askedFor(RunRecord.firstValue(e));
+        }
+    }
+
+    /** "name" or "drink" when a line is a question for one, else "". */
+    static String askedFor(String line) {
+        String q = line.strip().toLowerCase(Locale.ROOT);
+        if (!q.endsWith("?")) {
+            return "";
+        }
+        return q.contains("name") ? "name" : q.contains("drink") ? "drink" : "";
     }
 
     /** Walks in at the door and stops before Robovie's eye cameras, facing it. */
@@ -51,11 +78,13 @@ public final class UserA implements AutoCloseable {
 
     /**
      * Says something into the microphone: the sentence goes to the parser agent, which asserts its case frame
-     * ({@code SaidName}, {@code SaidDrinkRequest}, …) with this user as the speaker.
+     * ({@code SaidName}, {@code SaidDrinkRequest}, …) with this user as the speaker; after Robovie asked for a name
+     * or a drink, the parser is told so.
      */
     public void say(String text) {
         platform.events().record("user_said", Map.of("user", simName, "text", text));
-        mic.relayTo("parser", ParserAgent.SUBJECT, text);
+        String expecting = asked;
+        mic.relayTo("parser", expecting.isEmpty() ? ParserAgent.SUBJECT : ParserAgent.SUBJECT + ":" + expecting, text);
     }
 
     /** What the parser answered when it did not understand (its "say again" replies), oldest first. */
@@ -65,6 +94,7 @@ public final class UserA implements AutoCloseable {
     }
 
     @Override public void close() {
+        platform.events().unsubscribe(listener);
         mic.close();
     }
 }

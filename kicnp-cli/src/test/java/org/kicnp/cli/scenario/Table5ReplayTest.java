@@ -102,6 +102,46 @@ class Table5ReplayTest {
     }
 
     @Test
+    void aNameWithAnAccentAnApostropheAndTwoWords_isSaidAsGiven_andRemembered_alsoAfterARestart() throws Exception {
+        String name = "José O'Brien";
+        Path kb = kb();
+        try (Table5Run run = start(kb, "name-as-said")) {
+            run.playFirstVisit(name, "Tea, please.");
+            run.awaitEnd();
+            assertThat(Table5Checks.problems(run.record(), name)).isEmpty();
+            run.playSecondVisit(name);
+        }
+        try (Table5Run again = start(kb, "name-as-said-after-restart")) {
+            again.playReturn(name);
+        }
+    }
+
+    @Test
+    void aNameInJapanese_evenWithALetterBeyondU_FFFF_isLearned_andTheVisitGoesOn() throws Exception {
+        String name = "\uD842\uDFB7野太郎"; // 𠮷 (U+20BB7), which a frame name cannot hold
+        try (Table5Run run = start(kb(), "name-japanese")) {
+            run.playUntilAskedForADrink(name);
+            assertThat(run.record().lines()).contains("Hi, " + name + ". Nice to meet you. Welcome you to visit my room.");
+        }
+    }
+
+    @Test
+    void bareAnswers_aNameAlone_andADrinkAlone_answerRoboviesQuestions() throws Exception {
+        try (Table5Run run = start(kb(), "bare-answers")) {
+            run.user().appear();
+            run.record().awaitLine("What is your name?", Table5Run.STEP);
+            run.record().awaitFinished("AskUserName", Table5Run.STEP);
+            run.user().say("Ken.");
+            run.record().awaitLine("Hi, Ken. Nice to meet you. Welcome you to visit my room.", Table5Run.STEP);
+            run.record().awaitLine("What do you want to drink?", Table5Run.STEP.multipliedBy(2));
+            run.record().awaitFinished("AskDrink", Table5Run.STEP);
+            run.user().say("Lemonade.");
+            run.record().awaitLine("I am sorry, we have no lemonade. We have tea and coffee.", Table5Run.STEP);
+            assertThat(run.user().sayAgainReplies()).isEmpty();
+        }
+    }
+
+    @Test
     void coffee_scoutBringsCoffee() throws Exception {
         try (Table5Run run = start(kb(), "coffee")) {
             run.playFirstVisit("Hanako", "I'd like a coffee.");
