@@ -1,5 +1,6 @@
 package org.kicnp.core.xml;
 
+import com.ctc.wstx.exc.WstxLazyException;
 import java.io.CharConversionException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -55,8 +56,13 @@ final class FrameReader {
             fr.document();
             return !fr.cut;
         } catch (XMLStreamException e) {
-            errors.add(file.filter(f -> notUtf8(e)).flatMap(f -> Utf8Check.firstMalformed(f, source))
-                    .orElseGet(() -> fr.syntaxError(e)));
+            fr.malformed(e, file);
+            return false;
+        } catch (WstxLazyException e) {
+            // A mistake inside text the parser had begun (a bare '&' in a script, text over the size limit) comes
+            // when the text is asked for, unchecked: it is malformed XML all the same.
+            fr.malformed(e.getCause() instanceof XMLStreamException x ? x : new XMLStreamException(e.getMessage()),
+                    file);
             return false;
         } finally {
             try {
@@ -368,6 +374,11 @@ final class FrameReader {
 
     private void error(Location l, String message) {
         errors.add(new LoadError(source, l.getLineNumber(), l.getColumnNumber(), message));
+    }
+
+    private void malformed(XMLStreamException e, Optional<Path> file) {
+        errors.add(file.filter(f -> notUtf8(e)).flatMap(f -> Utf8Check.firstMalformed(f, source))
+                .orElseGet(() -> syntaxError(e)));
     }
 
     /** Whether the parser stopped at bytes that do not decode as UTF-8 (Woodstox wraps its decoder's exception). */

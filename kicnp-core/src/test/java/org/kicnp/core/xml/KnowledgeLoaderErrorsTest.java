@@ -263,6 +263,52 @@ class KnowledgeLoaderErrorsTest {
                         + "descendants are derived from ISA, so list them exactly or leave DESCENDANTS empty.");
     }
 
+    /**
+     * Woodstox reports a mistake inside text that it has begun to read (a script's bare {@code &&}, an undeclared
+     * entity after a first character, text over the size limit) only when the text is asked for, as an unchecked
+     * exception; that used to escape the loader as a WstxLazyException without file or line, and the knowledge
+     * base must be left as it was.
+     */
+    @Test
+    void load_whenTextHasABareAmpersandOrUnknownEntityPastItsStart_reportsWhereAsMalformedXml() throws IOException {
+        Path a = file("a.xml", """
+                <FRAME>
+                  <NAME>Greeting</NAME>
+                  <SLOTLIST>
+                    <SLOT>
+                      <NAME>onInstantiate</NAME>
+                      <TYPE>TYPE_STR</TYPE>
+                      <VALUE>if (s.a && s.b) { sendmsg(s.mMouth, "hi"); }</VALUE>
+                    </SLOT>
+                  </SLOTLIST>
+                </FRAME>
+                """);
+        Path b = file("b.xml", "<FRAME><NAME>Robot&nbsp;1</NAME></FRAME>\n");
+        KnowledgeBase kb = KnowledgeBase.create();
+        kb.add(Frame.classFrame("Speech").build());
+
+        KnowledgeXmlException e = catchThrowableOfType(KnowledgeXmlException.class,
+                () -> KnowledgeLoader.load(kb, List.of(a, b)));
+
+        assertThat(e).as("load should fail with the loader's own exception").isNotNull();
+        assertThat(e.errors()).map(LoadError::format).containsExactly(
+                a + ":7:23: The XML is not well-formed: Unexpected character '&' (code 38) (expected a name start "
+                        + "character).",
+                b + ":1:24: The XML is not well-formed: Undeclared general entity \"nbsp\".");
+        assertThat(kb.size()).isEqualTo(1);
+    }
+
+    @Test
+    void parseText_whenOneTextIsLargerThanTheLimit_reportsTheLimitWithItsPlace() {
+        String xml = "<FRAME><NAME>X</NAME><SLOTLIST><SLOT><NAME>s</NAME><TYPE>TYPE_STR</TYPE>\n<VALUE>"
+                + "ab".repeat(SecureXml.MAX_TEXT) + "</VALUE></SLOT></SLOTLIST></FRAME>";
+
+        assertThatThrownBy(() -> KnowledgeLoader.parseText(xml, "net", KnowledgeBase.create()))
+                .isInstanceOf(KnowledgeXmlException.class)
+                .hasMessageStartingWith("net:2:")
+                .hasMessageContaining("The XML is not well-formed: Text size limit (4194304) exceeded");
+    }
+
     @Test
     void load_whenAFileIsNotWellFormed_reportsOnlyTheXmlErrors() throws IOException {
         Path a = file("a.xml", "<KNOWLEDGEBASE>\n  <FRAME>\n    <NAME>Machine</NAM>\n  </FRAME>\n</KNOWLEDGEBASE>\n");
