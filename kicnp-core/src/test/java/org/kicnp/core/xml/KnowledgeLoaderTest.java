@@ -262,4 +262,37 @@ class KnowledgeLoaderTest {
         assertThat(x.ownSlot("a").orElseThrow().condition().text()).isEqualTo("<= 5");
         assertThat(x.ownSlot("b").orElseThrow().condition().text()).isEqualTo("js: s.a < 3 && s.b");
     }
+
+    /** Frame names may hold '-' (AIBO-1), so a condition's constant reference {@code @AIBO-1} must name that frame. */
+    @Test
+    void loadSaveLoad_conditionReferringToAFrameWithAHyphenInItsName_keepsTheWholeName() throws IOException {
+        Path a = file("a.xml", """
+                <KNOWLEDGEBASE>
+                  <FRAME><NAME>Robot</NAME></FRAME>
+                  <FRAME><NAME>AIBO-1</NAME><ISA>Robot</ISA><ISINSTANCE>TRUE</ISINSTANCE></FRAME>
+                  <FRAME>
+                    <NAME>Follow</NAME>
+                    <SLOTLIST>
+                      <SLOT><NAME>leader</NAME><TYPE>TYPE_INSTANCE</TYPE><ARGUMENT>Robot</ARGUMENT>
+                        <CONDITION>== @AIBO-1</CONDITION></SLOT>
+                      <SLOT><NAME>team</NAME><TYPE>TYPE_INSTANCE</TYPE><ARGUMENT>Robot</ARGUMENT>
+                        <CONDITION>in (@AIBO-1, @Robot)</CONDITION></SLOT>
+                    </SLOTLIST>
+                  </FRAME>
+                </KNOWLEDGEBASE>
+                """);
+        KnowledgeBase kb = KnowledgeBase.create();
+        KnowledgeLoader.load(kb, List.of(a));
+        Path saved = dir.resolve("saved.xml");
+        KnowledgeXmlWriter.write(kb.frames(), saved);
+
+        KnowledgeBase again = KnowledgeBase.create();
+        KnowledgeLoader.load(again, List.of(saved));
+
+        Frame follow = again.require("Follow");
+        assertThat(follow.ownSlot("leader").orElseThrow().condition().operands())
+                .containsExactly(new org.kicnp.core.Operand.Constant(Value.ref("AIBO-1")));
+        assertThat(follow.ownSlot("team").orElseThrow().condition().text()).isEqualTo("in (@AIBO-1, @Robot)");
+        assertThat(again.frames()).isEqualTo(kb.frames());
+    }
 }
