@@ -238,11 +238,13 @@ final class FrameReader {
         StringBuilder more = null;
         int textLine = -1;
         int textColumn = -1;
+        boolean literal = false;
         List<Located> items = List.of();
         while (true) {
             int event = r.next();
             switch (event) {
                 case XMLStreamConstants.CHARACTERS, XMLStreamConstants.CDATA, XMLStreamConstants.SPACE -> {
+                    literal |= event == XMLStreamConstants.CDATA;
                     if (textLine < 0) {
                         // Only a condition's errors point inside its text; other elements skip the location.
                         if (tag.equals("CONDITION")) {
@@ -254,12 +256,13 @@ final class FrameReader {
                         }
                         text = event == XMLStreamConstants.CHARACTERS
                                 ? texts.text(r.getTextCharacters(), r.getTextStart(), r.getTextLength()) : r.getText();
-                    } else if (!(r.isWhiteSpace() && text.isBlank())) {
-                        // White space around ITEM children is dropped; text beside items is reported below.
+                    } else {
+                        // Text beside ITEM children is reported below unless it is white space; none is dropped
+                        // here, so white space between comments and further text stays part of the text.
                         if (more == null) {
                             more = new StringBuilder(text);
                         }
-                        more.append(r.getText());
+                        more.append(r.getTextCharacters(), r.getTextStart(), r.getTextLength());
                     }
                 }
                 case XMLStreamConstants.START_ELEMENT -> {
@@ -283,7 +286,7 @@ final class FrameReader {
                                 + " elements; give one or the other.");
                     }
                     return new Located(text, items, start.getLineNumber(), start.getColumnNumber(),
-                            textLine <= 0 ? start.getLineNumber() : textLine, textLine <= 0 ? 0 : textColumn);
+                            textLine <= 0 ? start.getLineNumber() : textLine, textLine <= 0 ? 0 : textColumn, literal);
                 }
                 default -> { }
             }

@@ -295,4 +295,15 @@ class KnowledgeLoaderTest {
         assertThat(follow.ownSlot("team").orElseThrow().condition().text()).isEqualTo("in (@AIBO-1, @Robot)");
         assertThat(again.frames()).isEqualTo(kb.frames());
     }
+
+    /** Comments are not kept, but the text around them is, white space included. */
+    @Test
+    void parse_textBrokenByComments_keepsAllTheTextAroundThem() {
+        String xml = "<FRAME><NAME>X</NAME><SLOTLIST><SLOT><NAME>s</NAME><TYPE>TYPE_STR</TYPE>"
+                + "<VALUE>  <!-- a -->  <!-- b -->x</VALUE></SLOT></SLOTLIST></FRAME>";
+
+        Frame x = KnowledgeLoader.parseText(xml, "x", KnowledgeBase.create()).getFirst().frame();
+
+        assertThat(x.ownSlot("s").orElseThrow().value()).contains(Value.of("    x"));
+    }
 }

@@ -8,8 +8,11 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Optional;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import org.kicnp.core.ConditionParser;
 import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
@@ -255,5 +258,64 @@ class KnowledgeXmlWriterTest {
                 .frame();
 
         assertThat(back).isEqualTo(f);
+    }
+
+    /**
+     * Text the format reads as "absent" when plain (empty, white space, the word NULL in any case) is written in CDATA,
+     * which the reader takes as written: a learned answer "" or "null" survives a save, and the journal, which holds
+     * frames in this format, gives it back after a restart.
+     */
+    @ParameterizedTest
+    @ValueSource(strings = {"", " ", "\t\n  ", "\r", " \r\n ", "NULL", "null", " Null\n"})
+    void writeThenParse_stringThatPlainTextWouldReadAsAbsent_givesTheSameString(String text) {
+        Frame f = Frame.classFrame("Answer")
+                .slot(Slot.builder("said", DataType.STRING).value(Value.of(text)).build())
+                .slot(Slot.builder("fallback", DataType.STRING).defaultValue(Value.of(text)).build())
+                .slot(Slot.builder("heard", DataType.LIST).value(new Value.Lst(List.of(Value.of(text)))).build())
+                .build();
+
+        Frame back = KnowledgeLoader.parseText(KnowledgeXmlWriter.toXml(f), "x", KnowledgeBase.create())
+                .getFirst().frame();
+
+        assertThat(back.slots()).extracting(Slot::effectiveValue).containsExactly(Optional.of(Value.of(text)),
+                Optional.of(Value.of(text)), Optional.of(new Value.Lst(List.of(Value.of(text)))));
+        assertThat(back).isEqualTo(f);
+    }
+
+    /** Frame and slot names, references and relations may be NULL in any case; written in CDATA they read back. */
+    @ParameterizedTest
+    @ValueSource(strings = {"NULL", "null", "Null"})
+    void writeThenParse_namesSpelledNull_giveTheSameFrames(String name) {
+        Frame root = Frame.classFrame(name).build();
+        Frame user = Frame.instance("user1", name)
+                .part(name)
+                .linkTo(new Relation.Named(name.toLowerCase(java.util.Locale.ROOT)), name)
+                .slot(Slot.builder(name, DataType.INSTANCE).argument(name).value(Value.ref(name)).frameRelated(name)
+                        .frameListRelated(List.of(name)).build())
+                .build();
+
+        List<Frame> back = KnowledgeLoader.parseText(save(List.of(root, user)), "x", KnowledgeBase.create()).stream()
+                .map(SourcedFrame::frame).toList();
+
+        assertThat(back).containsExactly(root, user);
+    }
+
+    @Test
+    void parse_emptyOrNullTextOutsideCdata_isStillAbsentAsTable4PrintsIt() {
+        String xml = """
+                <FRAME><NAME>X</NAME><ISA>NULL</ISA><SLOTLIST>
+                  <SLOT><NAME>a</NAME><TYPE>TYPE_STR</TYPE><VALUE></VALUE></SLOT>
+                  <SLOT><NAME>b</NAME><TYPE>TYPE_STR</TYPE><VALUE> NULL </VALUE><ARGUMENT>null</ARGUMENT></SLOT>
+                  <SLOT><NAME>c</NAME><TYPE>TYPE_STR</TYPE><VALUE><![CDATA[]]></VALUE></SLOT>
+                </SLOTLIST></FRAME>
+                """;
+
+        Frame x = KnowledgeLoader.parseText(xml, "x", KnowledgeBase.create()).getFirst().frame();
+
+        assertThat(x.parent()).isEmpty();
+        assertThat(x.ownSlot("a").orElseThrow().value()).isEmpty();
+        assertThat(x.ownSlot("b").orElseThrow().value()).isEmpty();
+        assertThat(x.ownSlot("b").orElseThrow().argument()).isEmpty();
+        assertThat(x.ownSlot("c").orElseThrow().value()).contains(Value.of(""));
     }
 }
