@@ -280,6 +280,11 @@ final class FrameReader {
                 case XMLStreamConstants.END_ELEMENT -> {
                     if (more != null) {
                         text = more.toString();
+                        // The parser limits each piece of text; pieces split by comments or CDATA are checked here.
+                        if (text.length() > SecureXml.MAX_TEXT) {
+                            error(start, "Element " + tag + " holds " + text.length() + " characters of text, more "
+                                    + "than the " + SecureXml.MAX_TEXT + " a knowledge file may hold in one element.");
+                        }
                     }
                     if (!items.isEmpty() && !text.isBlank()) {
                         error(start, "Element " + tag + " mixes text with " + String.join("/", childTags)

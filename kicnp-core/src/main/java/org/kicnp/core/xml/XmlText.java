@@ -14,6 +14,10 @@ final class XmlText {
     }
 
     static void write(CharSink out, String text, String where) throws IOException {
+        if (text.length() > SecureXml.MAX_TEXT) {
+            throw new KnowledgeException("The " + where + " holds " + text.length() + " characters of text, more than "
+                    + "the " + SecureXml.MAX_TEXT + " a knowledge file may hold in one element.");
+        }
         boolean markup = false;
         boolean cr = false;
         for (int i = 0; i < text.length(); i++) {

@@ -214,6 +214,32 @@ class KnowledgeXmlWriterTest {
                 .hasMessage("The slot 's' of frame 'B' holds the character U+0007, which XML 1.0 cannot represent.");
     }
 
+    /** The reader refuses one element's text over its limit, so writing it would give a file that cannot be loaded. */
+    @Test
+    void write_whenATextIsLongerThanTheReaderAccepts_refusesItInsteadOfWritingAFileThatCannotBeLoaded() {
+        Frame f = Frame.classFrame("B").slot(Slot.ofValue("log", DataType.STRING, Value.of("x".repeat(SecureXml.MAX_TEXT
+                + 1)))).build();
+
+        assertThatThrownBy(() -> KnowledgeXmlWriter.toXml(f))
+                .isInstanceOf(KnowledgeException.class)
+                .hasMessage("The slot 'log' of frame 'B' holds 4194305 characters of text, more than the 4194304 a "
+                        + "knowledge file may hold in one element.");
+        assertThat(KnowledgeXmlWriter.toXml(Frame.classFrame("B").slot(Slot.ofValue("log", DataType.STRING,
+                Value.of("x".repeat(SecureXml.MAX_TEXT)))).build())).hasSizeGreaterThan(SecureXml.MAX_TEXT);
+    }
+
+    @Test
+    void parse_whenATextSplitByCommentsIsLongerThanTheLimit_reportsTheElement() {
+        String half = "x".repeat(SecureXml.MAX_TEXT / 2 + 1);
+        String xml = "<FRAME><NAME>B</NAME><SLOTLIST><SLOT><NAME>log</NAME><TYPE>TYPE_STR</TYPE>\n<VALUE>" + half
+                + "<!-- -->" + half + "</VALUE></SLOT></SLOTLIST></FRAME>";
+
+        assertThatThrownBy(() -> KnowledgeLoader.parseText(xml, "x", KnowledgeBase.create()))
+                .isInstanceOf(KnowledgeXmlException.class)
+                .hasMessage("x:2:1: Element VALUE holds 4194306 characters of text, more than the 4194304 a knowledge "
+                        + "file may hold in one element.");
+    }
+
     @Test
     void loadSaveLoad_ofTheScenario_givesEqualFramesAndIdenticalBytes() throws Exception {
         KnowledgeBase first = KnowledgeBase.create();
