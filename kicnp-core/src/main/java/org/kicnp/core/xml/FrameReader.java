@@ -170,7 +170,26 @@ final class FrameReader {
                 }
             }
         }
+        concern(errorsBefore, items.get(FrameTag.NAME), false);
         return new FrameElement(at, items, to, from, slots, errors.size() > errorsBefore);
+    }
+
+    /**
+     * Marks the errors found since {@code from} as concerning the frame (or slot) just read, when its NAME, which may
+     * come after the mistake, says which: the editor shows each error at its frame and slot.
+     */
+    private void concern(int from, Located name, boolean slot) {
+        if (name == null || name.absent()) {
+            return;
+        }
+        Optional<String> named = Optional.of(name.stripped());
+        for (int i = from; i < errors.size(); i++) {
+            LoadError e = errors.get(i);
+            if (slot ? e.slot().isEmpty() : e.frame().isEmpty()) {
+                errors.set(i, new LoadError(e.source(), e.line(), e.column(), e.message(), slot ? e.frame() : named,
+                        slot ? named : e.slot()));
+            }
+        }
     }
 
     private void slotList(List<SlotElement> slots) throws XMLStreamException {
@@ -186,6 +205,7 @@ final class FrameReader {
 
     private SlotElement slot() throws XMLStreamException {
         Location start = r.getLocation();
+        int errorsBefore = errors.size();
         Located[] facets = new Located[SlotTag.COUNT];
         while (nextChild("SLOT")) {
             String tag = r.getLocalName();
@@ -200,6 +220,7 @@ final class FrameReader {
                 facets[t.ordinal()] = leaf(tag, t.childTags());
             }
         }
+        concern(errorsBefore, facets[SlotTag.NAME.ordinal()], true);
         return new SlotElement(start.getLineNumber(), start.getColumnNumber(), facets);
     }
 

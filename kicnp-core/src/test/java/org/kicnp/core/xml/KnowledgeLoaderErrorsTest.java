@@ -142,6 +142,41 @@ class KnowledgeLoaderErrorsTest {
         assertThat(errors.get(2)).startsWith(a + ":12:3: Unknown element 'COLOUR' in FRAME; expected NAME, ISA");
     }
 
+    /** The editor's import shows each error at its frame and slot: mistakes in the structure concern one too. */
+    @Test
+    void parseText_whenElementsAreUnknownRepeatedOrHaveAttributes_namesTheFrameAndSlotTheyAreIn() {
+        String xml = """
+                <KNOWLEDGEBASE>
+                  <FRAME>
+                    <NAME>X</NAME>
+                    <SLOTLIST>
+                      <SLOT>
+                        <REQIURED>TRUE</REQIURED>
+                        <NAME>s</NAME>
+                        <TYPE lang="en">TYPE_INT</TYPE>
+                      </SLOT>
+                      <SLOT><NAME>t</NAME><TYPE>TYPE_INT</TYPE>stray</SLOT>
+                    </SLOTLIST>
+                    <ISA>A</ISA>
+                    <ISA>B</ISA>
+                  </FRAME>
+                  <FRAME><COLOUR>red</COLOUR></FRAME>
+                </KNOWLEDGEBASE>
+                """;
+
+        KnowledgeXmlException e = catchThrowableOfType(KnowledgeXmlException.class,
+                () -> KnowledgeLoader.parseText(xml, "editor", KnowledgeBase.create()));
+
+        assertThat(e.errors()).extracting(LoadError::line, err -> err.frame().orElse("-"), err -> err.slot().orElse("-"))
+                .containsExactly(
+                        org.assertj.core.groups.Tuple.tuple(6, "X", "s"),
+                        org.assertj.core.groups.Tuple.tuple(8, "X", "s"),
+                        org.assertj.core.groups.Tuple.tuple(10, "X", "t"),
+                        org.assertj.core.groups.Tuple.tuple(13, "X", "-"),
+                        org.assertj.core.groups.Tuple.tuple(15, "-", "-"),
+                        org.assertj.core.groups.Tuple.tuple(15, "-", "-"));
+    }
+
     @Test
     void load_whenAClassHasAnError_itsInstancesStillTakeTheSlotTypesItDeclares() throws IOException {
         Path a = file("a.xml", """
