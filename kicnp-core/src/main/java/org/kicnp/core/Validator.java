@@ -17,11 +17,15 @@ import java.util.Set;
  */
 final class Validator {
     private static final int CYCLE_CHECK_STEPS = 10_000;
+    /** How many frames of an IS-A cycle a problem names: a cycle may run through thousands. */
+    private static final int CYCLE_TEXT_NAMES = 10;
 
     private final Map<String, Frame> staged;
     private final NodeIndex base;
     /** Frames known to have an acyclic IS-A chain in the view, by name. */
     private final Map<String, ClassInfo> classes;
+    /** Frames found to have an IS-A cycle in their chain, so no other frame walks it again; null until one is. */
+    private Set<String> cyclic;
     private final List<Problem> problems = new ArrayList<>(0);
     /** Staged frames by parent name, for parents that are missing or instances in the view; null until one is. */
     private Map<String, List<String>> stagedChildren;
@@ -406,6 +410,9 @@ final class Validator {
             classes.put(x.name(), c);
             return c;
         }
+        if (cyclic != null && cyclic.contains(x.name())) {
+            return null;
+        }
         List<Frame> path = new ArrayList<>(8);
         int nextCheck = CYCLE_CHECK_STEPS;
         ClassInfo top = null;
@@ -413,13 +420,16 @@ final class Validator {
             path.add(y);
             if (path.size() > nextCheck) {
                 if (repeats(path)) {
-                    return null;
+                    return cyclic(path);
                 }
                 nextCheck *= 2;
             }
             String yp = y.parentOrNull();
             if (yp == null) {
                 break;
+            }
+            if (cyclic != null && cyclic.contains(yp)) {
+                return cyclic(path);
             }
             top = classes.get(yp);
             if (top != null) {
@@ -435,6 +445,17 @@ final class Validator {
             }
         }
         return top;
+    }
+
+    /** Remembers that every frame of {@code path} leads into an IS-A cycle (a chain never changes in a view). */
+    private ClassInfo cyclic(List<Frame> path) {
+        if (cyclic == null) {
+            cyclic = new HashSet<>();
+        }
+        for (Frame f : path) {
+            cyclic.add(f.name());
+        }
+        return null;
     }
 
     private static boolean repeats(List<Frame> path) {
@@ -462,6 +483,9 @@ final class Validator {
         Set<String> seen = new HashSet<>();
         Frame x = f;
         while (x != null && seen.add(x.name())) {
+            if (path.size() == CYCLE_TEXT_NAMES) {
+                return String.join(" -> ", path) + " -> and further frames";
+            }
             path.add(x.name());
             x = parentOf(x);
         }
