@@ -26,6 +26,9 @@ final class FrameReader {
     private final TextCache texts = new TextCache();
     /** Whether reading stopped before the end of the document or skipped a FRAME, so frames were never seen. */
     private boolean cut;
+    /** The NAME of the frame and of the slot being read, once read: what malformed XML found there is about. */
+    private String frameName;
+    private String slotName;
 
     private FrameReader(XMLStreamReader r, String source, List<LoadError> errors, Consumer<FrameElement> sink) {
         this.r = r;
@@ -165,11 +168,16 @@ final class FrameReader {
                     } else if (items.containsKey(t)) {
                         repeated("FRAME", tag);
                     } else {
-                        items.put(t, leaf(tag, t.childTags()));
+                        Located item = leaf(tag, t.childTags());
+                        items.put(t, item);
+                        if (t == FrameTag.NAME && !item.absent()) {
+                            frameName = item.stripped();
+                        }
                     }
                 }
             }
         }
+        frameName = null;
         concern(errorsBefore, items.get(FrameTag.NAME), false);
         return new FrameElement(at, items, to, from, slots, errors.size() > errorsBefore);
     }
@@ -218,8 +226,12 @@ final class FrameReader {
                 repeated("SLOT", tag);
             } else {
                 facets[t.ordinal()] = leaf(tag, t.childTags());
+                if (t == SlotTag.NAME && !facets[t.ordinal()].absent()) {
+                    slotName = facets[t.ordinal()].stripped();
+                }
             }
         }
+        slotName = null;
         concern(errorsBefore, facets[SlotTag.NAME.ordinal()], true);
         return new SlotElement(start.getLineNumber(), start.getColumnNumber(), facets);
     }
@@ -438,7 +450,8 @@ final class FrameReader {
             msg = msg + ".";
         }
         return new LoadError(source, l == null ? 1 : Math.max(1, l.getLineNumber()),
-                l == null ? 1 : Math.max(1, l.getColumnNumber()), "The XML is not well-formed: " + msg);
+                l == null ? 1 : Math.max(1, l.getColumnNumber()), "The XML is not well-formed: " + msg,
+                Optional.ofNullable(frameName), Optional.ofNullable(slotName));
     }
 
     private static String abbreviate(String t) {

@@ -333,6 +333,35 @@ class KnowledgeLoaderErrorsTest {
         assertThat(kb.size()).isEqualTo(1);
     }
 
+    /** Malformed XML stops the reading, but the frame and slot being read when it stopped are known: the editor shows them. */
+    @Test
+    void parseText_whenXmlIsMalformedInsideASlot_namesTheFrameAndSlotBeingRead() {
+        String xml = """
+                <KNOWLEDGEBASE>
+                  <FRAME><NAME>Done</NAME></FRAME>
+                  <FRAME>
+                    <NAME>Greeting</NAME>
+                    <SLOTLIST>
+                      <SLOT><NAME>mUser</NAME><TYPE>TYPE_STR</TYPE></SLOT>
+                      <SLOT>
+                        <NAME>onInstantiate</NAME>
+                        <VALUE>if (s.a && s.b) { }</VALUE>
+                      </SLOT>
+                    </SLOTLIST>
+                  </FRAME>
+                </KNOWLEDGEBASE>
+                """;
+
+        KnowledgeXmlException e = catchThrowableOfType(KnowledgeXmlException.class,
+                () -> KnowledgeLoader.parseText(xml, "editor", KnowledgeBase.create()));
+
+        assertThat(e.errors()).singleElement().satisfies(err -> {
+            assertThat(err.line()).isEqualTo(9);
+            assertThat(err.frame()).contains("Greeting");
+            assertThat(err.slot()).contains("onInstantiate");
+        });
+    }
+
     @Test
     void parseText_whenOneTextIsLargerThanTheLimit_reportsTheLimitWithItsPlace() {
         String xml = "<FRAME><NAME>X</NAME><SLOTLIST><SLOT><NAME>s</NAME><TYPE>TYPE_STR</TYPE>\n<VALUE>"
