@@ -298,6 +298,8 @@ final class Validator {
                     requireClass(name, slot, argument);
                     instanceOf = argument;
                 }
+                checkItems(name, slot, own.valueOrNull(), argument);
+                checkItems(name, slot, own.defaultOrNull(), argument);
             }
             default -> { }
         }
@@ -324,6 +326,34 @@ final class Validator {
             if (o instanceof Operand.Path p && Inheritance.slot(this::view, f, p.head()).isEmpty()) {
                 problems.add(Problem.of(f.name(), own.name(), where(own.name(), f.name()) + " has a condition on '"
                         + p.text() + "', but frame '" + f.name() + "' has no slot '" + p.head() + "'."));
+            }
+        }
+    }
+
+    /**
+     * The items of a list must be of the type its ARGUMENT names, as the XML reader will read them back: otherwise a
+     * saved or journalled list (a TYPE_INT list holding "abc") is a file the loader refuses. An integer may stand in
+     * a TYPE_FLOAT list, as in a TYPE_FLOAT slot; a list of TYPE_STR, or without an ARGUMENT, takes any item.
+     */
+    private void checkItems(String frame, String slot, Value v, String argument) {
+        if (!(v instanceof Value.Lst list) || argument == null) {
+            return;
+        }
+        DataType itemType = DataType.parse(argument).orElse(DataType.INSTANCE);
+        for (Value item : list.items()) {
+            boolean fits = switch (itemType) {
+                case INSTANCE, FRAME -> item instanceof Value.Ref;
+                case INTEGER -> item instanceof Value.Int;
+                case FLOAT -> item instanceof Value.Real || item instanceof Value.Int;
+                case BOOLEAN -> item instanceof Value.Bool;
+                case STRING, LIST -> true;
+            };
+            if (!fits) {
+                problems.add(Problem.of(frame, slot, where(slot, frame) + " holds the list item '" + item.text()
+                        + "', a " + item.type().xmlName() + ", but its ARGUMENT makes it a list of "
+                        + (References.isClassArgument(argument) ? "instances of '" + argument + "'"
+                                : itemType.xmlName()) + "."));
+                return;
             }
         }
     }
