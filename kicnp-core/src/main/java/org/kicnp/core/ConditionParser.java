@@ -13,7 +13,7 @@ import java.util.Locale;
  *            | [left] "in" "(" operand ("," operand)* ")" | [left] "matches" string
  * left      := "." name ("." name)*          a slot of the instance held by this slot
  * op        := "==" | "=" | "!=" | "&lt;" | "&lt;=" | "&gt;" | "&gt;="
- * operand   := string | number | TRUE | FALSE | "@" name | name ("." name)*
+ * operand   := string | number | TRUE | FALSE | "@" frame-name | name ("." name)*
  * </pre>
  * A bare name path such as {@code mUser.name} refers to the binding; {@code s.mUser.name}, as scripts write it, is
  * accepted too. {@code @Kitchen} is a constant reference to the frame Kitchen.
@@ -122,7 +122,7 @@ public final class ConditionParser {
         }
         if (c == '@') {
             pos++;
-            return new Operand.Constant(Value.ref(name()));
+            return new Operand.Constant(Value.ref(frameName()));
         }
         if (c == '-' || c == '+' || Character.isDigit(c)) {
             return new Operand.Constant(number());
@@ -208,6 +208,22 @@ public final class ConditionParser {
         }
         if (start == pos) {
             throw error("a slot or frame name");
+        }
+        return text.substring(start, pos);
+    }
+
+    /** A frame name after '@': as {@link Names#isFrameName} allows, so with '-' (AIBO-1), unlike a slot name. */
+    private String frameName() {
+        int start = pos;
+        if (pos < text.length() && (Character.isLetter(text.charAt(pos)) || text.charAt(pos) == '_')) {
+            pos++;
+            while (pos < text.length() && (Character.isLetterOrDigit(text.charAt(pos)) || text.charAt(pos) == '_'
+                    || text.charAt(pos) == '-')) {
+                pos++;
+            }
+        }
+        if (start == pos) {
+            throw error("a frame name after '@'");
         }
         return text.substring(start, pos);
     }

@@ -17,11 +17,15 @@ import java.util.Set;
  */
 final class Validator {
     private static final int CYCLE_CHECK_STEPS = 10_000;
+    /** How many frames of an IS-A cycle a problem names: a cycle may run through thousands. */
+    private static final int CYCLE_TEXT_NAMES = 10;
 
     private final Map<String, Frame> staged;
     private final NodeIndex base;
     /** Frames known to have an acyclic IS-A chain in the view, by name. */
     private final Map<String, ClassInfo> classes;
+    /** Frames found to have an IS-A cycle in their chain, so no other frame walks it again; null until one is. */
+    private Set<String> cyclic;
     private final List<Problem> problems = new ArrayList<>(0);
     /** Staged frames by parent name, for parents that are missing or instances in the view; null until one is. */
     private Map<String, List<String>> stagedChildren;
@@ -294,6 +298,8 @@ final class Validator {
                     requireClass(name, slot, argument);
                     instanceOf = argument;
                 }
+                checkItems(name, slot, own.valueOrNull(), argument);
+                checkItems(name, slot, own.defaultOrNull(), argument);
             }
             default -> { }
         }
@@ -320,6 +326,34 @@ final class Validator {
             if (o instanceof Operand.Path p && Inheritance.slot(this::view, f, p.head()).isEmpty()) {
                 problems.add(Problem.of(f.name(), own.name(), where(own.name(), f.name()) + " has a condition on '"
                         + p.text() + "', but frame '" + f.name() + "' has no slot '" + p.head() + "'."));
+            }
+        }
+    }
+
+    /**
+     * The items of a list must be of the type its ARGUMENT names, as the XML reader will read them back: otherwise a
+     * saved or journalled list (a TYPE_INT list holding "abc") is a file the loader refuses. An integer may stand in
+     * a TYPE_FLOAT list, as in a TYPE_FLOAT slot; a list of TYPE_STR, or without an ARGUMENT, takes any item.
+     */
+    private void checkItems(String frame, String slot, Value v, String argument) {
+        if (!(v instanceof Value.Lst list) || argument == null) {
+            return;
+        }
+        DataType itemType = DataType.parse(argument).orElse(DataType.INSTANCE);
+        for (Value item : list.items()) {
+            boolean fits = switch (itemType) {
+                case INSTANCE, FRAME -> item instanceof Value.Ref;
+                case INTEGER -> item instanceof Value.Int;
+                case FLOAT -> item instanceof Value.Real || item instanceof Value.Int;
+                case BOOLEAN -> item instanceof Value.Bool;
+                case STRING, LIST -> true;
+            };
+            if (!fits) {
+                problems.add(Problem.of(frame, slot, where(slot, frame) + " holds the list item '" + item.text()
+                        + "', a " + item.type().xmlName() + ", but its ARGUMENT makes it a list of "
+                        + (References.isClassArgument(argument) ? "instances of '" + argument + "'"
+                                : itemType.xmlName()) + "."));
+                return;
             }
         }
     }
@@ -406,6 +440,9 @@ final class Validator {
             classes.put(x.name(), c);
             return c;
         }
+        if (cyclic != null && cyclic.contains(x.name())) {
+            return null;
+        }
         List<Frame> path = new ArrayList<>(8);
         int nextCheck = CYCLE_CHECK_STEPS;
         ClassInfo top = null;
@@ -413,13 +450,16 @@ final class Validator {
             path.add(y);
             if (path.size() > nextCheck) {
                 if (repeats(path)) {
-                    return null;
+                    return cyclic(path);
                 }
                 nextCheck *= 2;
             }
             String yp = y.parentOrNull();
             if (yp == null) {
                 break;
+            }
+            if (cyclic != null && cyclic.contains(yp)) {
+                return cyclic(path);
             }
             top = classes.get(yp);
             if (top != null) {
@@ -435,6 +475,17 @@ final class Validator {
             }
         }
         return top;
+    }
+
+    /** Remembers that every frame of {@code path} leads into an IS-A cycle (a chain never changes in a view). */
+    private ClassInfo cyclic(List<Frame> path) {
+        if (cyclic == null) {
+            cyclic = new HashSet<>();
+        }
+        for (Frame f : path) {
+            cyclic.add(f.name());
+        }
+        return null;
     }
 
     private static boolean repeats(List<Frame> path) {
@@ -462,6 +513,9 @@ final class Validator {
         Set<String> seen = new HashSet<>();
         Frame x = f;
         while (x != null && seen.add(x.name())) {
+            if (path.size() == CYCLE_TEXT_NAMES) {
+                return String.join(" -> ", path) + " -> and further frames";
+            }
             path.add(x.name());
             x = parentOf(x);
         }

@@ -1,5 +1,6 @@
 package org.kicnp.core.xml;
 
+import com.ctc.wstx.exc.WstxLazyException;
 import java.io.CharConversionException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -25,6 +26,9 @@ final class FrameReader {
     private final TextCache texts = new TextCache();
     /** Whether reading stopped before the end of the document or skipped a FRAME, so frames were never seen. */
     private boolean cut;
+    /** The NAME of the frame and of the slot being read, once read: what malformed XML found there is about. */
+    private String frameName;
+    private String slotName;
 
     private FrameReader(XMLStreamReader r, String source, List<LoadError> errors, Consumer<FrameElement> sink) {
         this.r = r;
@@ -55,8 +59,13 @@ final class FrameReader {
             fr.document();
             return !fr.cut;
         } catch (XMLStreamException e) {
-            errors.add(file.filter(f -> notUtf8(e)).flatMap(f -> Utf8Check.firstMalformed(f, source))
-                    .orElseGet(() -> fr.syntaxError(e)));
+            fr.malformed(e, file);
+            return false;
+        } catch (WstxLazyException e) {
+            // A mistake inside text the parser had begun (a bare '&' in a script, text over the size limit) comes
+            // when the text is asked for, unchecked: it is malformed XML all the same.
+            fr.malformed(e.getCause() instanceof XMLStreamException x ? x : new XMLStreamException(e.getMessage()),
+                    file);
             return false;
         } finally {
             try {
@@ -159,12 +168,36 @@ final class FrameReader {
                     } else if (items.containsKey(t)) {
                         repeated("FRAME", tag);
                     } else {
-                        items.put(t, leaf(tag, t.childTags()));
+                        Located item = leaf(tag, t.childTags());
+                        items.put(t, item);
+                        if (t == FrameTag.NAME && !item.absent()) {
+                            frameName = item.stripped();
+                        }
                     }
                 }
             }
         }
+        frameName = null;
+        concern(errorsBefore, items.get(FrameTag.NAME), false);
         return new FrameElement(at, items, to, from, slots, errors.size() > errorsBefore);
+    }
+
+    /**
+     * Marks the errors found since {@code from} as concerning the frame (or slot) just read, when its NAME, which may
+     * come after the mistake, says which: the editor shows each error at its frame and slot.
+     */
+    private void concern(int from, Located name, boolean slot) {
+        if (name == null || name.absent()) {
+            return;
+        }
+        Optional<String> named = Optional.of(name.stripped());
+        for (int i = from; i < errors.size(); i++) {
+            LoadError e = errors.get(i);
+            if (slot ? e.slot().isEmpty() : e.frame().isEmpty()) {
+                errors.set(i, new LoadError(e.source(), e.line(), e.column(), e.message(), slot ? e.frame() : named,
+                        slot ? named : e.slot()));
+            }
+        }
     }
 
     private void slotList(List<SlotElement> slots) throws XMLStreamException {
@@ -180,6 +213,7 @@ final class FrameReader {
 
     private SlotElement slot() throws XMLStreamException {
         Location start = r.getLocation();
+        int errorsBefore = errors.size();
         Located[] facets = new Located[SlotTag.COUNT];
         while (nextChild("SLOT")) {
             String tag = r.getLocalName();
@@ -192,8 +226,13 @@ final class FrameReader {
                 repeated("SLOT", tag);
             } else {
                 facets[t.ordinal()] = leaf(tag, t.childTags());
+                if (t == SlotTag.NAME && !facets[t.ordinal()].absent()) {
+                    slotName = facets[t.ordinal()].stripped();
+                }
             }
         }
+        slotName = null;
+        concern(errorsBefore, facets[SlotTag.NAME.ordinal()], true);
         return new SlotElement(start.getLineNumber(), start.getColumnNumber(), facets);
     }
 
@@ -232,11 +271,13 @@ final class FrameReader {
         StringBuilder more = null;
         int textLine = -1;
         int textColumn = -1;
+        boolean literal = false;
         List<Located> items = List.of();
         while (true) {
             int event = r.next();
             switch (event) {
                 case XMLStreamConstants.CHARACTERS, XMLStreamConstants.CDATA, XMLStreamConstants.SPACE -> {
+                    literal |= event == XMLStreamConstants.CDATA;
                     if (textLine < 0) {
                         // Only a condition's errors point inside its text; other elements skip the location.
                         if (tag.equals("CONDITION")) {
@@ -248,12 +289,13 @@ final class FrameReader {
                         }
                         text = event == XMLStreamConstants.CHARACTERS
                                 ? texts.text(r.getTextCharacters(), r.getTextStart(), r.getTextLength()) : r.getText();
-                    } else if (!(r.isWhiteSpace() && text.isBlank())) {
-                        // White space around ITEM children is dropped; text beside items is reported below.
+                    } else {
+                        // Text beside ITEM children is reported below unless it is white space; none is dropped
+                        // here, so white space between comments and further text stays part of the text.
                         if (more == null) {
                             more = new StringBuilder(text);
                         }
-                        more.append(r.getText());
+                        more.append(r.getTextCharacters(), r.getTextStart(), r.getTextLength());
                     }
                 }
                 case XMLStreamConstants.START_ELEMENT -> {
@@ -271,13 +313,18 @@ final class FrameReader {
                 case XMLStreamConstants.END_ELEMENT -> {
                     if (more != null) {
                         text = more.toString();
+                        // The parser limits each piece of text; pieces split by comments or CDATA are checked here.
+                        if (text.length() > SecureXml.MAX_TEXT) {
+                            error(start, "Element " + tag + " holds " + text.length() + " characters of text, more "
+                                    + "than the " + SecureXml.MAX_TEXT + " a knowledge file may hold in one element.");
+                        }
                     }
                     if (!items.isEmpty() && !text.isBlank()) {
                         error(start, "Element " + tag + " mixes text with " + String.join("/", childTags)
                                 + " elements; give one or the other.");
                     }
                     return new Located(text, items, start.getLineNumber(), start.getColumnNumber(),
-                            textLine <= 0 ? start.getLineNumber() : textLine, textLine <= 0 ? 0 : textColumn);
+                            textLine <= 0 ? start.getLineNumber() : textLine, textLine <= 0 ? 0 : textColumn, literal);
                 }
                 default -> { }
             }
@@ -370,6 +417,11 @@ final class FrameReader {
         errors.add(new LoadError(source, l.getLineNumber(), l.getColumnNumber(), message));
     }
 
+    private void malformed(XMLStreamException e, Optional<Path> file) {
+        errors.add(file.filter(f -> notUtf8(e)).flatMap(f -> Utf8Check.firstMalformed(f, source))
+                .orElseGet(() -> syntaxError(e)));
+    }
+
     /** Whether the parser stopped at bytes that do not decode as UTF-8 (Woodstox wraps its decoder's exception). */
     private static boolean notUtf8(XMLStreamException e) {
         Throwable t = e;
@@ -398,7 +450,8 @@ final class FrameReader {
             msg = msg + ".";
         }
         return new LoadError(source, l == null ? 1 : Math.max(1, l.getLineNumber()),
-                l == null ? 1 : Math.max(1, l.getColumnNumber()), "The XML is not well-formed: " + msg);
+                l == null ? 1 : Math.max(1, l.getColumnNumber()), "The XML is not well-formed: " + msg,
+                Optional.ofNullable(frameName), Optional.ofNullable(slotName));
     }
 
     private static String abbreviate(String t) {

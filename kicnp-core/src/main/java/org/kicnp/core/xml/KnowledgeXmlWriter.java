@@ -115,7 +115,7 @@ public final class KnowledgeXmlWriter {
 
     private void frame(Frame f, int d) throws IOException {
         open("FRAME", d);
-        element("NAME", f.name(), d + 1);
+        name(f.name(), d + 1);
         if (f.parent().isPresent()) {
             text("ISA", f.parent().get(), d + 1, "frame '" + f.name() + "'");
         }
@@ -162,7 +162,7 @@ public final class KnowledgeXmlWriter {
     private void slot(Frame f, Slot s, int d) throws IOException {
         String where = "slot '" + s.name() + "' of frame '" + f.name() + "'";
         open("SLOT", d);
-        element("NAME", s.name(), d + 1);
+        name(s.name(), d + 1);
         element("TYPE", s.type().xmlName(), d + 1);
         if (!(s.condition() instanceof Condition.Any)) {
             text("CONDITION", s.condition().text(), d + 1, where);
@@ -264,6 +264,15 @@ public final class KnowledgeXmlWriter {
         out.write("</");
         out.write(tag);
         out.write(">\n");
+    }
+
+    /** A frame or slot NAME: checked by the frame model, so it needs no escaping, but NULL must not read as absent. */
+    private void name(String name, int d) throws IOException {
+        if (Located.isNull(name)) {
+            text("NAME", name, d, "name '" + name + "'");
+        } else {
+            element("NAME", name, d);
+        }
     }
 
     /** An element holding free text: escaped, or in CDATA when it holds markup characters or line breaks. */

@@ -4,18 +4,19 @@ import java.util.List;
 
 /**
  * A simple element as read: its raw text, its ITEM-like children (themselves simple elements), where its start tag
- * is and where its text begins (for pointing into a condition). Empty text or {@code NULL} means "absent".
+ * is and where its text begins (for pointing into a condition). Empty text or {@code NULL} means "absent", unless
+ * the text was given in CDATA ({@code literal}): {@code <![CDATA[]]>} is the empty string, not "absent".
  */
-record Located(String text, List<Located> items, int line, int column, int textLine, int textColumn) {
+record Located(String text, List<Located> items, int line, int column, int textLine, int textColumn, boolean literal) {
 
     /** The text without surrounding white space. */
     String stripped() {
         return text.strip();
     }
 
-    /** Whether the element says nothing: empty, white space or {@code NULL}, and no items. */
+    /** Whether the element says nothing: empty, white space or {@code NULL} not given in CDATA, and no items. */
     boolean absent() {
-        return items.isEmpty() && isNull(text);
+        return !literal && items.isEmpty() && isNull(text);
     }
 
     SourceLocation at(String source) {

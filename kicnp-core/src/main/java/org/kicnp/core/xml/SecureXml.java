@@ -29,7 +29,8 @@ final class SecureXml {
         f.setProperty(XMLInputFactory.SUPPORT_DTD, false);
         f.setProperty(XMLInputFactory.IS_SUPPORTING_EXTERNAL_ENTITIES, false);
         f.setProperty(XMLInputFactory.IS_REPLACING_ENTITY_REFERENCES, true);
-        f.setProperty(XMLInputFactory.IS_COALESCING, true);
+        // Not coalescing, so that the reader sees CDATA sections: text in CDATA is taken as written, never as absent.
+        f.setProperty(XMLInputFactory.IS_COALESCING, false);
         // Knowledge files use no namespaces; without namespace processing Woodstox does less work per element.
         f.setProperty(XMLInputFactory.IS_NAMESPACE_AWARE, false);
         f.setProperty(XMLInputFactory.RESOLVER, refuse);

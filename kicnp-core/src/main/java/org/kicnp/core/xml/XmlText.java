@@ -6,13 +6,18 @@ import org.kicnp.core.KnowledgeException;
 /**
  * Writes free text as XML element content. Text with {@code <}, {@code &} or a line break goes in CDATA, so scripts
  * stay readable; other text is escaped. A carriage return would be lost to XML's line-end normalisation inside CDATA,
- * so such text is escaped with character references instead.
+ * so such text is escaped with character references instead. Text that plain would read as absent (empty, white
+ * space, {@code NULL}) goes in CDATA too, which the reader takes as written: {@code <![CDATA[]]>} is the empty string.
  */
 final class XmlText {
     private XmlText() {
     }
 
     static void write(CharSink out, String text, String where) throws IOException {
+        if (text.length() > SecureXml.MAX_TEXT) {
+            throw new KnowledgeException("The " + where + " holds " + text.length() + " characters of text, more than "
+                    + "the " + SecureXml.MAX_TEXT + " a knowledge file may hold in one element.");
+        }
         boolean markup = false;
         boolean cr = false;
         for (int i = 0; i < text.length(); i++) {
@@ -33,7 +38,15 @@ final class XmlText {
                         + String.format("%04X", (int) c) + ", which XML 1.0 cannot represent.");
             }
         }
-        if (markup && !cr) {
+        if (Located.isNull(text)) {
+            // White space or NULL: no markup or "]]>" to split; a carriage return follows an empty section, escaped.
+            out.write("<![CDATA[");
+            out.write(cr ? "" : text);
+            out.write("]]>");
+            if (!cr) {
+                return;
+            }
+        } else if (markup && !cr) {
             out.write("<![CDATA[");
             out.write(text.replace("]]>", "]]]]><![CDATA[>"));
             out.write("]]>");

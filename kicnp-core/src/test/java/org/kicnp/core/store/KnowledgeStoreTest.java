@@ -51,6 +51,28 @@ class KnowledgeStoreTest {
         }
     }
 
+    /** The journal holds frames as XML: a learned name "" or "NULL" must not come back as no name after a restart. */
+    @Test
+    void reopen_learnedStringsThatPlainXmlReadsAsAbsent_comeBackAsTheyWere() throws Exception {
+        Path dir = baseDir(tmp);
+        Frame empty = user("ann", "", 1, Provenance.LEARNED);
+        Frame spaces = user("bob", "  ", 1, Provenance.LEARNED);
+        Frame nullName = user("cid", "NULL", 1, Provenance.LEARNED);
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET)) {
+            store.kb().apply(List.of(new Change.Add(empty), new Change.Add(spaces), new Change.Add(nullName)));
+        }
+
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET.withCompactOnClose(true))) {
+            assertThat(store.kb().require("ann")).isEqualTo(empty);
+            assertThat(store.kb().require("bob")).isEqualTo(spaces);
+            assertThat(store.kb().require("cid")).isEqualTo(nullName);
+        }
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET)) {
+            assertThat(store.kb().require("ann")).as("after compaction").isEqualTo(empty);
+            assertThat(store.kb().require("cid")).isEqualTo(nullName);
+        }
+    }
+
     @Test
     void compact_foldsTheJournalIntoValidXmlFilesThatReloadEqual() throws Exception {
         Path dir = baseDir(tmp);

@@ -8,8 +8,11 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Optional;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import org.kicnp.core.ConditionParser;
 import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
@@ -211,6 +214,32 @@ class KnowledgeXmlWriterTest {
                 .hasMessage("The slot 's' of frame 'B' holds the character U+0007, which XML 1.0 cannot represent.");
     }
 
+    /** The reader refuses one element's text over its limit, so writing it would give a file that cannot be loaded. */
+    @Test
+    void write_whenATextIsLongerThanTheReaderAccepts_refusesItInsteadOfWritingAFileThatCannotBeLoaded() {
+        Frame f = Frame.classFrame("B").slot(Slot.ofValue("log", DataType.STRING, Value.of("x".repeat(SecureXml.MAX_TEXT
+                + 1)))).build();
+
+        assertThatThrownBy(() -> KnowledgeXmlWriter.toXml(f))
+                .isInstanceOf(KnowledgeException.class)
+                .hasMessage("The slot 'log' of frame 'B' holds 4194305 characters of text, more than the 4194304 a "
+                        + "knowledge file may hold in one element.");
+        assertThat(KnowledgeXmlWriter.toXml(Frame.classFrame("B").slot(Slot.ofValue("log", DataType.STRING,
+                Value.of("x".repeat(SecureXml.MAX_TEXT)))).build())).hasSizeGreaterThan(SecureXml.MAX_TEXT);
+    }
+
+    @Test
+    void parse_whenATextSplitByCommentsIsLongerThanTheLimit_reportsTheElement() {
+        String half = "x".repeat(SecureXml.MAX_TEXT / 2 + 1);
+        String xml = "<FRAME><NAME>B</NAME><SLOTLIST><SLOT><NAME>log</NAME><TYPE>TYPE_STR</TYPE>\n<VALUE>" + half
+                + "<!-- -->" + half + "</VALUE></SLOT></SLOTLIST></FRAME>";
+
+        assertThatThrownBy(() -> KnowledgeLoader.parseText(xml, "x", KnowledgeBase.create()))
+                .isInstanceOf(KnowledgeXmlException.class)
+                .hasMessage("x:2:1: Element VALUE holds 4194306 characters of text, more than the 4194304 a knowledge "
+                        + "file may hold in one element.");
+    }
+
     @Test
     void loadSaveLoad_ofTheScenario_givesEqualFramesAndIdenticalBytes() throws Exception {
         KnowledgeBase first = KnowledgeBase.create();
@@ -255,5 +284,64 @@ class KnowledgeXmlWriterTest {
                 .frame();
 
         assertThat(back).isEqualTo(f);
+    }
+
+    /**
+     * Text the format reads as "absent" when plain (empty, white space, the word NULL in any case) is written in CDATA,
+     * which the reader takes as written: a learned answer "" or "null" survives a save, and the journal, which holds
+     * frames in this format, gives it back after a restart.
+     */
+    @ParameterizedTest
+    @ValueSource(strings = {"", " ", "\t\n  ", "\r", " \r\n ", "NULL", "null", " Null\n"})
+    void writeThenParse_stringThatPlainTextWouldReadAsAbsent_givesTheSameString(String text) {
+        Frame f = Frame.classFrame("Answer")
+                .slot(Slot.builder("said", DataType.STRING).value(Value.of(text)).build())
+                .slot(Slot.builder("fallback", DataType.STRING).defaultValue(Value.of(text)).build())
+                .slot(Slot.builder("heard", DataType.LIST).value(new Value.Lst(List.of(Value.of(text)))).build())
+                .build();
+
+        Frame back = KnowledgeLoader.parseText(KnowledgeXmlWriter.toXml(f), "x", KnowledgeBase.create())
+                .getFirst().frame();
+
+        assertThat(back.slots()).extracting(Slot::effectiveValue).containsExactly(Optional.of(Value.of(text)),
+                Optional.of(Value.of(text)), Optional.of(new Value.Lst(List.of(Value.of(text)))));
+        assertThat(back).isEqualTo(f);
+    }
+
+    /** Frame and slot names, references and relations may be NULL in any case; written in CDATA they read back. */
+    @ParameterizedTest
+    @ValueSource(strings = {"NULL", "null", "Null"})
+    void writeThenParse_namesSpelledNull_giveTheSameFrames(String name) {
+        Frame root = Frame.classFrame(name).build();
+        Frame user = Frame.instance("user1", name)
+                .part(name)
+                .linkTo(new Relation.Named(name.toLowerCase(java.util.Locale.ROOT)), name)
+                .slot(Slot.builder(name, DataType.INSTANCE).argument(name).value(Value.ref(name)).frameRelated(name)
+                        .frameListRelated(List.of(name)).build())
+                .build();
+
+        List<Frame> back = KnowledgeLoader.parseText(save(List.of(root, user)), "x", KnowledgeBase.create()).stream()
+                .map(SourcedFrame::frame).toList();
+
+        assertThat(back).containsExactly(root, user);
+    }
+
+    @Test
+    void parse_emptyOrNullTextOutsideCdata_isStillAbsentAsTable4PrintsIt() {
+        String xml = """
+                <FRAME><NAME>X</NAME><ISA>NULL</ISA><SLOTLIST>
+                  <SLOT><NAME>a</NAME><TYPE>TYPE_STR</TYPE><VALUE></VALUE></SLOT>
+                  <SLOT><NAME>b</NAME><TYPE>TYPE_STR</TYPE><VALUE> NULL </VALUE><ARGUMENT>null</ARGUMENT></SLOT>
+                  <SLOT><NAME>c</NAME><TYPE>TYPE_STR</TYPE><VALUE><![CDATA[]]></VALUE></SLOT>
+                </SLOTLIST></FRAME>
+                """;
+
+        Frame x = KnowledgeLoader.parseText(xml, "x", KnowledgeBase.create()).getFirst().frame();
+
+        assertThat(x.parent()).isEmpty();
+        assertThat(x.ownSlot("a").orElseThrow().value()).isEmpty();
+        assertThat(x.ownSlot("b").orElseThrow().value()).isEmpty();
+        assertThat(x.ownSlot("b").orElseThrow().argument()).isEmpty();
+        assertThat(x.ownSlot("c").orElseThrow().value()).contains(Value.of(""));
     }
 }
