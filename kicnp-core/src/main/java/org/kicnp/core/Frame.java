@@ -46,6 +46,15 @@ public final class Frame {
         return items == null || items.isEmpty() ? List.of() : List.copyOf(items);
     }
 
+    /**
+     * A valid frame name for any text (a name heard, a label typed): each run of characters a frame name cannot hold
+     * becomes one '_', and a '_' goes first when the text does not start with a letter; "José O'Brien" gives
+     * "José_O_Brien". The same text always gives the same name.
+     */
+    public static String nameFor(String text) {
+        return Names.toFrameName(requireNonNull(text, "text"));
+    }
+
     /** Starts a class frame. */
     public static Builder classFrame(String name) {
         return new Builder(name, FrameKind.CLASS);

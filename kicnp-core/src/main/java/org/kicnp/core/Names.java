@@ -19,6 +19,35 @@ final class Names {
         return true;
     }
 
+    /**
+     * A frame name made from any text, such as a person's name heard: each run of characters a frame name cannot hold
+     * (spaces, apostrophes, combining marks, a letter beyond U+FFFF) becomes one '_', and a '_' goes first when the
+     * text does not start with a letter. The same text always gives the same name; blank text gives "_".
+     */
+    static String toFrameName(String text) {
+        StringBuilder sb = new StringBuilder(text.length() + 1);
+        boolean gap = false;
+        for (int i = 0; i < text.length(); i++) {
+            char c = text.charAt(i);
+            if (Character.isLetterOrDigit(c) || c == '_' || c == '-') {
+                if (gap) {
+                    sb.append('_');
+                    gap = false;
+                }
+                sb.append(c);
+            } else {
+                gap = true;
+            }
+        }
+        if (gap) {
+            sb.append('_');
+        }
+        if (sb.isEmpty() || !(Character.isLetter(sb.charAt(0)) || sb.charAt(0) == '_')) {
+            sb.insert(0, '_');
+        }
+        return sb.toString();
+    }
+
     /** Letters, digits, '_' and '$', starting with a letter, '_' or '$': what a script can read as s.name. */
     static boolean isSlotName(String s) {
         if (s.isEmpty() || !(Character.isLetter(s.charAt(0)) || s.charAt(0) == '_' || s.charAt(0) == '$')) {

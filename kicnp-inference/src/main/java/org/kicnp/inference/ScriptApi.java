@@ -113,6 +113,10 @@ final class ScriptApi {
             LOG.info("[{}] {}", frame, String.join(" ", args.stream().map(String::valueOf).toList()));
             return true;
         });
+        g.put("frameName", (HostFunction) args -> {
+            need(args, 1, "frameName(text)");
+            return Frame.nameFor(String.valueOf(args.get(0)));
+        });
         g.put("learn", (HostFunction) args -> {
             need(args, 2, "learn(name, parentClass, slots)");
             String name = String.valueOf(args.get(0));
