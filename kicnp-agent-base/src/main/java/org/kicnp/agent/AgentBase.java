@@ -217,6 +217,23 @@ public abstract class AgentBase implements AutoCloseable {
         send(new Message.SensorSignal(name(), sensor, List.of(values)));
     }
 
+    /**
+     * Reports a sensor signal that is good for {@code ttl} (1 ms to a day, whole milliseconds): unless a newer signal
+     * of the same sensor comes first, the server then retracts it, with what the engine derived from it. For readings
+     * a robot repeats while they hold (a face in view, an obstacle ahead): when the robot stops saying so, the
+     * knowledge base stops believing it.
+     *
+     * @throws IllegalArgumentException when {@code ttl} is out of that range
+     */
+    public final void sensor(String sensor, Duration ttl, Value... values) {
+        if (ttl.isNegative() || ttl.isZero() || ttl.compareTo(Duration.ofMillis(Message.SensorSignal.MAX_TTL_MS)) > 0
+                || ttl.toNanos() % 1_000_000 != 0) {
+            throw new IllegalArgumentException("The time to live of sensor '" + sensor
+                    + "' must be a whole number of milliseconds from 1 ms to a day, not " + ttl + ".");
+        }
+        send(new Message.SensorSignal(name(), sensor, List.of(values), Optional.of(ttl.toMillis())));
+    }
+
     /** Every instance of a class (and of the classes below it). */
     public final List<Frame> query(String ofClass) {
         Message.Frames f = (Message.Frames) request(new Message.Query(nextId(), ofClass));

@@ -58,6 +58,9 @@ final class Batch {
                     if (!exists) {
                         problem = "There is no frame named '" + name + "' to remove.";
                     } else {
+                        if (rm.expectedRevision() != Change.ANY_REVISION && n != null && n.revision != rm.expectedRevision()) {
+                            throw new StaleRevisionException(name, rm.expectedRevision(), n.revision);
+                        }
                         b.stage(name, null);
                     }
                 }

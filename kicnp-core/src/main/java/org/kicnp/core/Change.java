@@ -51,10 +51,18 @@ public sealed interface Change permits Change.Add, Change.Replace, Change.Put, C
         }
     }
 
-    /** Removes a frame; fails while it has subclasses or instances or other frames refer to it. */
-    record Remove(String name) implements Change {
+    /**
+     * Removes a frame; fails while it has subclasses or instances or other frames refer to it. With an expected
+     * revision other than {@link #ANY_REVISION} the removal fails if the frame changed since that revision was read
+     * (a reading that expires must not take a newer reading of the same sensor with it).
+     */
+    record Remove(String name, long expectedRevision) implements Change {
         public Remove {
             requireNonNull(name, "name");
+        }
+
+        public Remove(String name) {
+            this(name, ANY_REVISION);
         }
     }
 }

@@ -1,6 +1,6 @@
 package org.kicnp.core;
 
-/** A replace expected a frame revision that is no longer current: someone else saved the frame in between. */
+/** A replace or removal expected a frame revision that is no longer current: someone else saved the frame in between. */
 public final class StaleRevisionException extends KnowledgeException {
     private final String frame;
     private final long expected;

@@ -294,6 +294,19 @@ class KnowledgeBaseTest {
     }
 
     @Test
+    void remove_withStaleRevision_isRefusedAndKeepsTheNewerFrame_withTheRevisionReadItGoes() {
+        KnowledgeBase kb = figure1();
+        long read = kb.revision("Speech");
+        kb.replace(Frame.classFrame("Speech").parent("HumanRobotInteraction").slot(str("text", "hi")).build());
+        assertThatThrownBy(() -> kb.apply(List.of(new Change.Remove("Speech", read))))
+                .isInstanceOf(StaleRevisionException.class)
+                .hasMessageContaining("Frame 'Speech' was changed by someone else");
+        assertThat(kb.value("Speech", "text")).contains(Value.of("hi"));
+        kb.apply(List.of(new Change.Remove("Speech", kb.revision("Speech"))));
+        assertThat(kb.contains("Speech")).isFalse();
+    }
+
+    @Test
     void put_thatChangesNothing_makesNoEventAndNoVersion() {
         KnowledgeBase kb = figure1();
         long v = kb.version();

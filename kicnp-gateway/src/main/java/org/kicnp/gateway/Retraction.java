@@ -1,7 +1,9 @@
 package org.kicnp.gateway;
 
+import java.util.List;
 import java.util.Set;
 import java.util.concurrent.CompletableFuture;
+import org.kicnp.core.Change;
 import org.kicnp.core.KnowledgeBase;
 
 /**
@@ -13,8 +15,18 @@ import org.kicnp.core.KnowledgeBase;
  */
 @FunctionalInterface
 public interface Retraction {
-    /** Takes the frame away; an unchecked exception is logged by the caller, naming the frame and the agent. */
-    void retract(String frame);
+    /**
+     * Takes the frame away if it is still at {@code expectedRevision} ({@link Change#ANY_REVISION}: whatever it is
+     * now); a frame changed since is left as it is (a sensor reading that expires must not take a newer reading of the
+     * same sensor with it: {@link org.kicnp.core.StaleRevisionException} where the removal is refused at once). An
+     * unchecked exception is logged by the caller, naming the frame and the agent.
+     */
+    void retract(String frame, long expectedRevision);
+
+    /** Takes the frame away, whatever its revision. */
+    default void retract(String frame) {
+        retract(frame, Change.ANY_REVISION);
+    }
 
     /**
      * Destroys an instance an agent asked to destroy, with what rests on it; completes with the names removed, or
@@ -33,6 +45,6 @@ public interface Retraction {
 
     /** Plain removal from the knowledge base, for a gateway with no inference engine. */
     static Retraction removeFrom(KnowledgeBase kb) {
-        return kb::remove;
+        return (frame, revision) -> kb.apply(List.of(new Change.Remove(frame, revision)));
     }
 }

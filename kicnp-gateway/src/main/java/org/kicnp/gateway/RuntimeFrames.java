@@ -7,12 +7,15 @@ import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import org.kicnp.core.BatchRejectedException;
+import org.kicnp.core.ChangeSet;
 import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.KnowledgeException;
 import org.kicnp.core.Provenance;
 import org.kicnp.core.Slot;
+import org.kicnp.core.StaleRevisionException;
+import org.kicnp.core.UnknownFrameException;
 import org.kicnp.core.Value;
 import org.kicnp.protocol.AgentKind;
 import org.kicnp.protocol.Message.Command;
@@ -58,20 +61,53 @@ final class RuntimeFrames {
         put(agent, f);
     }
 
-    /** Puts the latest signal of a sensor, replacing the one before. */
-    void signal(SensorSignal s) {
+    /** Runs a task once, some milliseconds from now (on a gateway I/O thread). */
+    @FunctionalInterface
+    interface Later {
+        void run(long millis, Runnable task);
+    }
+
+    /**
+     * Puts the latest signal of a sensor, replacing the one before. A signal with a time to live gets the slot
+     * {@code expires} (epoch milliseconds) and is retracted then (with what was derived from it), unless by then the
+     * sensor's frame has changed (a newer signal, with or without a time to live of its own, replaced it).
+     */
+    void signal(SensorSignal s, Later later) {
         ensureClass(SENSOR_SIGNAL);
-        Frame.Builder b = Frame.instance("signal_" + s.source() + "_" + s.sensor(), SENSOR_SIGNAL)
+        long now = System.currentTimeMillis();
+        String name = "signal_" + s.source() + "_" + s.sensor();
+        Frame.Builder b = Frame.instance(name, SENSOR_SIGNAL)
                 .provenance(Provenance.RUNTIME)
                 .slot(Slot.ofValue("source", DataType.STRING, Value.of(s.source())))
                 .slot(Slot.ofValue("sensor", DataType.STRING, Value.of(s.sensor())))
-                .slot(Slot.ofValue("time", DataType.INTEGER, Value.of(System.currentTimeMillis())))
+                .slot(Slot.ofValue("time", DataType.INTEGER, Value.of(now)))
                 .slot(Slot.ofValue("values", DataType.LIST, new Value.Lst(s.values())));
         if (!s.values().isEmpty()) {
             Value first = s.values().getFirst();
             b.slot(Slot.ofValue("value", typeOf(first), first));
         }
-        put(s.source(), b.build());
+        s.ttlMs().ifPresent(ttl -> b.slot(Slot.ofValue("expires", DataType.INTEGER, Value.of(now + ttl))));
+        ChangeSet put = put(s.source(), b.build());
+        if (s.ttlMs().isPresent()) {
+            long revision = put.events().isEmpty() ? kb.revision(name) : put.version();
+            later.run(s.ttlMs().get(), () -> expire(s.source(), name, revision));
+        }
+    }
+
+    /** Retracts a sensor's frame whose time to live is over, if no newer version has replaced it since. */
+    private void expire(String agent, String name, long revision) {
+        try {
+            if (kb.revision(name) != revision) {
+                return; // replaced by a newer reading: that one's own clock runs
+            }
+            retraction.retract(name, revision);
+        } catch (UnknownFrameException gone) {
+            LOG.debug("'{}' of agent '{}' was gone when it expired.", name, agent);
+        } catch (StaleRevisionException newer) {
+            LOG.debug("'{}' of agent '{}' changed as it expired; the newer version stays.", name, agent);
+        } catch (RuntimeException e) {
+            LOG.warn("Could not retract the expired '{}' of agent '{}': {}", name, agent, e.getMessage());
+        }
     }
 
     /** Puts the latest feedback of a robot action. */
@@ -105,9 +141,10 @@ final class RuntimeFrames {
         }
     }
 
-    private void put(String agent, Frame f) {
-        kb.put(f);
+    private ChangeSet put(String agent, Frame f) {
+        ChangeSet cs = kb.put(f);
         framesByAgent.computeIfAbsent(agent, a -> ConcurrentHashMap.newKeySet()).add(f.name());
+        return cs;
     }
 
     private String presenceClass(AgentKind kind) {

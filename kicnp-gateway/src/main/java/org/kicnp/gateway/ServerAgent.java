@@ -4,6 +4,7 @@ import io.netty.buffer.ByteBuf;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.concurrent.TimeUnit;
 import org.kicnp.core.BatchRejectedException;
 import org.kicnp.core.Change;
 import org.kicnp.core.Frame;
@@ -187,7 +188,8 @@ final class ServerAgent {
     /** Records a sensor signal; an error (without id) if the knowledge base refuses it. */
     Optional<Message> sensor(Session from, Message.SensorSignal signal) {
         try {
-            runtime.signal(signal.from(from.agent()));
+            runtime.signal(signal.from(from.agent()),
+                    (millis, task) -> from.channel().eventLoop().schedule(task, millis, TimeUnit.MILLISECONDS));
             return Optional.empty();
         } catch (KnowledgeException | IllegalArgumentException e) {
             return Optional.of(ErrorReply.of(ErrorCode.REJECTED, "Sensor signal '" + signal.sensor() + "' from "

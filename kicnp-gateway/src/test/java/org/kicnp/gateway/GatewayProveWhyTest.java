@@ -144,7 +144,7 @@ class GatewayProveWhyTest {
     @Test
     void aRetractionThatThrows_answersTheDestroyWithAnError_andTheConnectionStays() {
         start(Reasoning.NONE, new Retraction() {
-            @Override public void retract(String frame) {
+            @Override public void retract(String frame, long expectedRevision) {
             }
 
             @Override public CompletableFuture<java.util.Set<String>> destroy(String frame) {

@@ -465,13 +465,19 @@ final class ForwardChainer {
 
     /** Removes an instance and every live instance resting on it, in one batch; returns the names. */
     Set<String> destroyNow(String instance, String reason) {
+        return destroyNow(instance, reason, Change.ANY_REVISION);
+    }
+
+    /** As {@link #destroyNow(String, String)}, only while the instance is at {@code expectedRevision}. */
+    Set<String> destroyNow(String instance, String reason, long expectedRevision) {
         if (!kb.frame(instance).map(Frame::isInstance).orElse(false)) {
             throw new UnknownFrameException(instance);
         }
         Set<String> all = new LinkedHashSet<>(List.of(instance));
         all.addAll(supports.closure(instance));
         all.removeIf(n -> !kb.contains(n));
-        kb.apply(all.stream().map(Change.Remove::new).toList());
+        kb.apply(all.stream().map(n -> new Change.Remove(n, n.equals(instance) ? expectedRevision
+                : Change.ANY_REVISION)).toList());
         all.forEach(n -> trace(new TraceEvent.Retracted(n, n.equals(instance) ? reason
                 : "it rests on '" + instance + "', which was " + reason)));
         return all;

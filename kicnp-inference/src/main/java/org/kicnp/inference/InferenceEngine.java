@@ -16,6 +16,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.Executor;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.locks.ReentrantLock;
+import org.kicnp.core.Change;
 import org.kicnp.core.ChangeSet;
 import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
@@ -24,6 +25,7 @@ import org.kicnp.core.KnowledgeException;
 import org.kicnp.core.KnowledgeListener;
 import org.kicnp.core.Provenance;
 import org.kicnp.core.Slot;
+import org.kicnp.core.StaleRevisionException;
 import org.kicnp.core.UnknownFrameException;
 import org.kicnp.core.Value;
 import org.slf4j.Logger;
@@ -291,10 +293,21 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
      * @throws KnowledgeException when a frame the engine did not derive still refers to one of them
      */
     public Set<String> destroy(String instance) {
+        return destroy(instance, Change.ANY_REVISION, "destroyed through the engine");
+    }
+
+    /**
+     * As {@link #destroy(String)}, only while the instance is still at {@code expectedRevision} (read from
+     * {@link KnowledgeBase#revision}): a newer version of it stays, and so does everything else. {@code reason} is what
+     * the trace and the explanations of what goes with it say (such as "expired: no newer reading within 500 ms").
+     *
+     * @throws StaleRevisionException when the instance changed since that revision; nothing is destroyed
+     */
+    public Set<String> destroy(String instance, long expectedRevision, String reason) {
         lock.lock();
         try {
             drain();
-            Set<String> removed = forward.destroyNow(instance, "destroyed through the engine");
+            Set<String> removed = forward.destroyNow(instance, reason, expectedRevision);
             runToQuiescence();
             return removed;
         } finally {

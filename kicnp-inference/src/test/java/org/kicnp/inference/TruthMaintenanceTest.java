@@ -47,6 +47,33 @@ class TruthMaintenanceTest {
     }
 
     @Test
+    void destroyAtARevision_whenTheInstanceChangedSince_destroysNothing_andAtItsRevisionGoesWithItsReason() {
+        List<String> destroyed = new ArrayList<>();
+        Fixture f = chainWithOnDestroy(destroyed);
+        InferenceEngine e = f.engine();
+        f.assertFact("s1", "Stimulus");
+        e.runToQuiescence();
+        long read = f.kb.revision("s1");
+        f.kb.replace(f.kb.require("s1").withSlot(Fixture.str("note", "a newer reading")));
+        e.runToQuiescence();
+        List<String> derived = new ArrayList<>(f.instancesOf("Step3"));
+        assertThat(derived).hasSize(1);
+
+        assertThatThrownBy(() -> e.destroy("s1", read, "retracted as stale"))
+                .isInstanceOf(org.kicnp.core.StaleRevisionException.class);
+        assertThat(f.kb.contains("s1")).isTrue();
+        assertThat(f.instancesOf("Step3")).isEqualTo(derived);
+        assertThat(destroyed).isEmpty();
+
+        var removed = e.destroy("s1", f.kb.revision("s1"), "retracted as stale");
+        assertThat(removed).contains("s1").containsAll(derived);
+        assertThat(f.traced(TraceEvent.Retracted.class)).contains(
+                new TraceEvent.Retracted("s1", "retracted as stale"),
+                new TraceEvent.Retracted(derived.getFirst(), "it rests on 's1', which was retracted as stale"));
+        assertThat(destroyed).containsAll(derived);
+    }
+
+    @Test
     void removeThroughKnowledgeBase_whenDerivedInstancesReferToIt_isRefusedAllOrNothing() {
         Fixture f = ForwardChainingTest.chain3();
         InferenceEngine e = f.engine();

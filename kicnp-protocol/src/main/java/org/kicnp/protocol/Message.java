@@ -143,17 +143,38 @@ public sealed interface Message {
         }
     }
 
-    /** A signal detected by a sensor; {@code source} is stamped by the server with the sending agent's name. */
-    record SensorSignal(String source, String sensor, List<Value> values) implements Message {
+    /**
+     * A signal detected by a sensor; {@code source} is stamped by the server with the sending agent's name. With
+     * {@code ttlMs}, the reading is good for that many milliseconds: unless a newer signal of the same sensor comes
+     * first, the server then takes it out of the knowledge base (and what was derived from it), so a slot condition
+     * never rests on a reading the robot stopped giving. Without it, the reading holds until the next one or until
+     * the agent goes away.
+     */
+    record SensorSignal(String source, String sensor, List<Value> values, Optional<Long> ttlMs) implements Message {
+        /** The longest time to live a signal may ask for: one day. */
+        public static final long MAX_TTL_MS = 86_400_000L;
+
         public SensorSignal {
             requireNonNull(source, "source");
             checkName(sensor, "sensor");
             values = List.copyOf(values);
+            requireNonNull(ttlMs, "ttlMs");
+            ttlMs.ifPresent(ttl -> {
+                if (ttl < 1 || ttl > MAX_TTL_MS) {
+                    throw new IllegalArgumentException("The time to live of sensor '" + sensor + "' must be 1 to "
+                            + MAX_TTL_MS + " ms, not " + ttl + ".");
+                }
+            });
+        }
+
+        /** A signal that holds until the next one of the same sensor (no time to live). */
+        public SensorSignal(String source, String sensor, List<Value> values) {
+            this(source, sensor, values, Optional.empty());
         }
 
         /** The same signal stamped with the agent the server authenticated. */
         public SensorSignal from(String sender) {
-            return new SensorSignal(sender, sensor, values);
+            return new SensorSignal(sender, sensor, values, ttlMs);
         }
     }
 

@@ -41,6 +41,10 @@ public final class MessageCodec {
                             com.fasterxml.jackson.databind.cfg.CoercionAction.Fail)
                     .setCoercion(com.fasterxml.jackson.databind.cfg.CoercionInputShape.Boolean,
                             com.fasterxml.jackson.databind.cfg.CoercionAction.Fail))
+            // Nor a fraction where it wants a whole number (a sensor's ttlMs of 2.5 would be read as 2).
+            .withCoercionConfig(com.fasterxml.jackson.databind.type.LogicalType.Integer, c -> c
+                    .setCoercion(com.fasterxml.jackson.databind.cfg.CoercionInputShape.Float,
+                            com.fasterxml.jackson.databind.cfg.CoercionAction.Fail))
             .serializationInclusion(JsonInclude.Include.NON_ABSENT)
             .build();
 

@@ -6,8 +6,11 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.util.Arrays;
 import java.util.EnumSet;
+import java.util.List;
+import java.util.Optional;
 import java.util.Set;
 import java.util.stream.Collectors;
+import org.kicnp.core.Value;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
@@ -110,6 +113,22 @@ class MessageCodecTest {
                 ErrorCode.BAD_MESSAGE, "'no spaces' is not a valid agent name");
         assertCode("{\"v\":1,\"type\":\"relay\",\"id\":\"1\",\"from\":\"a\",\"subject\":\"s\",\"body\":\"b\"}",
                 ErrorCode.BAD_MESSAGE, "exactly one of toAgent and toKind");
+    }
+
+    @Test
+    void sensor_timeToLive_isAWholeNumberOfMillisecondsFromOneToADay() {
+        String head = "{\"v\":1,\"type\":\"sensor\",\"source\":\"a\",\"sensor\":\"sonar\",\"values\":[1.5]";
+        assertThat(decode(head + ",\"ttlMs\":250}")).isEqualTo(
+                new Message.SensorSignal("a", "sonar", List.of(Value.of(1.5)), Optional.of(250L)));
+        assertThat(decode(head + "}")).isEqualTo(new Message.SensorSignal("a", "sonar", List.of(Value.of(1.5))));
+        assertThat(new String(codec.encode(new Message.SensorSignal("a", "sonar", List.of(), Optional.of(86_400_000L))),
+                UTF_8)).contains("\"ttlMs\":86400000");
+        assertCode(head + ",\"ttlMs\":0}", ErrorCode.BAD_MESSAGE,
+                "The time to live of sensor 'sonar' must be 1 to 86400000 ms, not 0.");
+        assertCode(head + ",\"ttlMs\":-5}", ErrorCode.BAD_MESSAGE, "not -5");
+        assertCode(head + ",\"ttlMs\":86400001}", ErrorCode.BAD_MESSAGE, "not 86400001");
+        assertCode(head + ",\"ttlMs\":\"250\"}", ErrorCode.BAD_MESSAGE, "Bad 'sensor' message");
+        assertCode(head + ",\"ttlMs\":2.5}", ErrorCode.BAD_MESSAGE, "Bad 'sensor' message");
     }
 
     @Test

@@ -28,6 +28,7 @@ final class Samples {
                 new Message.Cancel("c-10", "scout", "c-9", "the user changed her mind"),
                 new Message.SensorSignal("scout", "sonar", List.of(Value.of(1.25), Value.of(3L), Value.of(true),
                         Value.of("near"), Value.ref("user1"), new Value.Lst(List.of(Value.of(1L))))),
+                new Message.SensorSignal("robovie", "face_seen", List.of(Value.of("Ken")), Optional.of(1500L)),
                 new Message.Query("5", "Robot"),
                 new Message.Frames("5", List.of(FRAME)),
                 new Message.Ask("6", "scout", "speed"),

@@ -40,6 +40,9 @@ final class SchemaGenerator {
             exactlyOne.addObject().putArray("required").add("toAgent");
             exactlyOne.addObject().putArray("required").add("toKind");
         }
+        if (type == MessageType.SENSOR) {
+            ((ObjectNode) props.get("ttlMs")).put("minimum", 1).put("maximum", Message.SensorSignal.MAX_TTL_MS);
+        }
         return s;
     }
 
@@ -62,7 +65,7 @@ final class SchemaGenerator {
         Class<?> c = (Class<?>) t;
         if (c == String.class) {
             n.put("type", "string");
-        } else if (c == long.class || c == int.class) {
+        } else if (c == long.class || c == int.class || c == Long.class) {
             n.put("type", "integer");
         } else if (c == double.class || c == Double.class) {
             n.put("type", "number");

@@ -10,7 +10,9 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.Executor;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Function;
+import org.kicnp.core.Change;
 import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.StaleRevisionException;
 import org.kicnp.core.UnknownFrameException;
 import org.kicnp.core.Value;
 import org.kicnp.gateway.Reasoning;
@@ -62,19 +64,23 @@ final class EngineLink implements Retraction, Reasoning {
         return CompletableFuture.supplyAsync(() -> e.destroy(frame), engineThread);
     }
 
-    @Override public void retract(String frame) {
+    @Override public void retract(String frame, long expectedRevision) {
         InferenceEngine e = engine.get();
         if (e == null) {
-            beforeEngine.retract(frame);
+            beforeEngine.retract(frame, expectedRevision);
             return;
         }
+        String reason = expectedRevision == Change.ANY_REVISION ? "retracted when its agent left"
+                : "retracted as stale (no newer version came in its time to live)";
         engineThread.execute(() -> {
             try {
-                e.destroy(frame);
+                e.destroy(frame, expectedRevision, reason);
             } catch (UnknownFrameException gone) {
-                LOG.debug("'{}' was already gone when its agent left.", frame);
+                LOG.debug("'{}' was already gone when it was to be {}.", frame, reason);
+            } catch (StaleRevisionException newer) {
+                LOG.debug("'{}' changed before it was {}; the newer version stays.", frame, reason);
             } catch (RuntimeException failed) {
-                LOG.warn("Could not retract '{}' after its agent left: {}", frame, failed.getMessage());
+                LOG.warn("Could not retract '{}' ({}): {}", frame, reason, failed.getMessage());
             }
         });
     }

@@ -166,6 +166,32 @@ class PlatformTest {
     }
 
     @Test
+    void serve_whenASignalsTimeToLiveIsOver_itGoesWithEverythingDerivedFromIt_andTheRobotStays() throws Exception {
+        Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
+        try (Platform platform = Platform.start(PlatformConfig.of(kb).withEphemeralPorts());
+             RecordingRobot robovie = new RecordingRobot(AgentOptions.of("127.0.0.1", platform.gatewayPort(),
+                     "robovie", AgentKind.ROBOT, platform.token("robovie")))) {
+            List<org.kicnp.inference.TraceEvent> trace = new java.util.concurrent.CopyOnWriteArrayList<>();
+            platform.engine().addTraceListener(trace::add);
+            robovie.startAndAwait(Duration.ofSeconds(10));
+            robovie.sensor("face_seen", Duration.ofMillis(1500), Value.of("unknown"),
+                    new Value.Lst(List.of(Value.of(0.1), Value.of(0.2), Value.of(0.3))));
+            await("FaceDetection fires on the signal", () -> !platform.kb().instancesOf("FaceDetection").isEmpty()
+                    && !platform.kb().instancesOf("NewUser").isEmpty());
+            String detection = platform.kb().instancesOf("FaceDetection").getFirst().name();
+
+            await("the reading expired and what rests on it went with it", () -> !platform.kb()
+                    .contains("signal_robovie_face_seen") && platform.kb().instancesOf("FaceDetection").isEmpty()
+                    && platform.kb().instancesOf("NewUser").isEmpty());
+            assertThat(platform.kb().contains("agent_robovie")).isTrue();
+            assertThat(robovie.isConnected()).isTrue();
+            assertThat(trace).contains(new org.kicnp.inference.TraceEvent.Retracted(detection,
+                    "it rests on 'signal_robovie_face_seen', which was retracted as stale (no newer version came in "
+                            + "its time to live)"));
+        }
+    }
+
+    @Test
     void serve_whenAnAgentDestroysAnInstance_whatWasDerivedFromItGoesToo() throws Exception {
         Path kb = ScenarioFiles.copy(ScenarioFiles.table5(), tmp.resolve("kb"));
         try (Platform platform = Platform.start(PlatformConfig.of(kb).withEphemeralPorts());
