@@ -18,8 +18,9 @@ import org.slf4j.LoggerFactory;
 /**
  * The globals a behavior script sees: {@code s} (the instance's slots, read-only), {@code sendmsg}/{@code Sendmsg},
  * {@code command}, {@code create}, {@code destroy}, {@code cancel}, {@code actions}, {@code ask}, {@code log},
- * {@code frameName}, {@code frameExists} and {@code learn}. Every function that changes something only records an {@link Effect}; the engine applies them after
- * the script succeeds ({@code actions} and {@code ask} read the state the script started in).
+ * {@code frameName}, {@code frameExists} and {@code learn}. Every function that changes something only records an
+ * {@link Effect}; the engine applies them after the script succeeds ({@code actions} and {@code ask} read the state
+ * the script started in; {@code frameExists} does not see a {@code learn} of the same script).
  */
 final class ScriptApi {
     private static final Logger LOG = LoggerFactory.getLogger(ScriptApi.class);

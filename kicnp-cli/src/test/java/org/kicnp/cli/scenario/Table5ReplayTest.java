@@ -191,7 +191,8 @@ class Table5ReplayTest {
 
     /** Waits for a line Robovie begins to say after {@code mark} ({@link System#nanoTime()}). */
     private static void awaitLineAfter(Table5Run run, long mark, String text) throws Exception {
-        awaitAfter(run, mark, e -> e.kind().equals("utterance") && RunRecord.firstValue(e).contains(text), "the line '" + text + "'");
+        awaitAfter(run, mark, e -> e.kind().equals("utterance") && RunRecord.firstValue(e).contains(text),
+                "the line '" + text + "'");
     }
 
     private static void awaitAfter(Table5Run run, long mark, Predicate<PlatformEvent> match, String what) throws Exception {
