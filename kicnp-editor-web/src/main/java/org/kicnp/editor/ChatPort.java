@@ -5,8 +5,10 @@ import java.util.function.Consumer;
 /**
  * Port: a person speaking to the robots through the editor's chat box, as if they stood in the room
  * ({@code POST /api/chat}). The platform relays the words to the sentence parser (the {@code ParserAgent}, subject
- * {@code utterance}) and reports what followed as {@link ChatLine}s: the parser's verdict (understood, or "say it
- * again" with its reason) and what the robots said. The editor shows the person's own line itself.
+ * {@code utterance}, or {@code utterance:name} / {@code utterance:drink} right after a robot asked for a name or a
+ * drink, so that "Ken." alone answers "What is your name?") and reports what followed as {@link ChatLine}s: the
+ * parser's verdict (understood, or "say it again" with its reason) and what the robots said. The editor shows the
+ * person's own line itself.
  */
 public interface ChatPort {
     /**

@@ -17,9 +17,10 @@ import org.slf4j.LoggerFactory;
 
 /**
  * The globals a behavior script sees: {@code s} (the instance's slots, read-only), {@code sendmsg}/{@code Sendmsg},
- * {@code command}, {@code create}, {@code destroy}, {@code cancel}, {@code actions}, {@code ask}, {@code log} and
- * {@code learn}. Every function that changes something only records an {@link Effect}; the engine applies them after
- * the script succeeds ({@code actions} and {@code ask} read the state the script started in).
+ * {@code command}, {@code create}, {@code destroy}, {@code cancel}, {@code actions}, {@code ask}, {@code log},
+ * {@code frameName}, {@code frameExists} and {@code learn}. Every function that changes something only records an
+ * {@link Effect}; the engine applies them after the script succeeds ({@code actions} and {@code ask} read the state
+ * the script started in; {@code frameExists} does not see a {@code learn} of the same script).
  */
 final class ScriptApi {
     private static final Logger LOG = LoggerFactory.getLogger(ScriptApi.class);
@@ -116,6 +117,10 @@ final class ScriptApi {
         g.put("frameName", (HostFunction) args -> {
             need(args, 1, "frameName(text)");
             return Frame.nameFor(String.valueOf(args.get(0)));
+        });
+        g.put("frameExists", (HostFunction) args -> {
+            need(args, 1, "frameExists(name)");
+            return kb.contains(FrameView.nameOf(args.get(0)));
         });
         g.put("learn", (HostFunction) args -> {
             need(args, 2, "learn(name, parentClass, slots)");

@@ -197,6 +197,23 @@ class ScriptIntegrationTest {
     }
 
     @Test
+    void frameExists_letsAScriptLearnUnderAFreeName_besideADeclaredFrameOfThatName() {
+        KnowledgeBase kb = small("""
+                var cls = 'Mouth';
+                for (var n = 2; frameExists(cls); n++) { cls = 'Mouth_' + n; }
+                learn(cls, 'KnownUser', {name: 'Mouth', checked: String(frameExists('Mouth')) + String(frameExists('Nobody'))});
+                """, null);
+        InferenceEngine e = engine(kb);
+        fact(kb, "u1", "User");
+        e.runToQuiescence();
+        assertThat(kb.require("Mouth").learned()).isFalse();
+        assertThat(kb.require("Mouth_2").parent()).contains("KnownUser");
+        assertThat(kb.value("Mouth_2", "name")).contains(Value.of("Mouth"));
+        assertThat(kb.value("Mouth_2", "checked")).contains(Value.of("truefalse"));
+        assertThat(trace).noneMatch(t -> t instanceof TraceEvent.ScriptFailed);
+    }
+
+    @Test
     void endlessLoop_isStoppedByTheTimeBound_andTheEngineCarriesOn() {
         KnowledgeBase kb = small("sendmsg(s.mMouth, 'before'); while (true) {}", null);
         InferenceEngine e = engine(kb);

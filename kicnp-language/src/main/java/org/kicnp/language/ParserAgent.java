@@ -39,6 +39,14 @@ public final class ParserAgent extends AgentBase {
 
     private static final Logger LOG = LoggerFactory.getLogger(ParserAgent.class);
 
+    /** The subject to relay a sentence with: {@code utterance}, or {@code utterance:name} after a question for a name. */
+    public static String subject(Expectation expectation) {
+        return switch (requireNonNull(expectation, "expectation")) {
+            case NONE -> SUBJECT;
+            case NAME, DRINK -> SUBJECT + ":" + expectation.name().toLowerCase(Locale.ROOT);
+        };
+    }
+
     private final SentenceParser parser;
     private final AtomicLong counter = new AtomicLong();
     /** Touched only on the SDK's single event thread. */

@@ -18,7 +18,8 @@ import java.util.Optional;
 /**
  * Keeps a {@link FaceRecognizer} in step with the knowledge base: every frame below {@code KnownUser} (a sub-frame or
  * an instance, as the paper's GotNewName registers a new user) that has a {@code face} slot, a {@code TYPE_LIST} of
- * {@code TYPE_FLOAT}, is enrolled under its {@code name} slot (or its frame name), and forgotten when removed.
+ * {@code TYPE_FLOAT}, is enrolled under its frame name and forgotten when removed. The frame name, not the person's
+ * {@code name} slot, is what the recogniser reports: two people of one name are two frames, and stay two people.
  */
 public final class FaceMemory implements KnowledgeListener {
     public static final String KNOWN_USER = "KnownUser";
@@ -75,13 +76,13 @@ public final class FaceMemory implements KnowledgeListener {
                 case FrameEvent.Replaced r -> {
                     Frame before = r.before().orElseThrow();
                     if (face(before).isPresent()) {
-                        recognizer.forget(personName(before));
+                        recognizer.forget(before.name());
                     }
                     enrol(r.frame());
                 }
                 case FrameEvent.Removed r -> {
                     if (face(r.frame()).isPresent()) {
-                        recognizer.forget(personName(r.frame()));
+                        recognizer.forget(r.frame().name());
                     }
                 }
             }
@@ -92,7 +93,7 @@ public final class FaceMemory implements KnowledgeListener {
         if (f.name().equals(KNOWN_USER) || !kb.contains(f.name()) || !kb.isA(f.name(), KNOWN_USER)) {
             return;
         }
-        face(f).ifPresent(face -> recognizer.enroll(personName(f), face));
+        face(f).ifPresent(face -> recognizer.enroll(f.name(), face));
     }
 
     /** The person a KnownUser frame stands for: its {@code name} slot, else the frame's name. */

@@ -10,21 +10,23 @@ import org.kicnp.protocol.Message;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
-import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 
 /**
  * The agent of the simulated Robovie, who leads the interaction: besides its actions it recognises the faces its
  * eye cameras see. The faces it knows are those of the {@code KnownUser} frames in the platform's knowledge base
  * (their {@code face} slot): read when it connects and followed by subscription, so a user the platform learns
- * (GotNewName) is greeted by name on the next visit. Each {@code face_seen} signal carries the user's name or
- * {@code unknown}, and the descriptor, for the platform's frames to act on.
+ * (GotNewName) is greeted by name on the next visit. Each {@code face_seen} signal carries the known user's frame
+ * (its name; the frame's {@code name} slot says what the person is called) or {@code unknown}, and the descriptor, for
+ * the platform's frames to act on.
  */
 public final class RobovieAgent extends RobotAgent {
     private static final Logger LOG = LoggerFactory.getLogger(RobovieAgent.class);
 
     private final FaceRecognizer faces;
-    private final Map<String, String> enrolledAs = new ConcurrentHashMap<>();
+    /** The known users whose face is enrolled (by frame name). */
+    private final Set<String> enrolled = ConcurrentHashMap.newKeySet();
     private volatile boolean subscribed;
 
     public RobovieAgent(AgentOptions options, SimWorld world, FaceRecognizer faces) {
@@ -57,9 +59,8 @@ public final class RobovieAgent extends RobotAgent {
     }
 
     @Override protected void onChanged(Message.Changed change) {
-        String before = enrolledAs.remove(change.name());
-        if (before != null) {
-            faces.forget(before);
+        if (enrolled.remove(change.name())) {
+            faces.forget(change.name());
         }
         if (change.change() != ChangeKind.REMOVED && change.frame().isPresent()) {
             try {
@@ -73,9 +74,8 @@ public final class RobovieAgent extends RobotAgent {
 
     private void enrol(Frame user) {
         FaceMemory.face(user).ifPresent(face -> {
-            String person = FaceMemory.personName(user);
-            faces.enroll(person, face);
-            enrolledAs.put(user.name(), person);
+            faces.enroll(user.name(), face);
+            enrolled.add(user.name());
         });
     }
 }

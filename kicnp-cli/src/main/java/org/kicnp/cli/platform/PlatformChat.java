@@ -15,6 +15,7 @@ import org.kicnp.core.KnowledgeBase;
 import org.kicnp.editor.ChatLine;
 import org.kicnp.editor.ChatPort;
 import org.kicnp.editor.Subscription;
+import org.kicnp.language.Expectation;
 import org.kicnp.language.ParserAgent;
 import org.kicnp.protocol.AgentKind;
 import org.kicnp.protocol.Message;
@@ -25,7 +26,10 @@ import org.kicnp.protocol.Message;
  * {@code userA}), connected to the gateway with that agent's token, relaying with subject {@code utterance} — so
  * the parser asserts the case frame with that agent as the speaker. The parser's reply ({@code understood} or
  * {@code say-again}) comes back as a verdict line; what the robots are commanded to {@code say} comes back as
- * robot lines (from the event log). A speaker without a token in the agent file is refused.
+ * robot lines (from the event log). Like User A's microphone in the terminal demo, the chat hears the robots: after a
+ * robot line that asks for a name or a drink ("What is your name?") the words are relayed with that expectation
+ * ({@code utterance:name}, {@link Expectation#after}), so a name or a drink said alone ("Ken.", "Lemonade.") is
+ * understood as one. A speaker without a token in the agent file is refused.
  */
 final class PlatformChat implements ChatPort, AutoCloseable {
     private static final Duration CONNECT = Duration.ofSeconds(10);
@@ -37,6 +41,8 @@ final class PlatformChat implements ChatPort, AutoCloseable {
     private final Listeners<ChatLine> listeners = new Listeners<>();
     private final Map<String, Microphone> microphones = new ConcurrentHashMap<>();
     private final Consumer<PlatformEvent> robotSpeech = this::robotSpeech;
+    /** What the robots' last line asked for, the same for every speaker in the room. */
+    private volatile Expectation asked = Expectation.NONE;
 
     PlatformChat(int gatewayPort, Function<String, Optional<String>> tokens, KnowledgeBase kb, EventLog log) {
         this.gatewayPort = gatewayPort;
@@ -62,7 +68,7 @@ final class PlatformChat implements ChatPort, AutoCloseable {
         Microphone mic = microphones.computeIfAbsent(agent, a -> connect(a, speaker, token));
         log.record("user_said", Map.of("user", agent, "text", text));
         try {
-            mic.relayTo("parser", ParserAgent.SUBJECT, text);
+            mic.relayTo("parser", ParserAgent.subject(asked), text);
         } catch (AgentException e) {
             throw new IllegalStateException("Cannot pass the words of '" + speaker + "' to the parser: "
                     + e.getMessage(), e);
@@ -89,6 +95,7 @@ final class PlatformChat implements ChatPort, AutoCloseable {
     private void robotSpeech(PlatformEvent e) {
         if (e.kind().equals("command") && e.text("action").equals("say")
                 && e.fields().get("args") instanceof Map<?, ?> args && args.get("text") != null) {
+            asked = Expectation.after(args.get("text").toString());
             listeners.emit(new ChatLine(Instant.ofEpochMilli(e.epochMillis()), display(e.text("robot")),
                     ChatLine.Kind.ROBOT, args.get("text").toString()));
         }

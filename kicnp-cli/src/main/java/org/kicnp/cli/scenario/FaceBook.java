@@ -17,8 +17,11 @@ import org.kicnp.robots.FaceVector;
 /**
  * Keeps Robovie's face recogniser in step with the faces the knowledge base has learned: every frame below
  * {@code KnownUser} (the learned sub-frames GotNewName registers, or instances) whose {@code faceText} slot holds
- * the descriptor as comma-separated numbers, or whose {@code face} slot holds it as a list. Enrols them when
- * attached (so a restarted server still knows its users) and on every change.
+ * the descriptor as comma-separated numbers, or whose {@code face} slot holds it as a list. A person is enrolled
+ * under the name of their frame, not under what they are called, so that two people called Ken stay two people:
+ * the recogniser reports the frame (FaceDetection creates an instance of it) and the frame's {@code name} slot says
+ * what to call them. A sighting (an instance of a learned class, as FaceDetection creates) adds its face to its
+ * class's person. Enrols them when attached (so a restarted server still knows its users) and on every change.
  */
 public final class FaceBook implements KnowledgeListener {
     private final KnowledgeBase kb;
@@ -44,8 +47,19 @@ public final class FaceBook implements KnowledgeListener {
 
     @Override public void changed(ChangeSet changes) {
         for (FrameEvent e : changes.events()) {
-            if (!(e instanceof FrameEvent.Removed)) {
-                enrol(e.frame());
+            switch (e) {
+                case FrameEvent.Added a -> enrol(a.frame());
+                case FrameEvent.Replaced r -> {
+                    if (isPerson(r.frame())) {
+                        recognizer.forget(r.frame().name()); // the face it had is no longer theirs
+                    }
+                    enrol(r.frame());
+                }
+                case FrameEvent.Removed r -> {
+                    if (isPerson(r.frame())) {
+                        recognizer.forget(r.frame().name());
+                    }
+                }
             }
         }
     }
@@ -55,7 +69,12 @@ public final class FaceBook implements KnowledgeListener {
             return;
         }
         Optional<FaceVector> face = FaceMemory.face(f).or(() -> faceText(f));
-        face.ifPresent(v -> recognizer.enroll(FaceMemory.personName(f), v));
+        face.ifPresent(v -> recognizer.enroll(isPerson(f) ? f.name() : f.parent().orElseThrow(), v));
+    }
+
+    /** A person's own frame (a class, or an instance of KnownUser itself), not a sighting of a learned class. */
+    private static boolean isPerson(Frame f) {
+        return f.isClass() || f.parent().map(FaceMemory.KNOWN_USER::equals).orElse(true);
     }
 
     static Optional<FaceVector> faceText(Frame f) {

@@ -1,7 +1,6 @@
 package org.kicnp.cli.scenario;
 
 import java.time.Duration;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.function.Consumer;
@@ -9,6 +8,7 @@ import org.kicnp.agent.AgentOptions;
 import org.kicnp.agent.UserAgent;
 import org.kicnp.cli.platform.Platform;
 import org.kicnp.cli.platform.PlatformEvent;
+import org.kicnp.language.Expectation;
 import org.kicnp.language.ParserAgent;
 import org.kicnp.protocol.AgentKind;
 import org.kicnp.robots.SimRequest;
@@ -28,8 +28,8 @@ public final class UserA implements AutoCloseable {
     private final String simName;
     private final UserAgent mic;
     private final Consumer<PlatformEvent> listener = this::heard;
-    /** What Robovie's last line asked for: the subject's suffix ("name", "drink") or "" for no question. */
-    private volatile String asked = "";
+    /** What Robovie's last line asked for. */
+    private volatile Expectation asked = Expectation.NONE;
 
     private UserA(Platform platform, SimWorld sim, String simName, UserAgent mic) {
         this.platform = platform;
@@ -50,17 +50,8 @@ public final class UserA implements AutoCloseable {
     /** Robovie's speech (the {@code utterance} events): remembers whether it asked for a name or a drink. */
     private void heard(PlatformEvent e) {
         if (e.kind().equals("utterance")) {
-            asked = askedFor(RunRecord.firstValue(e));
+            asked = Expectation.after(RunRecord.firstValue(e));
         }
-    }
-
-    /** "name" or "drink" when a line is a question for one, else "". */
-    static String askedFor(String line) {
-        String q = line.strip().toLowerCase(Locale.ROOT);
-        if (!q.endsWith("?")) {
-            return "";
-        }
-        return q.contains("name") ? "name" : q.contains("drink") ? "drink" : "";
     }
 
     /** Walks in at the door and stops before Robovie's eye cameras, facing it. */
@@ -83,8 +74,7 @@ public final class UserA implements AutoCloseable {
      */
     public void say(String text) {
         platform.events().record("user_said", Map.of("user", simName, "text", text));
-        String expecting = asked;
-        mic.relayTo("parser", expecting.isEmpty() ? ParserAgent.SUBJECT : ParserAgent.SUBJECT + ":" + expecting, text);
+        mic.relayTo("parser", ParserAgent.subject(asked), text);
     }
 
     /** What the parser answered when it did not understand (its "say again" replies), oldest first. */

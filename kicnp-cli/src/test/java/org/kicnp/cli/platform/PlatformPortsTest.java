@@ -89,6 +89,42 @@ class PlatformPortsTest {
     }
 
     @Test
+    void chat_aNameSaidAlone_isNotUnderstoodUntilRobovieAsksForIt_thenItIs() throws Exception {
+        try (Platform platform = start();
+             ParserAgent parser = new ParserAgent(options(platform, "parser", AgentKind.SERVICE), SentenceParser.standard());
+             PlatformTest.RecordingRobot robovie = new PlatformTest.RecordingRobot(options(platform, "robovie", AgentKind.ROBOT));
+             UserAgent user = new UserAgent(options(platform, "user", AgentKind.USER))) {
+            parser.startAndAwait(Duration.ofSeconds(10));
+            robovie.startAndAwait(Duration.ofSeconds(10));
+            user.startAndAwait(Duration.ofSeconds(10));
+            LinkedBlockingQueue<ChatLine> lines = new LinkedBlockingQueue<>();
+            try (Subscription s = platform.chat().onLine(lines::add)) {
+                platform.chat().say("User A", "Ken.");
+                assertThat(nextOf(lines, "User A").kind()).as("no question was asked").isEqualTo(ChatLine.Kind.NOT_UNDERSTOOD);
+
+                user.assertFrame(Frame.instance("userA", "NewUser")
+                        .slot(Slot.ofValue("faceText", DataType.STRING, Value.of("0.1,0.2"))).build());
+                assertThat(nextOf(lines, "Robovie").text()).endsWith("What is your name?");
+                platform.chat().say("User A", "Ken.");
+                ChatLine verdict = nextOf(lines, "User A");
+                assertThat(verdict.kind()).as(verdict.text()).isEqualTo(ChatLine.Kind.UNDERSTOOD);
+                assertThat(verdict.text()).startsWith("SaidName");
+            }
+        }
+    }
+
+    /** The next line of {@code speaker}, skipping the others' (within 20 s). */
+    private static ChatLine nextOf(LinkedBlockingQueue<ChatLine> lines, String speaker) throws InterruptedException {
+        while (true) {
+            ChatLine line = lines.poll(20, TimeUnit.SECONDS);
+            assertThat(line).as("a line of " + speaker).isNotNull();
+            if (line.speaker().equals(speaker)) {
+                return line;
+            }
+        }
+    }
+
+    @Test
     void chat_whenTheSpeakerHasNoAgentToken_refusesTheLine() {
         try (Platform platform = start()) {
             assertThatThrownBy(() -> platform.chat().say("Mallory", "Tea, please."))

@@ -8,10 +8,16 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Predicate;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
+import org.kicnp.cli.platform.PlatformEvent;
 import org.kicnp.cli.scenario.RunRecord.Step;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Slot;
+import org.kicnp.core.Value;
 import org.kicnp.robots.SimRequest;
 
 /**
@@ -123,6 +129,82 @@ class Table5ReplayTest {
             run.playUntilAskedForADrink(name);
             assertThat(run.record().lines()).contains("Hi, " + name + ". Nice to meet you. Welcome you to visit my room.");
         }
+    }
+
+    @Test
+    void aNameThatIsTheNameOfAFrame_isLearnedAndRemembered_andTheFrameIsNotReplaced() throws Exception {
+        Path kb = kb();
+        try (Table5Run run = start(kb, "name-of-a-frame")) {
+            run.playFirstVisit("Welcome", "Tea, please.");
+            run.awaitEnd();
+            assertThat(Table5Checks.problems(run.record(), "Welcome")).isEmpty();
+            run.playSecondVisit("Welcome");
+            KnowledgeBase k = run.platform().kb();
+            assertThat(k.frame("Welcome").orElseThrow().learned()).as("the declared row is still the declared one").isFalse();
+            assertThat(k.isA("Welcome", "Speech")).isTrue();
+            assertThat(learnedUsersNamed(k, "Welcome")).hasSize(1);
+        }
+        try (Table5Run again = start(kb, "name-of-a-frame-after-restart")) {
+            again.playReturn("Welcome");
+            assertThat(again.record().lines()).noneMatch(l -> l.contains("What is your name?"));
+        }
+    }
+
+    @Test
+    void twoPeopleWithOneName_areBothRemembered_eachWithTheirOwnFace_alsoAfterARestart() throws Exception {
+        Path kb = kb();
+        try (Table5Run run = start(kb, "two-kens")) {
+            run.playFirstVisit("Ken", "Tea, please.");
+            run.awaitEnd();
+            leave(run, run.user());
+            try (UserA other = UserA.connect(run.platform(), run.world().sim(), "user")) {
+                long mark = System.nanoTime();
+                other.appear();
+                awaitLineAfter(run, mark, "What is your name?");
+                awaitAfter(run, mark, e -> e.kind().equals("feedback") && !e.text("stage").equals("started")
+                        && run.record().step(e.text("id")).map(s -> s.frame().equals("AskUserName")).orElse(false),
+                        "the end of AskUserName");
+                other.say("My name is Ken.");
+                awaitLineAfter(run, mark, "Hi, Ken. Nice to meet you. Welcome you to visit my room.");
+                awaitLineAfter(run, mark, "What do you want to drink?");
+            }
+            assertThat(learnedUsersNamed(run.platform().kb(), "Ken")).as("one learned class for each Ken").hasSize(2)
+                    .extracting(f -> f.ownSlot("faceText").flatMap(Slot::value).orElseThrow()).doesNotHaveDuplicates();
+        }
+        try (Table5Run again = start(kb, "two-kens-after-restart")) {
+            again.playReturn("Ken");
+            leave(again, again.user());
+            try (UserA other = UserA.connect(again.platform(), again.world().sim(), "user")) {
+                long mark = System.nanoTime();
+                other.appear();
+                awaitLineAfter(again, mark, "Hi, Ken. Good to see you again.");
+            }
+            assertThat(again.record().lines()).noneMatch(l -> l.contains("What is your name?"));
+        }
+    }
+
+    /** The LEARNED sub-frames of KnownUser whose {@code name} slot is {@code name}. */
+    private static List<Frame> learnedUsersNamed(KnowledgeBase kb, String name) {
+        return kb.frames().stream().filter(f -> f.learned() && kb.isA(f.name(), "KnownUser"))
+                .filter(f -> f.ownSlot("name").flatMap(Slot::value).map(Value::text).equals(Optional.of(name))).toList();
+    }
+
+    /** Waits for a line Robovie begins to say after {@code mark} ({@link System#nanoTime()}). */
+    private static void awaitLineAfter(Table5Run run, long mark, String text) throws Exception {
+        awaitAfter(run, mark, e -> e.kind().equals("utterance") && RunRecord.firstValue(e).contains(text),
+                "the line '" + text + "'");
+    }
+
+    private static void awaitAfter(Table5Run run, long mark, Predicate<PlatformEvent> match, String what) throws Exception {
+        run.record().await(e -> e.nanos() > mark && match.test(e), Table5Run.STEP.multipliedBy(2), what);
+    }
+
+    /** The person leaves, and FaceLost ends the visit (the face signal is retracted). */
+    private static void leave(Table5Run run, UserA person) throws Exception {
+        long mark = System.nanoTime();
+        person.leave();
+        awaitAfter(run, mark, e -> e.kind().equals("retracted") && e.text("instance").equals("signal_robovie_face_seen"),
+                "the end of the visit (FaceLost)");
     }
 
     @Test
