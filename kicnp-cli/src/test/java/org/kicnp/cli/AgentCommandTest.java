@@ -352,6 +352,25 @@ class AgentCommandTest {
     }
 
     @Test
+    void sensor_putsTheSignalWithItsValuesRead_repeatsItAtTheRate_andTheServerRetractsItWhenTheRunEnds()
+            throws Exception {
+        CompletableFuture<CliRun> run = CompletableFuture.supplyAsync(() -> agent("sensor", "obstacle", "0.4", "true",
+                "7", "@ken", "near", "\"42\"", "--ttl", "60000", "--rate", "20", "--for", "3"));
+        awaitTrue(() -> kb.contains("signal_director_obstacle"));
+        assertThat(kb.value("signal_director_obstacle", "values")).contains(new Value.Lst(List.of(Value.of(0.4),
+                Value.of(true), Value.of(7L), Value.ref("ken"), Value.of("near"), Value.of("42"))));
+        assertThat(kb.value("signal_director_obstacle", "value")).contains(Value.of(0.4));
+        assertThat(kb.value("signal_director_obstacle", "expires")).isPresent();
+        long first = kb.revision("signal_director_obstacle");
+        awaitTrue(() -> kb.contains("signal_director_obstacle") && kb.revision("signal_director_obstacle") > first);
+
+        CliRun r = run.get(30, TimeUnit.SECONDS);
+        assertThat(r.exitCode()).as(r.err()).isZero();
+        assertThat(r.err()).contains("Sent signal_director_obstacle 20.0 times a second; stopping in 3.0 s");
+        awaitTrue(() -> !kb.contains("signal_director_obstacle"));
+    }
+
+    @Test
     void malformedOptionsAndArguments_areUsageErrors_exit2_namingWhatIsWrong() {
         record Case(List<String> args, String says) { }
         List<Case> cases = List.of(
@@ -368,7 +387,14 @@ class AgentCommandTest {
                 new Case(List.of("command", "", "walk"),
                         "ROBOT '' is not an agent name: use letters, digits, '_' and '-', starting with a letter or '_'."),
                 new Case(List.of("command", "scout", " "), "ACTION is empty; name the action to send to 'scout'."),
-                new Case(List.of("cancel", "my robot", "director-1"), "ROBOT 'my robot' is not an agent name"));
+                new Case(List.of("cancel", "my robot", "director-1"), "ROBOT 'my robot' is not an agent name"),
+                new Case(List.of("sensor", "sonar", "1", "--ttl", "0"), "--ttl must be 1 to 86400000 milliseconds, not 0."),
+                new Case(List.of("sensor", "sonar", "1", "--rate", "0"),
+                        "--rate must be above 0 and at most 1000 a second, not 0.0."),
+                new Case(List.of("sensor", "sonar", "1", "--for", "-1"),
+                        "--for must be a number of seconds above 0, not -1.0."),
+                new Case(List.of("sensor", "no spaces", "1", "--for", "1"),
+                        "SENSOR 'no spaces' is not a sensor name: use letters, digits, '_' and '-'"));
         for (Case c : cases) {
             CliRun r = agent(c.args().toArray(String[]::new));
             assertThat(r.exitCode()).as(c.args() + ": " + r.err()).isEqualTo(2);
