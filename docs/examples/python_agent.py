@@ -75,7 +75,9 @@ def main():
             sys.exit(2)
         send(sock, {"type": "register", "id": "2", "capabilities": []})
         next_of(sock, "ack")
-        send(sock, {"type": "sensor", "source": name, "sensor": "battery", "values": [0.87, {"ref": "agent_" + name}]})
+        # A battery reading is good for a minute: the server retracts it if no newer one comes by then (ttlMs).
+        send(sock, {"type": "sensor", "source": name, "sensor": "battery", "values": [0.87, {"ref": "agent_" + name}],
+                    "ttlMs": 60000})
         print("registered", flush=True)
         command = next_of(sock, "command")
         feedback = {"type": "feedback", "id": command["id"], "robot": name}

@@ -37,6 +37,10 @@ class PythonAgentTest {
             Eventually.await("the Python agent registered", java.time.Duration.ofSeconds(20),
                     () -> output.contains("registered") || !p.isAlive());
             assertThat(output).as("python output").contains("registered");
+            // Its battery reading, sent with a time to live of a minute, is there until it leaves.
+            Eventually.await("the Python agent's signal is in", () -> kb.contains("signal_pyrobot_battery"));
+            long time = ((org.kicnp.core.Value.Int) kb.value("signal_pyrobot_battery", "time").orElseThrow()).value();
+            assertThat(kb.value("signal_pyrobot_battery", "expires")).contains(org.kicnp.core.Value.of(time + 60_000));
 
             server.actionSink().send(new Command("py-1", "pyrobot", "wave", Map.of()));
             assertThat(p.waitFor(20, TimeUnit.SECONDS)).as("python agent finished").isTrue();
