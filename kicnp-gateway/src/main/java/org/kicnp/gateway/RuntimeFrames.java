@@ -6,6 +6,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.Future;
 import org.kicnp.core.BatchRejectedException;
 import org.kicnp.core.ChangeSet;
 import org.kicnp.core.DataType;
@@ -38,6 +39,7 @@ final class RuntimeFrames {
     private final KnowledgeBase kb;
     private final Retraction retraction;
     private final Map<String, Set<String>> framesByAgent = new ConcurrentHashMap<>();
+    private final Map<String, Expiry> expiries = new ConcurrentHashMap<>();
 
     RuntimeFrames(KnowledgeBase kb, Retraction retraction) {
         this.kb = kb;
@@ -61,10 +63,14 @@ final class RuntimeFrames {
         put(agent, f);
     }
 
-    /** Runs a task once, some milliseconds from now (on a gateway I/O thread). */
+    /** Runs a task once, some milliseconds from now (on a gateway I/O thread); the future cancels it. */
     @FunctionalInterface
     interface Later {
-        void run(long millis, Runnable task);
+        Future<?> run(long millis, Runnable task);
+    }
+
+    /** The expiry pending for a sensor's frame: the revision of the reading it is for, and its task. */
+    private record Expiry(long revision, Future<?> task) {
     }
 
     /**
@@ -88,14 +94,29 @@ final class RuntimeFrames {
         }
         s.ttlMs().ifPresent(ttl -> b.slot(Slot.ofValue("expires", DataType.INTEGER, Value.of(now + ttl))));
         ChangeSet put = put(s.source(), b.build());
+        // At most one expiry waits per sensor, the latest reading's: a robot that streams readings with a long time
+        // to live cannot pile up timers.
+        Expiry before;
         if (s.ttlMs().isPresent()) {
             long revision = put.events().isEmpty() ? kb.revision(name) : put.version();
-            later.run(s.ttlMs().get(), () -> expire(s.source(), name, revision));
+            before = expiries.put(name, new Expiry(revision,
+                    later.run(s.ttlMs().get(), () -> expire(s.source(), name, revision))));
+        } else {
+            before = expiries.remove(name);
         }
+        if (before != null) {
+            before.task().cancel(false);
+        }
+    }
+
+    /** Expiries waiting, one at most per sensor frame. */
+    int pendingExpiries() {
+        return expiries.size();
     }
 
     /** Retracts a sensor's frame whose time to live is over, if no newer version has replaced it since. */
     private void expire(String agent, String name, long revision) {
+        expiries.computeIfPresent(name, (n, e) -> e.revision() == revision ? null : e);
         try {
             if (kb.revision(name) != revision) {
                 return; // replaced by a newer reading: that one's own clock runs
@@ -131,6 +152,10 @@ final class RuntimeFrames {
             return;
         }
         for (String name : names) {
+            Expiry pending = expiries.remove(name);
+            if (pending != null) {
+                pending.task().cancel(false);
+            }
             try {
                 if (kb.contains(name)) {
                     retraction.retract(name);

@@ -67,6 +67,10 @@ final class ServerAgent {
         return knowledge;
     }
 
+    RuntimeFrames runtime() {
+        return runtime;
+    }
+
     Outbound out() {
         return out;
     }

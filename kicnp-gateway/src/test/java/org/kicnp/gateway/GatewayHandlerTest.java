@@ -200,6 +200,24 @@ class GatewayHandlerTest {
     }
 
     @Test
+    void sensorSignalsWithATimeToLive_keepOneExpiryPerSensor_howeverManyReadingsCome() {
+        authenticate();
+        for (int i = 0; i < 1_000; i++) {
+            ch.writeInbound(Wire.frame(new Message.SensorSignal("scout", "sonar", List.of(Value.of((long) i)),
+                    Optional.of(Message.SensorSignal.MAX_TTL_MS))));
+        }
+        ch.writeInbound(Wire.frame(new Message.SensorSignal("scout", "bumper", List.of(Value.of(true)),
+                Optional.of(60_000L))));
+        assertThat(kb.value("signal_scout_sonar", "value")).contains(Value.of(999L));
+        assertThat(server[0].runtime().pendingExpiries()).isEqualTo(2);
+
+        ch.writeInbound(Wire.frame(new Message.SensorSignal("scout", "sonar", List.of(Value.of(0L)))));
+        assertThat(server[0].runtime().pendingExpiries()).isEqualTo(1);
+        ch.close();
+        assertThat(server[0].runtime().pendingExpiries()).isZero();
+    }
+
+    @Test
     void command_reachesRobot_andFeedbackReachesListenerAndKnowledgeBase() {
         register();
         Command fetch = new Command("c1", "scout", "fetch", Map.of("item", "tea"));
