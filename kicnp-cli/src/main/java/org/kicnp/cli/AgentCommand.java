@@ -472,8 +472,8 @@ public final class AgentCommand {
                     + "keeps it as the instance signal_AGENT_SENSOR of SensorSignal, which slot conditions can test. "
                     + "The server retracts an agent's signals when it disconnects, so this stays connected until "
                     + "interrupted or --for seconds; with --rate it repeats the signal. Each VALUE is read as true or "
-                    + "false, a whole number, a decimal number, @NAME (a reference to frame NAME), or else text "
-                    + "(\"quoted\" text is always text).")
+                    + "false, a whole number, a decimal number, @NAME (a reference to frame NAME), a JSON array (a "
+                    + "list: [0.1, 0.2, {\"ref\": \"userA\"}]), or else text (\"quoted\" text is always text).")
     static final class Sensor extends Subcommand {
 
         @Parameters(index = "0", paramLabel = "SENSOR", description = "The sensor's name.")
@@ -509,7 +509,12 @@ public final class AgentCommand {
                 throw new ParameterException(spec.commandLine(), "--ttl must be 1 to "
                         + Message.SensorSignal.MAX_TTL_MS + " milliseconds, not " + ttlMs + ".");
             }
-            org.kicnp.core.Value[] read = values.stream().map(Sensor::value).toArray(org.kicnp.core.Value[]::new);
+            org.kicnp.core.Value[] read;
+            try {
+                read = values.stream().map(Sensor::value).toArray(org.kicnp.core.Value[]::new);
+            } catch (IllegalArgumentException e) {
+                throw new ParameterException(spec.commandLine(), e.getMessage());
+            }
             long deadline = seconds == null ? Long.MAX_VALUE : System.nanoTime() + Math.round(seconds * 1e9);
             long period = rate == null ? Long.MAX_VALUE : Math.round(1e9 / rate);
             PrintWriter err = spec.commandLine().getErr();
@@ -547,6 +552,16 @@ public final class AgentCommand {
 
         /** A VALUE argument as a slot value. */
         static org.kicnp.core.Value value(String text) {
+            if (text.startsWith("[")) {
+                com.fasterxml.jackson.databind.JsonNode list;
+                try {
+                    list = new com.fasterxml.jackson.databind.ObjectMapper().readTree(text);
+                } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
+                    throw new IllegalArgumentException("VALUE '" + text + "' starts a list but is not a JSON array: "
+                            + e.getOriginalMessage());
+                }
+                return item(list, text);
+            }
             if (text.length() >= 2 && text.startsWith("\"") && text.endsWith("\"")) {
                 return org.kicnp.core.Value.of(text.substring(1, text.length() - 1));
             }
@@ -566,6 +581,27 @@ public final class AgentCommand {
                 return org.kicnp.core.Value.ref(text.substring(1));
             }
             return org.kicnp.core.Value.of(text);
+        }
+
+        /** An item of a JSON array VALUE, written as the protocol writes slot values ({"ref": NAME} a reference). */
+        private static org.kicnp.core.Value item(com.fasterxml.jackson.databind.JsonNode n, String text) {
+            if (n.isArray()) {
+                List<org.kicnp.core.Value> items = new ArrayList<>();
+                n.forEach(i -> items.add(item(i, text)));
+                return new org.kicnp.core.Value.Lst(items);
+            } else if (n.isIntegralNumber() && n.canConvertToLong()) {
+                return org.kicnp.core.Value.of(n.longValue());
+            } else if (n.isNumber() && Double.isFinite(n.doubleValue())) {
+                return org.kicnp.core.Value.of(n.doubleValue());
+            } else if (n.isBoolean()) {
+                return org.kicnp.core.Value.of(n.booleanValue());
+            } else if (n.isTextual()) {
+                return org.kicnp.core.Value.of(n.textValue());
+            } else if (n.isObject() && n.size() == 1 && n.path("ref").isTextual()) {
+                return org.kicnp.core.Value.ref(n.path("ref").textValue());
+            }
+            throw new IllegalArgumentException("VALUE '" + text + "' holds " + n + ", which is no slot value: items "
+                    + "are numbers, true or false, \"text\", {\"ref\": \"NAME\"} or lists.");
         }
     }
 

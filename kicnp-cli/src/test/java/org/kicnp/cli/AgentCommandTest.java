@@ -355,10 +355,13 @@ class AgentCommandTest {
     void sensor_putsTheSignalWithItsValuesRead_repeatsItAtTheRate_andTheServerRetractsItWhenTheRunEnds()
             throws Exception {
         CompletableFuture<CliRun> run = CompletableFuture.supplyAsync(() -> agent("sensor", "obstacle", "0.4", "true",
-                "7", "@ken", "near", "\"42\"", "--ttl", "60000", "--rate", "20", "--for", "3"));
+                "7", "@ken", "near", "\"42\"", "[0.1, 2, [true], {\"ref\": \"ken\"}, \"x\"]", "--ttl", "60000",
+                "--rate", "20", "--for", "3"));
         awaitTrue(() -> kb.contains("signal_director_obstacle"));
         assertThat(kb.value("signal_director_obstacle", "values")).contains(new Value.Lst(List.of(Value.of(0.4),
-                Value.of(true), Value.of(7L), Value.ref("ken"), Value.of("near"), Value.of("42"))));
+                Value.of(true), Value.of(7L), Value.ref("ken"), Value.of("near"), Value.of("42"),
+                new Value.Lst(List.of(Value.of(0.1), Value.of(2L), new Value.Lst(List.of(Value.of(true))),
+                        Value.ref("ken"), Value.of("x"))))));
         assertThat(kb.value("signal_director_obstacle", "value")).contains(Value.of(0.4));
         assertThat(kb.value("signal_director_obstacle", "expires")).isPresent();
         long first = kb.revision("signal_director_obstacle");
@@ -393,6 +396,10 @@ class AgentCommandTest {
                         "--rate must be above 0 and at most 1000 a second, not 0.0."),
                 new Case(List.of("sensor", "sonar", "1", "--for", "-1"),
                         "--for must be a number of seconds above 0, not -1.0."),
+                new Case(List.of("sensor", "sonar", "[1, 2", "--for", "1"),
+                        "VALUE '[1, 2' starts a list but is not a JSON array"),
+                new Case(List.of("sensor", "sonar", "[null]", "--for", "1"),
+                        "VALUE '[null]' holds null, which is no slot value"),
                 new Case(List.of("sensor", "no spaces", "1", "--for", "1"),
                         "SENSOR 'no spaces' is not a sensor name: use letters, digits, '_' and '-'"));
         for (Case c : cases) {
