@@ -30,7 +30,8 @@ class SensorTimeToLiveTest {
     @BeforeEach
     void start() {
         server = GatewayServer.start(GatewayConfig.defaults().withPort(0),
-                AgentDirectory.empty().with("scout", "scout-token", AgentKind.ROBOT), kb, FeedbackListener.NONE);
+                AgentDirectory.empty().with("scout", "scout-token", AgentKind.ROBOT)
+                        .with("alice", "alice-token", AgentKind.USER), kb, FeedbackListener.NONE);
         scout = new UserAgent(AgentOptions.of("127.0.0.1", server.port(), "scout", AgentKind.ROBOT, "scout-token"));
         scout.startAndAwait(WAIT);
     }
@@ -80,6 +81,27 @@ class SensorTimeToLiveTest {
         Thread.sleep(800);
         assertThat(kb.contains(FRAME)).isTrue();
         assertThat(kb.value(FRAME, "expires")).isEmpty();
+    }
+
+    @Test
+    void aSignalHoldingAList_reachesSubscribersAndQueries_asTheXmlOfItsFrame() {
+        try (UserAgent alice = new UserAgent(AgentOptions.of("127.0.0.1", server.port(), "alice", AgentKind.USER,
+                "alice-token"))) {
+            alice.startAndAwait(WAIT);
+            kb.add(org.kicnp.core.Frame.classFrame("SensorSignal").build());
+            alice.subscribe("SensorSignal");
+            // Robovie's face_seen: a name, the face descriptor (a list), distance and bearing.
+            Value face = new Value.Lst(java.util.List.of(Value.of(0.1), Value.of(0.2)));
+            scout.sensor("face_seen", Duration.ofSeconds(30), Value.of("unknown"), face, Value.of(1.2));
+
+            Eventually.await("alice hears of the signal", () -> !alice.changes().isEmpty());
+            assertThat(alice.changes().getFirst().name()).isEqualTo("signal_scout_face_seen");
+            assertThat(alice.changes().getFirst().frame()).hasValueSatisfying(xml -> assertThat(xml)
+                    .contains("<ITEM>unknown</ITEM>").contains("<ITEM>0.1</ITEM>"));
+            assertThat(alice.query("SensorSignal")).singleElement().satisfies(f -> assertThat(f.ownSlot("values")
+                    .flatMap(org.kicnp.core.Slot::value)).contains(new Value.Lst(java.util.List.of(Value.of("unknown"),
+                    new Value.Lst(java.util.List.of(Value.of("0.1"), Value.of("0.2"))), Value.of("1.2")))));
+        }
     }
 
     @Test

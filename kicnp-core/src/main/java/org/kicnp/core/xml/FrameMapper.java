@@ -326,7 +326,7 @@ final class FrameMapper {
                         .orElse(DataType.STRING);
                 List<Value> items = new ArrayList<>(v.items().size());
                 for (Located item : v.items()) {
-                    items.add(scalar(itemType, item));
+                    items.add(item(itemType, item));
                 }
                 return new Value.Lst(items);
             }
@@ -339,6 +339,30 @@ final class FrameMapper {
                     + x.getMessage());
             return null;
         }
+    }
+
+    /**
+     * An item of a list: a scalar of the list's item type, or, in a list of text (TYPE_STR items, or no ARGUMENT) or of
+     * lists (ARGUMENT TYPE_LIST), a list itself — ITEMs inside the ITEM, or {@code []} (not in CDATA) for the empty
+     * list — whose items are read the same way.
+     */
+    private Value item(DataType itemType, Located item) {
+        boolean nests = itemType == DataType.STRING || itemType == DataType.LIST;
+        if (!item.items().isEmpty()) {
+            if (!nests) {
+                throw new IllegalArgumentException("an item holds ITEMs (a list inside a list), which only a list of "
+                        + "TYPE_STR or TYPE_LIST items may hold, not one of " + itemType.xmlName() + ".");
+            }
+            List<Value> inner = new ArrayList<>(item.items().size());
+            for (Located i : item.items()) {
+                inner.add(item(itemType, i));
+            }
+            return new Value.Lst(inner);
+        }
+        if (nests && !item.literal() && item.stripped().equals("[]")) {
+            return new Value.Lst(List.of());
+        }
+        return scalar(itemType == DataType.LIST ? DataType.STRING : itemType, item);
     }
 
     private Value scalar(DataType type, Located v) {

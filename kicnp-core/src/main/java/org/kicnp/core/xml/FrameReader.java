@@ -305,7 +305,10 @@ final class FrameReader {
                         if (items.isEmpty()) {
                             items = new ArrayList<>();
                         }
-                        items.add(leaf(child, List.of()));
+                        // An ITEM of a slot's VALUE or DEFAULT may hold ITEMs itself: a list inside a list.
+                        boolean nests = child.equals("ITEM") && (tag.equals("VALUE") || tag.equals("DEFAULT")
+                                || tag.equals("ITEM"));
+                        items.add(leaf(child, nests ? List.of("ITEM") : List.of()));
                     } else {
                         unknown(tag, childTags.isEmpty() ? "text only" : String.join(" or ", childTags));
                     }

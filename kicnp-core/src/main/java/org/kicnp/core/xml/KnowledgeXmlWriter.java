@@ -27,6 +27,8 @@ import org.kicnp.core.Value;
  */
 public final class KnowledgeXmlWriter {
     private static final String HEADER = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    /** How deep lists may nest in a value (a list of lists is 2). */
+    static final int MAX_NESTED_LISTS = 16;
     private static final String[] INDENT = new String[12];
 
     static {
@@ -231,13 +233,37 @@ public final class KnowledgeXmlWriter {
         }
         open(tag, d);
         for (Value item : list.items()) {
-            if (item instanceof Value.Lst) {
-                throw new KnowledgeException("The " + where + " holds a list inside a list, which the XML "
-                        + "format cannot write.");
-            }
-            text("ITEM", item.text(), d + 1, where);
+            item(item, d + 1, 1, where);
         }
         close(tag, d);
+    }
+
+    /**
+     * One ITEM of a list: a list inside it as ITEMs inside the ITEM ({@code []} for the empty list), so the text
+     * {@code []} itself goes in CDATA; at most {@link #MAX_NESTED_LISTS} lists deep, well within the reader's limit
+     * on element depth.
+     */
+    private void item(Value item, int d, int nesting, String where) throws IOException {
+        if (item instanceof Value.Lst inner) {
+            if (nesting >= MAX_NESTED_LISTS) {
+                throw new KnowledgeException("The " + where + " holds lists nested more than " + MAX_NESTED_LISTS
+                        + " deep, which the XML format cannot write.");
+            }
+            if (inner.items().isEmpty()) {
+                element("ITEM", "[]", d);
+                return;
+            }
+            open("ITEM", d);
+            for (Value i : inner.items()) {
+                item(i, d + 1, nesting + 1, where);
+            }
+            close("ITEM", d);
+        } else if (item instanceof Value.Str str && str.text().strip().equals("[]")) {
+            indent(d);
+            out.write("<ITEM><![CDATA[" + str.text() + "]]></ITEM>\n"); // text, not the empty list
+        } else {
+            text("ITEM", item.text(), d, where);
+        }
     }
 
     private void open(String tag, int d) throws IOException {

@@ -51,6 +51,10 @@ class KnowledgeXmlWriterTest {
                         .value(new Value.Lst(List.of(Value.of(1L), Value.of(2L), Value.of(3L)))).build())
                 .slot(Slot.builder("tags", DataType.LIST)
                         .value(new Value.Lst(List.of(Value.of("a b"), Value.of(""), Value.of("<x>")))).build())
+                .slot(Slot.builder("poses", DataType.LIST).value(new Value.Lst(List.of(Value.of("wave"),
+                        new Value.Lst(List.of(Value.of("1"), new Value.Lst(List.of(Value.of("2"))))),
+                        new Value.Lst(List.of()), Value.of("[]"))))
+                        .build())
                 .slot(Slot.builder("empty", DataType.LIST).argument("TYPE_FLOAT").value(new Value.Lst(List.of())).build())
                 .slot(Slot.builder("friends", DataType.LIST).argument("Machine")
                         .defaultValue(new Value.Lst(List.of(Value.ref("Arm"), Value.ref("Head")))).build())
@@ -257,13 +261,52 @@ class KnowledgeXmlWriterTest {
     }
 
     @Test
-    void write_whenListHoldsAList_refusesIt() {
-        Value nested = new Value.Lst(List.of(new Value.Lst(List.of(Value.of("a")))));
-        Frame f = Frame.classFrame("B").slot(Slot.ofValue("s", DataType.LIST, nested)).build();
+    void listsInsideLists_areWrittenAsItemsInsideItems_andReadBackAsTheyWere() {
+        // A face_seen signal's values: a name, a face descriptor, the empty list, and the text "[]" beside it.
+        Value nested = new Value.Lst(List.of(Value.of("unknown"),
+                new Value.Lst(List.of(Value.of("0.1"), Value.of("0.2"), new Value.Lst(List.of(Value.of("x"))))),
+                new Value.Lst(List.of()), Value.of("[]"), Value.of(" [] "), Value.of("")));
+        Frame f = Frame.instance("signal_robovie_face_seen", "SensorSignal").provenance(Provenance.RUNTIME)
+                .slot(Slot.ofValue("values", DataType.LIST, nested)).build();
+
+        String xml = KnowledgeXmlWriter.toXml(f);
+        assertThat(xml).contains("<ITEM>\n          <ITEM>0.1</ITEM>").contains("<ITEM>[]</ITEM>")
+                .contains("<ITEM><![CDATA[[]]]></ITEM>");
+        KnowledgeBase context = KnowledgeBase.create();
+        context.add(Frame.classFrame("SensorSignal").build());
+        List<org.kicnp.core.xml.SourcedFrame> read = KnowledgeLoader.parseText(xml, "signal", context);
+
+        assertThat(read).singleElement().satisfies(r -> {
+            assertThat(r.frame().ownSlot("values").flatMap(Slot::value)).contains(nested);
+            assertThat(r.frame().ownSlot("values").map(Slot::type)).contains(DataType.LIST);
+        });
+    }
+
+    @Test
+    void write_whenListsNestDeeperThanTheFormatAllows_refusesIt() {
+        Value deep = Value.of("core");
+        for (int i = 0; i < KnowledgeXmlWriter.MAX_NESTED_LISTS + 1; i++) {
+            deep = new Value.Lst(List.of(deep));
+        }
+        Frame f = Frame.classFrame("B").slot(Slot.ofValue("s", DataType.LIST, deep)).build();
 
         assertThatThrownBy(() -> KnowledgeXmlWriter.toXml(f))
                 .isInstanceOf(KnowledgeException.class)
-                .hasMessage("The slot 's' of frame 'B' holds a list inside a list, which the XML format cannot write.");
+                .hasMessage("The slot 's' of frame 'B' holds lists nested more than 16 deep, which the XML format "
+                        + "cannot write.");
+    }
+
+    @Test
+    void read_whenAListOfNumbersHoldsAList_refusesItAtItsSlot() {
+        String xml = """
+                <KNOWLEDGEBASE><FRAME><NAME>B</NAME><SLOTLIST><SLOT><NAME>s</NAME><TYPE>TYPE_LIST</TYPE>
+                <ARGUMENT>TYPE_INT</ARGUMENT><VALUE><ITEM>1</ITEM><ITEM><ITEM>2</ITEM></ITEM></VALUE></SLOT></SLOTLIST>
+                </FRAME></KNOWLEDGEBASE>""";
+
+        assertThatThrownBy(() -> KnowledgeLoader.parseText(xml, "editor", KnowledgeBase.create()))
+                .isInstanceOf(KnowledgeXmlException.class)
+                .hasMessageContaining("an item holds ITEMs (a list inside a list), which only a list of TYPE_STR or "
+                        + "TYPE_LIST items may hold, not one of TYPE_INT.");
     }
 
     @Test
