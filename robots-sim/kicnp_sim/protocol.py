@@ -40,6 +40,16 @@ def encode(event: dict[str, Any]) -> str:
     return json.dumps(event, separators=(",", ":"), ensure_ascii=False, allow_nan=False)
 
 
+def _finite(value: Any) -> bool:
+    """A JSON number that is finite as a float (JSON also parses NaN, Infinity and integers too big for a float)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return False
+    try:
+        return math.isfinite(value)
+    except OverflowError:
+        return False
+
+
 def check_value(req_id: Any, field: str, value: Any, arg: Arg) -> Any:
     """Validate one value against an Arg spec; returns it (numbers as float)."""
     kind = arg.kind
@@ -216,8 +226,8 @@ class Dispatcher:
             raise ProtocolError(req_id, "x" if f["x"] is None else "y", "must be given together with the other coordinate")
         face = f["face"]
         if face is not None:
-            if len(face) != FACE_DIM or any(isinstance(v, bool) or not isinstance(v, (int, float)) for v in face):
-                raise ProtocolError(req_id, "face", f"must be an array of {FACE_DIM} numbers")
+            if len(face) != FACE_DIM or any(not _finite(v) for v in face):
+                raise ProtocolError(req_id, "face", f"must be an array of {FACE_DIM} finite numbers")
             if not any(face):
                 raise ProtocolError(req_id, "face", "must not be all zeros")
         x, y = (f["x"], f["y"]) if f["x"] is not None else room.DOOR_ENTRY

@@ -117,3 +117,22 @@ def test_as_fast_as_possible_and_eof(procs: Any) -> None:
     st = pr.until(lambda e: e["type"] == "state")[-1]
     assert st["id"] == "q"
     assert pr.close_and_wait() == 0
+
+
+def test_non_finite_or_extreme_face_numbers_are_refused_and_the_simulator_keeps_going(procs: Any) -> None:
+    pr = procs("--manual")
+    pr.next()
+    zeros = ",0" * 14
+    for rid, first in (("n", "NaN"), ("i", "Infinity"), ("m", "-Infinity")):
+        pr.send('{"id":"%s","type":"spawn_user","name":"u%s","face":[%s,1%s]}' % (rid, rid, first, zeros))
+        err = pr.next()
+        assert err["type"] == "error" and err["id"] == rid and err["field"] == "face", err
+    assert pr.p.poll() is None  # still alive
+    for rid, first in (("big", "1e308,1e308"), ("tiny", "1e-320,0")):  # scaled, not overflowed or flushed to zero
+        pr.send('{"id":"%s","type":"spawn_user","name":"u%s","face":[%s%s]}' % (rid, rid, first, zeros))
+        ack = pr.next()
+        assert ack["type"] == "ack" and ack["id"] == rid, ack
+        assert abs(sum(v * v for v in ack["result"]["face"]) - 1.0) < 1e-5, ack
+    pr.send({"id": "q", "type": "query"})
+    assert pr.until(lambda e: e["type"] == "state")[-1]["id"] == "q"
+    assert pr.close_and_wait() == 0
