@@ -54,7 +54,7 @@ def check_value(req_id: Any, field: str, value: Any, arg: Arg) -> Any:
     """Validate one value against an Arg spec; returns it (numbers as float)."""
     kind = arg.kind
     if kind == "number":
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        if not _finite(value):
             raise ProtocolError(req_id, field, "must be a finite number")
         value = float(value)
         if arg.lo is not None and value < arg.lo or arg.hi is not None and value > arg.hi:

@@ -113,3 +113,12 @@ def test_positions_inside_walls_or_counter_are_refused(sim: Sim) -> None:
     evs = sim.request("spawn_user", id="v", name="ghost", x=2.0, y=5.0)
     assert evs[0]["type"] == "error" and "crate" in evs[0]["message"]
     assert sim.request("spawn_user", id="w", name="ghost", x=2.0, y=4.3)[0]["type"] == "ack"
+
+
+def test_a_number_too_big_for_a_float_is_refused_as_not_finite_not_an_internal_error(sim: Sim) -> None:
+    huge = "1" + "0" * 400  # valid JSON; Python parses it as an int that no float can hold
+    evs = sim.send('{"id":"h","type":"command","robot":"scout","action":"go_to","args":{"x":%s,"y":1}}' % huge)
+    assert [e["type"] for e in evs] == ["error"] and evs[0]["field"] == "args.x", evs
+    assert evs[0]["message"] == "request 'h': field 'args.x' must be a finite number"
+    evs = sim.send('{"id":"s","type":"step","seconds":-%s}' % huge)
+    assert evs[0]["field"] == "seconds" and "internal error" not in evs[0]["message"], evs
