@@ -16,6 +16,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
+import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -23,6 +24,7 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.Executors;
+import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicLong;
@@ -52,9 +54,12 @@ public final class SimWorld implements AutoCloseable {
     private final CompletableFuture<SimEvent.Hello> hello = new CompletableFuture<>();
     private final SimStderr stderr = new SimStderr();
     private final Object deathLock = new Object();
+    /** Lines for the simulator's stdin, written by one thread, so that a simulator that reads nothing blocks no caller. */
+    private final BlockingQueue<String> outbox = new LinkedBlockingQueue<>();
     private volatile String deathReason;
     private volatile boolean closing;
     private Thread reader;
+    private Thread writer;
 
     private SimWorld(SimOptions options, Process process) {
         this.options = options;
@@ -102,6 +107,7 @@ public final class SimWorld implements AutoCloseable {
     private void startThreads() {
         stderr.follow(process.getErrorStream()); // first: a quick death's reason quotes stderr
         reader = Thread.ofPlatform().daemon().name("sim-stdout").start(this::readEvents);
+        writer = Thread.ofPlatform().daemon().name("sim-stdin").start(this::writeRequests);
     }
 
     /** The simulator's first line: protocol, seed, mode, robots and their actions. */
@@ -219,20 +225,31 @@ public final class SimWorld implements AutoCloseable {
         return "j" + ids.incrementAndGet();
     }
 
+    /** Queues a request line; the writer thread sends it, and a broken pipe kills the world there. */
     private void send(String id, SimRequest request) {
         failIfDead();
-        String line = codec.encode(id, request);
-        synchronized (stdin) {
-            try {
+        outbox.add(codec.encode(id, request));
+    }
+
+    private void writeRequests() {
+        try {
+            while (deathReason == null) {
+                String line = outbox.poll(200, TimeUnit.MILLISECONDS);
+                if (line == null) {
+                    continue;
+                }
                 stdin.write(line);
                 stdin.write('\n');
-                stdin.flush();
-            } catch (IOException e) {
-                die(reasonAfterBrokenPipe(e));
-                failIfDead();
+                if (outbox.isEmpty()) {
+                    stdin.flush();
+                }
+                LOG.debug("-> {}", line);
             }
+        } catch (IOException e) {
+            die(reasonAfterBrokenPipe(e));
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         }
-        LOG.debug("-> {}", line);
     }
 
     private void failIfDead() {
@@ -411,6 +428,7 @@ public final class SimWorld implements AutoCloseable {
             LOG.error("Simulator died: {}", reason);
         }
         SimulatorExitedException dead = new SimulatorExitedException("The simulator is not running: " + reason + ".");
+        outbox.clear();
         hello.completeExceptionally(dead);
         pending.values().forEach(f -> f.completeExceptionally(dead));
         queries.values().forEach(f -> f.completeExceptionally(dead));
