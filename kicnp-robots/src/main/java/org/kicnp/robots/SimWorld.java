@@ -23,6 +23,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
@@ -36,7 +37,8 @@ import java.util.function.Consumer;
  * or its death); commands are followed as {@link SimAction}s; every event goes to the listeners in stream order on
  * one event thread. When the process dies (exit, kill, broken pipe) every request and action in flight fails with a
  * reason such as {@code simulator exited with code 137}, listeners get {@link SimEvent.Exited}, and every later
- * call throws {@link SimulatorExitedException} at once.
+ * call throws {@link SimulatorExitedException} at once. In real time a simulator that answers no request within the
+ * request timeout (pinged while actions run and it is quiet) is hung: it is stopped and treated as dead.
  */
 public final class SimWorld implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(SimWorld.class);
@@ -58,6 +60,11 @@ public final class SimWorld implements AutoCloseable {
     private final BlockingQueue<String> outbox = new LinkedBlockingQueue<>();
     private volatile String deathReason;
     private volatile boolean closing;
+    /** When the simulator last wrote a line; the watchdog pings it when it has been quiet while actions run. */
+    private volatile long lastHeard = System.nanoTime();
+    private final ScheduledExecutorService watchdog =
+            Executors.newSingleThreadScheduledExecutor(Thread.ofPlatform().daemon().name("sim-watchdog").factory());
+    private CompletableFuture<JsonNode> ping = CompletableFuture.completedFuture(null);
     private Thread reader;
     private Thread writer;
 
@@ -108,6 +115,10 @@ public final class SimWorld implements AutoCloseable {
         stderr.follow(process.getErrorStream()); // first: a quick death's reason quotes stderr
         reader = Thread.ofPlatform().daemon().name("sim-stdout").start(this::readEvents);
         writer = Thread.ofPlatform().daemon().name("sim-stdin").start(this::writeRequests);
+        if (!options.manual()) { // in manual mode nothing runs between steps, and a long step answers late
+            long period = Math.max(50, options.requestTimeout().toMillis() / 4);
+            watchdog.scheduleWithFixedDelay(this::watch, period, period, TimeUnit.MILLISECONDS);
+        }
     }
 
     /** The simulator's first line: protocol, seed, mode, robots and their actions. */
@@ -155,7 +166,12 @@ public final class SimWorld implements AutoCloseable {
         pending.put(id, ack);
         Duration timeout = request instanceof SimRequest.Step s
                 ? options.requestTimeout().plusMillis((long) (s.seconds() * 1000)) : options.requestTimeout();
-        ack.orTimeout(timeout.toMillis(), TimeUnit.MILLISECONDS).whenComplete((r, e) -> pending.remove(id));
+        ack.orTimeout(timeout.toMillis(), TimeUnit.MILLISECONDS).whenComplete((r, e) -> {
+            pending.remove(id);
+            if (e instanceof TimeoutException) {
+                stopIfHung(timeout);
+            }
+        });
         try {
             send(id, request);
         } catch (SimulatorExitedException e) {
@@ -172,14 +188,53 @@ public final class SimWorld implements AutoCloseable {
 
     /** The whole world state now (robots, users, cups, obstacles). */
     public JsonNode query() {
+        return await(queryAsync());
+    }
+
+    private CompletableFuture<JsonNode> queryAsync() {
         failIfDead();
         String id = nextId();
         CompletableFuture<JsonNode> state = new CompletableFuture<>();
         queries.put(id, state);
-        state.orTimeout(options.requestTimeout().toMillis(), TimeUnit.MILLISECONDS)
-                .whenComplete((r, e) -> queries.remove(id));
-        send(id, new SimRequest.Query());
-        return await(state);
+        state.orTimeout(options.requestTimeout().toMillis(), TimeUnit.MILLISECONDS).whenComplete((r, e) -> {
+            queries.remove(id);
+            if (e instanceof TimeoutException) {
+                stopIfHung(options.requestTimeout());
+            }
+        });
+        try {
+            send(id, new SimRequest.Query());
+        } catch (SimulatorExitedException e) {
+            queries.remove(id);
+            throw e;
+        }
+        return state;
+    }
+
+    /** Real time: while actions run and the simulator has been quiet for half the request timeout, ping it. */
+    private void watch() {
+        long quiet = System.nanoTime() - lastHeard;
+        if (!alive() || actions.isEmpty() || quiet < options.requestTimeout().toNanos() / 2 || !ping.isDone()) {
+            return;
+        }
+        try {
+            ping = queryAsync();
+        } catch (SimulatorExitedException e) {
+            watchdog.shutdown();
+        }
+    }
+
+    /**
+     * Real time: a simulator that answers no request within the timeout is hung (it answers between physics steps,
+     * within milliseconds); it is stopped, and everything in flight fails saying so.
+     */
+    private void stopIfHung(Duration waited) {
+        if (options.manual() || closing || !alive()) {
+            return;
+        }
+        String time = waited.toMillis() % 1000 == 0 ? waited.toSeconds() + " s" : waited.toMillis() + " ms";
+        die("simulator did not answer within " + time + " and was stopped");
+        process.destroyForcibly();
     }
 
     /** Manual mode: advances the world by {@code seconds} (stopping early when idle, if asked) and waits. */
@@ -199,7 +254,10 @@ public final class SimWorld implements AutoCloseable {
         pending.put(id, ack);
         ack.orTimeout(options.requestTimeout().toMillis(), TimeUnit.MILLISECONDS).whenComplete((r, e) -> {
             pending.remove(id);
-            if (e != null && !(e instanceof SimulatorExitedException)) { // a death is reported by die(), with its reason
+            if (e instanceof TimeoutException) {
+                stopIfHung(options.requestTimeout());
+            }
+            if (e != null && !(e instanceof SimulatorExitedException) && alive()) { // die() reports a death, with its reason
                 String reason = e instanceof TimeoutException
                         ? "no answer from the simulator within " + options.requestTimeout().toSeconds() + " s"
                         : e.getMessage();
@@ -284,6 +342,7 @@ public final class SimWorld implements AutoCloseable {
         try (BufferedReader in = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8))) {
             String line;
             while ((line = in.readLine()) != null) {
+                lastHeard = System.nanoTime();
                 LOG.trace("<- {}", line);
                 handleLine(line);
             }
@@ -429,6 +488,7 @@ public final class SimWorld implements AutoCloseable {
         }
         SimulatorExitedException dead = new SimulatorExitedException("The simulator is not running: " + reason + ".");
         outbox.clear();
+        watchdog.shutdownNow();
         hello.completeExceptionally(dead);
         pending.values().forEach(f -> f.completeExceptionally(dead));
         queries.values().forEach(f -> f.completeExceptionally(dead));

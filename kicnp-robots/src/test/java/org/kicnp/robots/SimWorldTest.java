@@ -169,6 +169,33 @@ class SimWorldTest {
         }
     }
 
+    @Test
+    void aSimulatorThatHangsMidAction_isStoppedAndTheActionFailsSayingSo() throws Exception {
+        SimWorld world = SimWorld.start(SimOptions.defaults().withTimeScale(1).withRequestTimeout(Duration.ofSeconds(1)));
+        try {
+            List<SimEvent> exits = new CopyOnWriteArrayList<>();
+            world.addListener(e -> {
+                if (e instanceof SimEvent.Exited) {
+                    exits.add(e);
+                }
+            });
+            SimAction go = world.command(SimRequest.Command.of("scout", "go_to", Map.of("x", 1.0, "y", 1.0)));
+            waitUntil(go::started);
+
+            signal("STOP", world.pid()); // the process lives on, but answers nothing and ends nothing
+
+            ActionUpdate outcome = go.outcome().get(8, TimeUnit.SECONDS);
+            assertThat(outcome).isInstanceOf(ActionUpdate.Failed.class);
+            assertThat(((ActionUpdate.Failed) outcome).reason()).isEqualTo("simulator did not answer within 1 s and was stopped");
+            waitUntil(() -> !exits.isEmpty());
+            assertThat(world.alive()).isFalse();
+            waitUntil(() -> ProcessHandle.of(world.pid()).map(ProcessHandle::isAlive).orElse(false) == false);
+        } finally {
+            signal("KILL", world.pid());
+            world.close();
+        }
+    }
+
     static void signal(String name, long pid) throws IOException, InterruptedException {
         new ProcessBuilder("kill", "-" + name, Long.toString(pid)).inheritIO().start().waitFor();
     }
