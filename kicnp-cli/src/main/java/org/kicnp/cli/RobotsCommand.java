@@ -30,6 +30,7 @@ import java.util.Properties;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 
 /**
  * {@code kicnp robots}: starts the simulated room (the Python simulator) and the agents of Robovie, PINO, Scout and
@@ -100,46 +101,57 @@ public final class RobotsCommand implements Callable<Integer> {
         }
         CountDownLatch stop = new CountDownLatch(1);
         List<RobotAgent> agents = new ArrayList<>();
+        AtomicBoolean stopping = new AtomicBoolean();
         try (SimWorld world = SimWorld.start(options)) {
             world.addListener(e -> {
-                if (e instanceof SimEvent.Exited x) {
+                if (e instanceof SimEvent.Exited x && !stopping.get()) {
                     err.println("The simulator is gone: " + x.reason() + ".");
                     stop.countDown();
                 }
             });
             out.printf("Simulator started (pid %d, seed %d, time scale %s).%n", world.pid(), seed, timeScale);
-            for (String robot : ROBOTS) {
-                AgentOptions ao = AgentOptions.of(address.host(), address.port(), robot, AgentKind.ROBOT,
-                        tokenFile.getProperty(robot + ".token").strip());
-                RobotAgent agent = switch (robot) {
-                    case "robovie" -> new RobovieAgent(ao, world);
-                    case "pino" -> new PinoAgent(ao, world);
-                    case "scout" -> new ScoutAgent(ao, world);
-                    default -> new AiboAgent(ao, world);
-                };
-                agents.add(agent);
-                agent.startAndAwait(Duration.ofSeconds(15));
-                out.printf("Agent '%s' registered with %s (%d capability frames).%n", robot, gateway,
-                        agent.driver().capabilities().size());
-            }
-            out.flush();
-            Thread hook = new Thread(stop::countDown, "kicnp-robots-stop");
-            Runtime.getRuntime().addShutdownHook(hook);
-            boolean died = duration == null ? awaitForever(stop) : stop.await((long) (duration * 1000), TimeUnit.MILLISECONDS);
             try {
-                Runtime.getRuntime().removeShutdownHook(hook);
-            } catch (IllegalStateException e) {
-                // Shutting down already: the hook is running.
+                return runAgents(world, address, tokenFile, agents, stop, out);
+            } finally {
+                // The agents go first, so that closing the simulator is not reported to the server as its death.
+                stopping.set(true);
+                agents.reversed().forEach(RobotAgent::close);
             }
-            return died && !world.alive() ? 1 : 0;
         } catch (SimulatorException | AgentException e) {
             err.println(e.getMessage());
             return 1;
         } finally {
-            agents.reversed().forEach(RobotAgent::close);
             out.println("Robots stopped.");
             out.flush();
         }
+    }
+
+    private int runAgents(SimWorld world, GatewayAddress address, Properties tokenFile, List<RobotAgent> agents,
+                          CountDownLatch stop, PrintWriter out) throws InterruptedException {
+        for (String robot : ROBOTS) {
+            AgentOptions ao = AgentOptions.of(address.host(), address.port(), robot, AgentKind.ROBOT,
+                    tokenFile.getProperty(robot + ".token").strip());
+            RobotAgent agent = switch (robot) {
+                case "robovie" -> new RobovieAgent(ao, world);
+                case "pino" -> new PinoAgent(ao, world);
+                case "scout" -> new ScoutAgent(ao, world);
+                default -> new AiboAgent(ao, world);
+            };
+            agents.add(agent);
+            agent.startAndAwait(Duration.ofSeconds(15));
+            out.printf("Agent '%s' registered with %s (%d capability frames).%n", robot, gateway,
+                    agent.driver().capabilities().size());
+        }
+        out.flush();
+        Thread hook = new Thread(stop::countDown, "kicnp-robots-stop");
+        Runtime.getRuntime().addShutdownHook(hook);
+        boolean died = duration == null ? awaitForever(stop) : stop.await((long) (duration * 1000), TimeUnit.MILLISECONDS);
+        try {
+            Runtime.getRuntime().removeShutdownHook(hook);
+        } catch (IllegalStateException e) {
+            // Shutting down already: the hook is running.
+        }
+        return died && !world.alive() ? 1 : 0;
     }
 
     private static boolean awaitForever(CountDownLatch stop) throws InterruptedException {

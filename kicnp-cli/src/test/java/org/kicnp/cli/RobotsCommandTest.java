@@ -59,6 +59,8 @@ class RobotsCommandTest {
             assertThat(exit.get(30, TimeUnit.SECONDS)).isZero();
         }
         assertThat(out.toString()).contains("Agent 'scout' registered with 127.0.0.1:").contains("Robots stopped.");
+        assertThat(err.toString()).doesNotContain("The simulator is gone");
+        assertThat(kb.contains("signal_robovie_simulator")).as("a 'simulator exited' signal on a normal stop").isFalse();
     }
 
     @Test
