@@ -82,6 +82,14 @@ public final class RobotsCommand implements Callable<Integer> {
             err.println(e.getMessage());
             return 2;
         }
+        if (!(timeScale >= 0 && timeScale <= 1000)) {
+            err.println("--time-scale " + timeScale + " is outside 0..1000.");
+            return 2;
+        }
+        if (duration != null && !(duration > 0 && duration < Double.POSITIVE_INFINITY)) {
+            err.println("--for " + duration + " is not a positive number of seconds.");
+            return 2;
+        }
         Properties tokenFile = new Properties();
         try (InputStream in = Files.newInputStream(tokens)) {
             tokenFile.load(in);

@@ -72,6 +72,21 @@ class RobotsCommandTest {
     }
 
     @Test
+    void robots_withATimeScaleOrDurationOutOfRange_exitsWith2BeforeStartingAnything(@TempDir Path dir) throws Exception {
+        Path tokens = Files.write(dir.resolve("agents.properties"),
+                List.of("robovie.token = a", "pino.token = b", "scout.token = c", "aibo.token = d"));
+
+        assertThat(run("robots", "--tokens", tokens.toString(), "--time-scale", "5000")).isEqualTo(2);
+        assertThat(run("robots", "--tokens", tokens.toString(), "--for", "-3")).isEqualTo(2);
+        assertThat(run("robots", "--tokens", tokens.toString(), "--for", "NaN")).isEqualTo(2);
+        assertThat(err.toString())
+                .contains("--time-scale 5000.0 is outside 0..1000.")
+                .contains("--for -3.0 is not a positive number of seconds.")
+                .contains("--for NaN is not a positive number of seconds.");
+        assertThat(out.toString()).doesNotContain("Simulator started");
+    }
+
+    @Test
     void robots_withoutATokenForARobot_exitsWith2NamingIt(@TempDir Path dir) throws Exception {
         Path tokens = Files.write(dir.resolve("agents.properties"), List.of("robovie.token = x", "pino.token = y"));
 
