@@ -68,6 +68,11 @@ class User:
         self.target = (x, y)
         self.speed = speed
 
+    def stop(self) -> None:
+        """End the walk where the user stands."""
+        self.target = None
+        self.body.velocity = (0.0, 0.0)
+
     def update(self, dt: float) -> None:
         """Set the kinematic velocity for this step (called before the physics step)."""
         if self.target is None:

@@ -14,12 +14,13 @@ from typing import Any, Optional
 import pymunk
 
 from .actions import Action, Outcome
-from .geometry import r
+from .geometry import dist, r
 from .robots import ROBOT_CLASSES, Robot
 from .room import CAT_STATIC, Cup, add_obstacle, build_room
 from .users import User, face_from_seed, normalise
 
 DEFAULT_DT = 1.0 / 60.0
+USER_STOP_GAP_M = 0.01  # a walking user stops this far from a robot in the way
 START_POSES = {  # name: (x, y, heading in degrees)
     "robovie": (4.0, 3.2, -90.0),
     "pino": (2.5, 3.8, -90.0),
@@ -112,6 +113,8 @@ class World:
                 action.control(self, self.dt)
         for user in self.users.values():
             user.update(self.dt)
+            if user.target is not None and self._walks_into_robot(user):
+                user.stop()
         self.space.step(self.dt)
         self.steps += 1
         for cup in self.cups.values():
@@ -131,6 +134,18 @@ class World:
         if self.stream_every and self.steps >= self.stream_next:
             self.stream_next = self.steps + self.stream_every
             self.emit("state", **self.state())
+
+    def _walks_into_robot(self, user: User) -> bool:
+        """Whether this step's walk would bring the user into a robot (a user is kinematic: it would shove the
+        robot however hard it takes, even through a wall), so the user stops in front of it instead."""
+        vx, vy = user.body.velocity
+        nxt = (user.pos[0] + vx * self.dt, user.pos[1] + vy * self.dt)
+        for robot in self.robots.values():
+            reach = user.shape.radius + robot.radius + USER_STOP_GAP_M
+            d_next = dist(nxt, robot.pos)
+            if d_next < reach and d_next < dist(user.pos, robot.pos):
+                return True
+        return False
 
     def _progress(self, action: Action, outcome: Optional[Outcome]) -> None:
         if outcome is None and action.progress_s:

@@ -122,3 +122,20 @@ def test_a_number_too_big_for_a_float_is_refused_as_not_finite_not_an_internal_e
     assert evs[0]["message"] == "request 'h': field 'args.x' must be a finite number"
     evs = sim.send('{"id":"s","type":"step","seconds":-%s}' % huge)
     assert evs[0]["field"] == "seconds" and "internal error" not in evs[0]["message"], evs
+
+
+def test_a_walking_user_stops_at_a_robot_instead_of_pushing_it_through_the_wall(sim: Sim) -> None:
+    sim.request("place_robot", robot="robovie", x=0.5, y=3.0)
+    sim.request("place_robot", robot="aibo", x=0.5, y=1.0)
+    sim.request("spawn_user", name="alice", x=1.5, y=3.0)
+    sim.request("spawn_user", name="bob", x=1.5, y=1.0)
+    sim.request("move_user", name="alice", x=0.31, y=3.0, speed=1.0)  # through Robovie, up to the wall
+    sim.request("move_user", name="bob", x=0.31, y=1.0, speed=1.0)  # through AIBO
+    sim.step(4.0)
+    st = sim.state()
+    for robot, user in (("robovie", "alice"), ("aibo", "bob")):
+        rb, u = st["robots"][robot], st["users"][user]
+        radius = json.loads(sim.lines[0])["robots"][robot]["radius_m"]
+        assert rb["x"] >= radius, (robot, rb)  # still inside the room
+        assert math.hypot(rb["x"] - u["x"], rb["y"] - u["y"]) >= radius + 0.25 - 0.02, (robot, rb, u)  # no overlap
+        assert u["walking"] is False  # the walk ended in front of the robot
