@@ -213,9 +213,13 @@ class Dispatcher:
         self.ack(req_id)
         self.world.start(robot, action)
 
-    def _clear(self, req_id: Any, x: float, y: float, radius: float) -> None:
-        """Refuse a position where a body of this radius would overlap a wall, the counter or an obstacle."""
+    def _clear(self, req_id: Any, x: float, y: float, radius: float, me: Any = None, users: bool = False) -> None:
+        """Refuse a position where a body of this radius would overlap a wall, the counter or an obstacle; with ``me``
+        (the body being put there, or True for a new user) also a robot, and with ``users`` also a user: the physics
+        would shove it out of the way, through a wall if need be."""
         hit = self.world.static_overlap(x, y, radius)
+        if hit is None and me is not None:
+            hit = self.world.body_overlap(x, y, radius, me, users)
         if hit:
             raise ProtocolError(req_id, "x", f"({x:g}, {y:g}) overlaps {hit}")
 
@@ -231,16 +235,16 @@ class Dispatcher:
             if not any(face):
                 raise ProtocolError(req_id, "face", "must not be all zeros")
         x, y = (f["x"], f["y"]) if f["x"] is not None else room.DOOR_ENTRY
-        self._clear(req_id, x, y, USER_RADIUS)
+        self._clear(req_id, x, y, USER_RADIUS, me=True)
         heading = from_deg(90.0 if f["heading_deg"] is None else f["heading_deg"])
         user = self.world.spawn_user(f["name"], x, y, heading, face)
         return {"name": user.name, **user.state(), "face": [round(v, 6) for v in user.face]}
 
     def _move_user(self, req_id: Any, f: dict[str, Any]) -> None:
         user = self._user(req_id, f["name"])
+        self._clear(req_id, f["x"], f["y"], USER_RADIUS, me=user.body if f["speed"] is None else None)
         if f["heading_deg"] is not None:
             user.body.angle = from_deg(f["heading_deg"])
-        self._clear(req_id, f["x"], f["y"], USER_RADIUS)
         if f["speed"] is None:
             user.target = None
             user.body.position = (f["x"], f["y"])
@@ -256,7 +260,7 @@ class Dispatcher:
         robot = self._robot(req_id, f["robot"])
         if "base" in robot.actions:
             raise ProtocolError(req_id, "robot", f"{robot.name} is moving ({robot.actions['base'].id!r}); cancel it first")
-        self._clear(req_id, f["x"], f["y"], robot.radius)
+        self._clear(req_id, f["x"], f["y"], robot.radius, me=robot.body, users=True)
         heading = robot.heading if f["heading_deg"] is None else from_deg(f["heading_deg"])
         self.world.place_robot(robot, f["x"], f["y"], heading)
 

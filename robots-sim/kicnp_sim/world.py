@@ -193,6 +193,16 @@ class World:
                 return getattr(info.shape, "label", "something")
         return None
 
+    def body_overlap(self, x: float, y: float, radius: float, me: Any, users: bool) -> Optional[str]:
+        """The label of a robot (or, with ``users``, a user) other than the body ``me`` that a circle here would overlap."""
+        bodies = [(rb.body, rb.shape) for rb in self.robots.values()]
+        if users:
+            bodies += [(u.body, u.shape) for u in self.users.values()]
+        for body, shape in bodies:
+            if body is not me and dist((x, y), body.position) < radius + shape.radius - 1e-9:
+                return shape.label
+        return None
+
     def add_obstacle(self, name: str, x: float, y: float, w: float, h: float) -> None:
         add_obstacle(self.space, name, x, y, w, h)
         self.obstacles[name] = {"x": x, "y": y, "w": w, "h": h}

@@ -139,3 +139,28 @@ def test_a_walking_user_stops_at_a_robot_instead_of_pushing_it_through_the_wall(
         assert rb["x"] >= radius, (robot, rb)  # still inside the room
         assert math.hypot(rb["x"] - u["x"], rb["y"] - u["y"]) >= radius + 0.25 - 0.02, (robot, rb, u)  # no overlap
         assert u["walking"] is False  # the walk ended in front of the robot
+
+
+def test_a_teleport_onto_a_robot_is_refused_instead_of_shoving_the_robot(sim: Sim) -> None:
+    start = sim.state()["robots"]
+    evs = sim.request("place_robot", id="p", robot="aibo", x=4.0, y=3.2)  # onto Robovie
+    assert evs[0]["type"] == "error" and evs[0]["field"] == "x" and "robot:robovie" in evs[0]["message"], evs
+    evs = sim.request("spawn_user", id="u", name="alice", x=6.2, y=2.0)  # onto Scout
+    assert evs[0]["type"] == "error" and evs[0]["field"] == "x" and "robot:scout" in evs[0]["message"], evs
+    sim.request("spawn_user", name="bob", x=5.0, y=1.0)
+    evs = sim.request("move_user", id="m", name="bob", x=2.5, y=2.0)  # a teleport onto AIBO
+    assert evs[0]["type"] == "error" and "robot:aibo" in evs[0]["message"], evs
+    evs = sim.request("place_robot", id="q", robot="pino", x=5.0, y=1.2)  # onto bob
+    assert evs[0]["type"] == "error" and "user:bob" in evs[0]["message"], evs
+    sim.step(1.0)
+    now = sim.state()["robots"]
+    assert {n: (rb["x"], rb["y"]) for n, rb in now.items()} == {n: (rb["x"], rb["y"]) for n, rb in start.items()}
+    assert sim.request("place_robot", robot="robovie", x=4.05, y=3.2)[0]["type"] == "ack"  # moving over itself is fine
+    assert sim.request("move_user", name="bob", x=5.0, y=1.1)[0]["type"] == "ack"
+
+
+def test_a_refused_move_user_leaves_the_user_as_it_was(sim: Sim) -> None:
+    sim.request("spawn_user", name="bob", x=5.0, y=1.0, heading_deg=90)
+    evs = sim.request("move_user", id="m", name="bob", x=7.5, y=4.0, heading_deg=180)  # into the counter
+    assert evs[0]["type"] == "error" and "counter" in evs[0]["message"], evs
+    assert sim.state()["users"]["bob"]["heading_deg"] == 90.0
