@@ -117,7 +117,11 @@ public final class SimWorld implements AutoCloseable {
         writer = Thread.ofPlatform().daemon().name("sim-stdin").start(this::writeRequests);
         if (!options.manual()) { // in manual mode nothing runs between steps, and a long step answers late
             long period = Math.max(50, options.requestTimeout().toMillis() / 4);
-            watchdog.scheduleWithFixedDelay(this::watch, period, period, TimeUnit.MILLISECONDS);
+            try {
+                watchdog.scheduleWithFixedDelay(this::watch, period, period, TimeUnit.MILLISECONDS);
+            } catch (RejectedExecutionException e) {
+                LOG.debug("The simulator died before its watchdog started: {}", deathReason);
+            }
         }
     }
 
