@@ -11,9 +11,9 @@ import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 
 /**
- * Where the simulator lives: the repository's {@code robots-sim/} folder and its venv's Python. The venv is made
- * with {@code robots-sim/setup-venv.sh} when it is missing, so a fresh checkout runs (and tests) without a manual
- * step; the script is idempotent and quick when the venv is already there.
+ * Where the simulator lives: the repository's {@code robots-sim/} folder and its venv's Python. The venv is made, or
+ * brought up to date, with {@code robots-sim/setup-venv.sh} before each start, so a fresh checkout runs (and tests)
+ * without a manual step; the script is idempotent and returns at once when the venv is up to date.
  */
 public record SimInstallation(Path simDir, Path python) {
     private static final Logger LOG = LoggerFactory.getLogger(SimInstallation.class);
@@ -27,9 +27,9 @@ public record SimInstallation(Path simDir, Path python) {
             throw new SimulatorException("No simulator under '" + simDir + "': expected robots-sim/kicnp_sim there.");
         }
         Path python = simDir.resolve(".venv").resolve("bin").resolve("python");
-        if (!Files.isExecutable(python)) {
-            setUpVenv(simDir);
-        }
+        // Always: the script returns at once when the venv is up to date, and it alone knows when it is not (a set-up
+        // that was interrupted leaves a python without packages; a pull can change requirements.txt).
+        setUpVenv(simDir);
         if (!Files.isExecutable(python)) {
             throw new SimulatorException("robots-sim/setup-venv.sh ran but '" + python + "' is still missing.");
         }
@@ -57,7 +57,7 @@ public record SimInstallation(Path simDir, Path python) {
 
     private static void setUpVenv(Path simDir) {
         Path script = simDir.resolve("setup-venv.sh");
-        LOG.info("Creating the simulator's Python venv with {}", script);
+        LOG.debug("Checking the simulator's Python venv with {}", script);
         try {
             Process p = new ProcessBuilder("bash", script.toString()).redirectErrorStream(true).start();
             String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);

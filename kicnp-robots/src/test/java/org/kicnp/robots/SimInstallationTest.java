@@ -41,6 +41,18 @@ class SimInstallationTest {
     }
 
     @Test
+    void locate_whenTheVenvExistsButItsSetUpDidNotFinish_runsSetupVenvAgain() throws IOException {
+        Path sim = fakeSim("touch \"$(dirname \"$0\")/setup-ran\"\n");
+        Path python = Files.createDirectories(sim.resolve(".venv/bin")).resolve("python"); // no packages, no stamp
+        Files.writeString(python, "#!/bin/sh\n");
+        Files.setPosixFilePermissions(python, PosixFilePermissions.fromString("rwxr-xr-x"));
+
+        SimInstallation.locate(Optional.of(repo));
+
+        assertThat(sim.resolve("setup-ran")).exists();
+    }
+
+    @Test
     void findRoot_fromOutsideTheRepository_usesTheRepositoryTheLauncherNames(@TempDir Path elsewhere)
             throws IOException {
         fakeSim("exit 0\n");
