@@ -13,7 +13,6 @@ import math
 from typing import Any, Callable, Optional
 
 from . import PROTOCOL_VERSION, __version__, room
-from .actions import DEFAULT_TIMEOUT_S
 from .specs import Arg
 from .geometry import from_deg
 from .users import FACE_DIM, USER_RADIUS
@@ -208,7 +207,7 @@ class Dispatcher:
             raise ProtocolError(req_id, "action", f"refused: {exc}") from None
         action = spec.factory(robot, args)
         action.id, action.name, action.parts = req_id, spec.name, spec.parts
-        action.timeout_s = f["timeout_s"] or DEFAULT_TIMEOUT_S
+        action.timeout_s = f["timeout_s"]  # None: the action's default, known once it has started
         action.progress_s = f["progress_s"]
         self.ack(req_id)
         self.world.start(robot, action)

@@ -127,8 +127,8 @@ class World:
                     continue  # already finished this step
                 outcome = action.check(self)
                 self._progress(action, outcome)
-                if outcome is None and action.elapsed(self) > action.timeout_s:
-                    outcome = ("failed", f"timeout after {action.timeout_s:g} s")
+                if outcome is None and action.elapsed(self) > action.timeout():
+                    outcome = ("failed", f"timeout after {action.timeout():g} s")
                 if outcome is not None:
                     self.finish(action, outcome)
         if self.stream_every and self.steps >= self.stream_next:

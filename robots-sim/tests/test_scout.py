@@ -120,3 +120,12 @@ def test_scout_put_down_with_empty_gripper_ends_at_once(sim: Sim) -> None:
     sim.command("scout", "put_down", "b2")
     end, _ = sim.run("b2")
     assert end["type"] == "action_ended" and end["result"] == {"cup": None, "kind": None, "duration_s": 0.0}
+
+
+def test_a_drive_longer_than_the_default_timeout_runs_its_whole_duration(sim: Sim) -> None:
+    sim.command("scout", "drive", "d1", left_mps=0.0, right_mps=0.0, duration_s=150.0)  # no timeout_s given
+    end, _ = sim.run("d1", max_s=160)
+    assert end["type"] == "action_ended" and abs(end["t"] - 150.0) < 0.05, end
+    sim.command("scout", "drive", "d2", timeout_s=5.0, left_mps=0.0, right_mps=0.0, duration_s=150.0)
+    end, _ = sim.run("d2", max_s=10)
+    assert end["type"] == "action_failed" and end["reason"] == "timeout after 5 s", end  # an explicit timeout holds
