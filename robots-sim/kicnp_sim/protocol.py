@@ -267,6 +267,9 @@ class Dispatcher:
         name = f["name"] or f"obstacle-{len(self.world.obstacles) + 1}"
         if name in self.world.obstacles:
             raise ProtocolError(req_id, "name", f"is already taken by an obstacle: {name!r}")
+        hit = self.world.box_overlap(f["x"], f["y"], f["w"], f["h"])
+        if hit:  # a robot inside a static box could never get out
+            raise ProtocolError(req_id, "x", f"a {f['w']:g} x {f['h']:g} box at ({f['x']:g}, {f['y']:g}) overlaps {hit}")
         self.world.add_obstacle(name, f["x"], f["y"], f["w"], f["h"])
         return {"name": name}
 

@@ -203,6 +203,15 @@ class World:
                 return shape.label
         return None
 
+    def box_overlap(self, x: float, y: float, w: float, h: float) -> Optional[str]:
+        """The label of a robot or a user that a box centred here would overlap."""
+        for shape in [rb.shape for rb in self.robots.values()] + [u.shape for u in self.users.values()]:
+            cx, cy = shape.body.position
+            nearest = (min(max(cx, x - w / 2), x + w / 2), min(max(cy, y - h / 2), y + h / 2))
+            if dist(nearest, (cx, cy)) < shape.radius - 1e-9:
+                return shape.label
+        return None
+
     def add_obstacle(self, name: str, x: float, y: float, w: float, h: float) -> None:
         add_obstacle(self.space, name, x, y, w, h)
         self.obstacles[name] = {"x": x, "y": y, "w": w, "h": h}

@@ -164,3 +164,17 @@ def test_a_refused_move_user_leaves_the_user_as_it_was(sim: Sim) -> None:
     evs = sim.request("move_user", id="m", name="bob", x=7.5, y=4.0, heading_deg=180)  # into the counter
     assert evs[0]["type"] == "error" and "counter" in evs[0]["message"], evs
     assert sim.state()["users"]["bob"]["heading_deg"] == 90.0
+
+
+def test_an_obstacle_over_a_robot_or_a_user_is_refused_instead_of_trapping_it(sim: Sim) -> None:
+    evs = sim.request("add_obstacle", id="o1", name="box", x=6.2, y=2.0, w=1.0, h=1.0)  # around Scout
+    assert evs[0]["type"] == "error" and evs[0]["field"] == "x" and "robot:scout" in evs[0]["message"], evs
+    evs = sim.request("add_obstacle", id="o2", name="box", x=6.45, y=2.0, w=0.2, h=0.2)  # 5 cm into Scout
+    assert evs[0]["type"] == "error" and "robot:scout" in evs[0]["message"], evs
+    sim.request("spawn_user", name="al", x=2.0, y=5.0)
+    evs = sim.request("add_obstacle", id="o3", name="box", x=2.0, y=5.3, w=1.0, h=0.2)
+    assert evs[0]["type"] == "error" and "user:al" in evs[0]["message"], evs
+    assert sim.state()["obstacles"] == {}
+    sim.command("scout", "go_to", "g", x=5.0, y=2.0)
+    assert sim.run("g")[0]["type"] == "action_ended"
+    assert sim.request("add_obstacle", id="o4", name="box", x=6.2, y=2.0, w=0.5, h=0.5)[0]["type"] == "ack"  # Scout left
