@@ -1,13 +1,16 @@
 package org.kicnp.robots;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.time.Duration;
 import java.util.Optional;
+import java.util.concurrent.TimeUnit;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
@@ -50,6 +53,18 @@ class SimInstallationTest {
         SimInstallation.locate(Optional.of(repo));
 
         assertThat(sim.resolve("setup-ran")).exists();
+    }
+
+    @Test
+    @Timeout(value = 20, unit = TimeUnit.SECONDS)
+    void locate_whenTheSetupScriptHangs_givesUpAfterTheTimeoutSayingSo() throws IOException {
+        fakeSim("echo 'pip: connecting...'\nsleep 60\n");
+
+        long start = System.nanoTime();
+        assertThatThrownBy(() -> SimInstallation.locate(Optional.of(repo), Duration.ofSeconds(1)))
+                .isInstanceOf(SimulatorException.class)
+                .hasMessageEndingWith("setup-venv.sh' did not finish within 1 s; its output: pip: connecting...");
+        assertThat(System.nanoTime() - start).isLessThan(TimeUnit.SECONDS.toNanos(5));
     }
 
     @Test
