@@ -136,3 +136,14 @@ def test_non_finite_or_extreme_face_numbers_are_refused_and_the_simulator_keeps_
     pr.send({"id": "q", "type": "query"})
     assert pr.until(lambda e: e["type"] == "state")[-1]["id"] == "q"
     assert pr.close_and_wait() == 0
+
+
+@pytest.mark.parametrize("args, says", [
+    (["--time-scale", "nan"], "--time-scale must be within [0, 1000]"),
+    (["--log-level", "verbose"], "--log-level"),
+])
+def test_bad_command_line_options_are_usage_errors_not_tracebacks(args: list[str], says: str) -> None:
+    p = subprocess.run([sys.executable, "-m", "kicnp_sim", *args], stdin=subprocess.DEVNULL, capture_output=True,
+                       text=True, timeout=20)
+    assert p.returncode == 2 and says in p.stderr and "Traceback" not in p.stderr, (p.returncode, p.stderr)
+    assert p.stdout == ""  # no hello for a simulator that will not run
