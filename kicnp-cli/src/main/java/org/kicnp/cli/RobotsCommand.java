@@ -42,6 +42,7 @@ import java.util.concurrent.atomic.AtomicBoolean;
                 + "against a running server.")
 public final class RobotsCommand implements Callable<Integer> {
     private static final List<String> ROBOTS = List.of("robovie", "pino", "scout", "aibo");
+    private static final Duration STOP_WAIT = Duration.ofSeconds(15);
 
     // The port serve listens on by default, so that "serve KB" then "robots" finds it.
     @Option(names = "--gateway", defaultValue = "127.0.0.1:" + PlatformConfig.DEFAULT_GATEWAY_PORT,
@@ -108,6 +109,7 @@ public final class RobotsCommand implements Callable<Integer> {
             options = options.withRepoRoot(repo);
         }
         CountDownLatch stop = new CountDownLatch(1);
+        CountDownLatch stopped = new CountDownLatch(1);
         List<RobotAgent> agents = new ArrayList<>();
         AtomicBoolean stopping = new AtomicBoolean();
         try (SimWorld world = SimWorld.start(options)) {
@@ -119,7 +121,7 @@ public final class RobotsCommand implements Callable<Integer> {
             });
             out.printf("Simulator started (pid %d, seed %d, time scale %s).%n", world.pid(), seed, timeScale);
             try {
-                return runAgents(world, address, tokenFile, agents, stop, out);
+                return runAgents(world, address, tokenFile, agents, stop, stopped, out);
             } finally {
                 // The agents go first, so that closing the simulator is not reported to the server as its death.
                 stopping.set(true);
@@ -131,11 +133,12 @@ public final class RobotsCommand implements Callable<Integer> {
         } finally {
             out.println("Robots stopped.");
             out.flush();
+            stopped.countDown();
         }
     }
 
     private int runAgents(SimWorld world, GatewayAddress address, Properties tokenFile, List<RobotAgent> agents,
-                          CountDownLatch stop, PrintWriter out) throws InterruptedException {
+                          CountDownLatch stop, CountDownLatch stopped, PrintWriter out) throws InterruptedException {
         for (String robot : ROBOTS) {
             AgentOptions ao = AgentOptions.of(address.host(), address.port(), robot, AgentKind.ROBOT,
                     tokenFile.getProperty(robot + ".token").strip());
@@ -151,7 +154,16 @@ public final class RobotsCommand implements Callable<Integer> {
                     agent.driver().capabilities().size());
         }
         out.flush();
-        Thread hook = new Thread(stop::countDown, "kicnp-robots-stop");
+        // On SIGTERM or Ctrl-C the JVM halts once its hooks return: this one waits until the agents and the simulator
+        // have been stopped, so the agents leave the server cleanly and the simulator is shut down, not cut off.
+        Thread hook = new Thread(() -> {
+            stop.countDown();
+            try {
+                stopped.await(STOP_WAIT.toMillis(), TimeUnit.MILLISECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "kicnp-robots-stop");
         Runtime.getRuntime().addShutdownHook(hook);
         boolean died = duration == null ? awaitForever(stop) : stop.await((long) (duration * 1000), TimeUnit.MILLISECONDS);
         try {

@@ -64,6 +64,44 @@ class RobotsCommandTest {
     }
 
     @Test
+    void robots_stoppedBySigterm_stopsTheAgentsAndTheSimulatorCleanly(@TempDir Path dir) throws Exception {
+        AgentDirectory agents = AgentDirectory.empty();
+        List<String> lines = new ArrayList<>();
+        for (String robot : List.of("robovie", "pino", "scout", "aibo")) {
+            agents = agents.with(robot, robot + "-secret", AgentKind.ROBOT);
+            lines.add(robot + ".token = " + robot + "-secret");
+        }
+        Path tokens = Files.write(dir.resolve("agents.properties"), lines);
+        Path output = dir.resolve("robots.out");
+        KnowledgeBase kb = KnowledgeBase.create();
+        try (GatewayServer server = GatewayServer.start(GatewayConfig.defaults().withPort(0), agents, kb,
+                FeedbackListener.NONE)) {
+            String java = ProcessHandle.current().info().command().orElse("java");
+            Process robots = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"),
+                    Main.class.getName(), "robots", "--gateway", "127.0.0.1:" + server.port(),
+                    "--tokens", tokens.toString()).redirectErrorStream(true).redirectOutput(output.toFile()).start();
+            try {
+                long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(40);
+                while (server.registeredAgents().size() < 4 && System.nanoTime() < deadline) {
+                    Thread.sleep(20);
+                }
+                assertThat(server.registeredAgents()).hasSize(4);
+                List<ProcessHandle> simulator = robots.descendants().toList();
+                assertThat(simulator).isNotEmpty();
+
+                robots.destroy(); // SIGTERM, as from kill or a service manager
+
+                assertThat(robots.waitFor(20, TimeUnit.SECONDS)).isTrue();
+                assertThat(Files.readString(output)).contains("Robots stopped.").doesNotContain("The simulator is gone");
+                assertThat(simulator).noneMatch(ProcessHandle::isAlive);
+            } finally {
+                robots.descendants().forEach(ProcessHandle::destroyForcibly);
+                robots.destroyForcibly();
+            }
+        }
+    }
+
+    @Test
     void robots_withAGatewayThatIsNotHostAndPort_exitsWith2SayingSo(@TempDir Path dir) throws Exception {
         Path tokens = Files.write(dir.resolve("agents.properties"), List.of("robovie.token = x"));
 
