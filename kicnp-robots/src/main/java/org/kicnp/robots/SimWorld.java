@@ -98,6 +98,12 @@ public final class SimWorld implements AutoCloseable {
             LOG.info("Simulator {} started (pid {}, seed {}, mode {})", h.protocol(), process.pid(), h.seed(), h.mode());
             return world;
         } catch (ExecutionException e) {
+            if (!(e.getCause() instanceof SimulatorExitedException)) { // alive, but not speaking the protocol
+                world.process.descendants().forEach(ProcessHandle::destroyForcibly);
+                world.process.destroyForcibly();
+                world.close();
+                throw new SimulatorException("The simulator did not start: " + e.getCause().getMessage());
+            }
             world.close();
             throw new SimulatorExitedException("The simulator did not start: " + e.getCause().getMessage());
         } catch (TimeoutException e) {
@@ -361,8 +367,16 @@ public final class SimWorld implements AutoCloseable {
         try {
             event = codec.decode(line);
         } catch (SimProtocolException e) {
+            if (!hello.isDone()) { // the first line must be the hello: no use waiting for another
+                hello.completeExceptionally(new SimulatorException("The simulator's first line is not a valid hello: "
+                        + e.getMessage()));
+            }
             LOG.warn("{}", e.getMessage());
             return;
+        }
+        if (!hello.isDone() && !(event instanceof SimEvent.Hello)) {
+            hello.completeExceptionally(new SimulatorException("The simulator's first line is not a valid hello but a "
+                    + event.getClass().getSimpleName() + " event: " + SimCodec.bad(line, "expected a hello").getMessage()));
         }
         switch (event) {
             case SimEvent.Hello h -> hello.complete(h);

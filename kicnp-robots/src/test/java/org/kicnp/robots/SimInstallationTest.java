@@ -68,6 +68,22 @@ class SimInstallationTest {
     }
 
     @Test
+    @Timeout(value = 20, unit = TimeUnit.SECONDS)
+    void start_whenTheSimulatorsFirstLineIsNotAValidHello_failsAtOnceQuotingIt() throws IOException {
+        Path sim = fakeSim("exit 0\n");
+        Path python = Files.createDirectories(sim.resolve(".venv/bin")).resolve("python");
+        Files.writeString(python, "#!/bin/sh\necho '{\"type\":\"hello\",\"t\":0.0,\"protocol\":\"kicnp-sim/1\"}'\nsleep 30\n");
+        Files.setPosixFilePermissions(python, PosixFilePermissions.fromString("rwxr-xr-x"));
+
+        long start = System.nanoTime();
+        assertThatThrownBy(() -> SimWorld.start(SimOptions.defaults().withRepoRoot(repo)))
+                .isInstanceOf(SimulatorException.class)
+                .hasMessageContaining("not a valid hello")
+                .hasMessageContaining("member 'seed' is missing");
+        assertThat(System.nanoTime() - start).isLessThan(TimeUnit.SECONDS.toNanos(8));
+    }
+
+    @Test
     void findRoot_fromOutsideTheRepository_usesTheRepositoryTheLauncherNames(@TempDir Path elsewhere)
             throws IOException {
         fakeSim("exit 0\n");
