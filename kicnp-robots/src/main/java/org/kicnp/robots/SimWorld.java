@@ -42,6 +42,8 @@ import java.util.function.Consumer;
  */
 public final class SimWorld implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(SimWorld.class);
+    /** The version of the simulator protocol this class speaks (robots-sim/PROTOCOL.md). */
+    public static final String PROTOCOL = "kicnp-sim/1";
 
     private final SimOptions options;
     private final Process process;
@@ -379,6 +381,8 @@ public final class SimWorld implements AutoCloseable {
                     + event.getClass().getSimpleName() + " event: " + SimCodec.bad(line, "expected a hello").getMessage()));
         }
         switch (event) {
+            case SimEvent.Hello h when !h.protocol().equals(PROTOCOL) -> hello.completeExceptionally(new SimulatorException(
+                    "The simulator speaks " + h.protocol() + "; this platform speaks " + PROTOCOL + "."));
             case SimEvent.Hello h -> hello.complete(h);
             case SimEvent.Ack a -> {
                 if (!queries.containsKey(a.id())) {

@@ -84,6 +84,20 @@ class SimInstallationTest {
     }
 
     @Test
+    @Timeout(value = 20, unit = TimeUnit.SECONDS)
+    void start_whenTheSimulatorSpeaksAnotherProtocolVersion_failsNamingBoth() throws IOException {
+        Path sim = fakeSim("exit 0\n");
+        Path python = Files.createDirectories(sim.resolve(".venv/bin")).resolve("python");
+        Files.writeString(python, "#!/bin/sh\necho '{\"type\":\"hello\",\"t\":0.0,\"protocol\":\"kicnp-sim/2\","
+                + "\"seed\":1,\"mode\":\"manual\",\"robots\":{}}'\nsleep 30\n");
+        Files.setPosixFilePermissions(python, PosixFilePermissions.fromString("rwxr-xr-x"));
+
+        assertThatThrownBy(() -> SimWorld.start(SimOptions.defaults().withRepoRoot(repo)))
+                .isInstanceOf(SimulatorException.class)
+                .hasMessageContaining("speaks kicnp-sim/2; this platform speaks kicnp-sim/1");
+    }
+
+    @Test
     void findRoot_fromOutsideTheRepository_usesTheRepositoryTheLauncherNames(@TempDir Path elsewhere)
             throws IOException {
         fakeSim("exit 0\n");
