@@ -42,6 +42,8 @@ def main(argv: Optional[list[str]] = None) -> int:
     a = parse_args(argv)
     sys.stdin.reconfigure(encoding="utf-8", errors="replace")  # bad bytes become a JSON error, not a crash
     sys.stdout.reconfigure(encoding="utf-8")
+    protocol_out = sys.stdout
+    sys.stdout = sys.stderr  # a stray print() in simulator code goes to the log, never into the protocol stream
     logging.basicConfig(stream=sys.stderr, level=a.log_level, format="%(levelname)s %(name)s: %(message)s")
     speaker = Speaker(a.audio_dir) if a.audio_dir else None
     world = World(seed=a.seed, dt=1.0 / a.hz, audio=speaker)
@@ -49,12 +51,13 @@ def main(argv: Optional[list[str]] = None) -> int:
     disp.hello()
     try:
         run = run_manual if a.manual else run_realtime
-        return run(disp, sys.stdin, sys.stdout)
+        return run(disp, sys.stdin, protocol_out)
     except KeyboardInterrupt:
         return 0
     except BrokenPipeError:
         return 0
     finally:
+        sys.stdout = protocol_out
         if speaker:
             speaker.close()
 

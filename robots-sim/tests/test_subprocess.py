@@ -147,3 +147,23 @@ def test_bad_command_line_options_are_usage_errors_not_tracebacks(args: list[str
                        text=True, timeout=20)
     assert p.returncode == 2 and says in p.stderr and "Traceback" not in p.stderr, (p.returncode, p.stderr)
     assert p.stdout == ""  # no hello for a simulator that will not run
+
+
+def test_a_stray_print_in_simulator_code_goes_to_stderr_not_into_the_protocol_stream() -> None:
+    # A robot's author debugging with print() (here without a newline, which would glue it to the next event).
+    code = ("import sys, kicnp_sim.skills as sk, kicnp_sim.__main__ as m\n"
+            "orig = sk.Say.start\n"
+            "def start(self, world):\n"
+            "    print('debug: saying', self.args['text'], end='')\n"
+            "    return orig(self, world)\n"
+            "sk.Say.start = start\n"
+            "sys.exit(m.main(['--manual']))\n")
+    lines = "\n".join(json.dumps(r) for r in (
+        {"id": "c1", "type": "command", "robot": "robovie", "action": "say", "args": {"text": "Hello"}},
+        {"id": "s1", "type": "step", "seconds": 1.0})) + "\n"
+    p = subprocess.run([sys.executable, "-c", code], input=lines, capture_output=True, text=True, timeout=20)
+    assert p.returncode == 0, p.stderr
+    events = [json.loads(line) for line in p.stdout.splitlines()]  # every line is protocol JSON
+    assert [e["type"] for e in events if e.get("id") in ("c1", "s1")] == [
+        "ack", "action_started", "utterance", "action_ended", "ack"]
+    assert "debug: saying Hello" in p.stderr
