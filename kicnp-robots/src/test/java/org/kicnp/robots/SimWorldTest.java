@@ -196,6 +196,15 @@ class SimWorldTest {
         }
     }
 
+    @Test
+    void options_withARequestTimeoutThatIsNotPositive_areRefused() {
+        assertThatThrownBy(() -> SimOptions.defaults().withRequestTimeout(Duration.ZERO))
+                .isInstanceOf(IllegalArgumentException.class)
+                .hasMessage("The request timeout must be positive, not 0 ms.");
+        assertThatThrownBy(() -> SimOptions.defaults().withRequestTimeout(Duration.ofSeconds(-1)))
+                .isInstanceOf(IllegalArgumentException.class);
+    }
+
     static void signal(String name, long pid) throws IOException, InterruptedException {
         new ProcessBuilder("kill", "-" + name, Long.toString(pid)).inheritIO().start().waitFor();
     }
