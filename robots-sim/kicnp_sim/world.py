@@ -113,7 +113,7 @@ class World:
                 action.control(self, self.dt)
         for user in self.users.values():
             user.update(self.dt)
-            if user.target is not None and self._walks_into_robot(user):
+            if user.target is not None and self._walk_blocked(user):
                 user.stop()
         self.space.step(self.dt)
         self.steps += 1
@@ -135,11 +135,15 @@ class World:
             self.stream_next = self.steps + self.stream_every
             self.emit("state", **self.state())
 
-    def _walks_into_robot(self, user: User) -> bool:
+    def _walk_blocked(self, user: User) -> bool:
         """Whether this step's walk would bring the user into a robot (a user is kinematic: it would shove the
-        robot however hard it takes, even through a wall), so the user stops in front of it instead."""
+        robot however hard it takes, even through a wall) or into the counter or an obstacle (it would walk through
+        them), so the user stops in front of it instead."""
         vx, vy = user.body.velocity
         nxt = (user.pos[0] + vx * self.dt, user.pos[1] + vy * self.dt)
+        radius = user.shape.radius
+        if self.static_overlap(*nxt, radius) and not self.static_overlap(*user.pos, radius):
+            return True
         for robot in self.robots.values():
             reach = user.shape.radius + robot.radius + USER_STOP_GAP_M
             d_next = dist(nxt, robot.pos)

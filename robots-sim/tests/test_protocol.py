@@ -178,3 +178,16 @@ def test_an_obstacle_over_a_robot_or_a_user_is_refused_instead_of_trapping_it(si
     sim.command("scout", "go_to", "g", x=5.0, y=2.0)
     assert sim.run("g")[0]["type"] == "action_ended"
     assert sim.request("add_obstacle", id="o4", name="box", x=6.2, y=2.0, w=0.5, h=0.5)[0]["type"] == "ack"  # Scout left
+
+
+def test_a_walking_user_stops_at_an_obstacle_or_the_counter_instead_of_walking_through(sim: Sim) -> None:
+    sim.request("add_obstacle", name="crate", x=2.0, y=5.0, w=0.4, h=0.6)
+    sim.request("spawn_user", name="al", x=1.0, y=5.0, heading_deg=0)
+    sim.request("move_user", name="al", x=3.0, y=5.0, speed=1.0)  # straight through the crate
+    sim.request("spawn_user", name="bo", x=6.7, y=2.0, heading_deg=90)
+    sim.request("move_user", name="bo", x=6.7, y=5.0, speed=1.0)  # clear of the counter (x >= 7.2): walks on
+    sim.step(4.0)
+    users = sim.state()["users"]
+    assert users["al"]["walking"] is False
+    assert 1.5 <= users["al"]["x"] <= 1.8 - 0.25 + 0.01 + 0.02, users["al"]  # just short of the crate's west face
+    assert (users["bo"]["x"], users["bo"]["y"]) == (6.7, 5.0)
