@@ -33,7 +33,15 @@ public record SimInstallation(Path simDir, Path python) {
         Path python = simDir.resolve(".venv").resolve("bin").resolve("python");
         // Always: the script returns at once when the venv is up to date, and it alone knows when it is not (a set-up
         // that was interrupted leaves a python without packages; a pull can change requirements.txt).
-        setUpVenv(simDir, setupTimeout);
+        try {
+            setUpVenv(simDir, setupTimeout);
+        } catch (SimulatorException e) {
+            if (!Files.isExecutable(python)) {
+                throw e;
+            }
+            // Offline, say: the venv there may well still run the simulator (if not, its exit says why).
+            LOG.warn("{} Starting the simulator with the venv as it is.", e.getMessage());
+        }
         if (!Files.isExecutable(python)) {
             throw new SimulatorException("robots-sim/setup-venv.sh ran but '" + python + "' is still missing.");
         }

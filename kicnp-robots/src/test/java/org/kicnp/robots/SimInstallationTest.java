@@ -98,6 +98,16 @@ class SimInstallationTest {
     }
 
     @Test
+    void locate_whenTheVenvExistsButCannotBeUpdated_startsWithTheVenvThereIs() throws IOException {
+        Path sim = fakeSim("echo 'pip: no network'; exit 1\n"); // say, offline after a pin changed
+        Path python = Files.createDirectories(sim.resolve(".venv/bin")).resolve("python");
+        Files.writeString(python, "#!/bin/sh\n");
+        Files.setPosixFilePermissions(python, PosixFilePermissions.fromString("rwxr-xr-x"));
+
+        assertThat(SimInstallation.locate(Optional.of(repo)).python()).isEqualTo(python);
+    }
+
+    @Test
     void findRoot_fromOutsideTheRepository_usesTheRepositoryTheLauncherNames(@TempDir Path elsewhere)
             throws IOException {
         fakeSim("exit 0\n");
