@@ -41,7 +41,7 @@ class Action:
         self.id = ""
         self.name = ""
         self.parts: tuple[str, ...] = ()
-        self.timeout_s = DEFAULT_TIMEOUT_S
+        self.timeout_s: Optional[float] = None  # None: default_timeout()
         self.progress_s: Optional[float] = None  # emit action_progress this often (sim s)
         self.start_step = 0
 
@@ -51,6 +51,13 @@ class Action:
     def start(self, world: "World") -> Optional[str]:
         """Check preconditions; a returned string is the failure reason."""
         return None
+
+    def timeout(self) -> float:
+        """The command's timeout_s, or the default."""
+        return self.timeout_s if self.timeout_s is not None else self.default_timeout()
+
+    def default_timeout(self) -> float:
+        return DEFAULT_TIMEOUT_S
 
     def control(self, world: "World", dt: float) -> None:
         """Command the robot for the coming physics step."""

@@ -13,7 +13,6 @@ import math
 from typing import Any, Callable, Optional
 
 from . import PROTOCOL_VERSION, __version__, room
-from .actions import DEFAULT_TIMEOUT_S
 from .specs import Arg
 from .geometry import from_deg
 from .users import FACE_DIM, USER_RADIUS
@@ -40,11 +39,21 @@ def encode(event: dict[str, Any]) -> str:
     return json.dumps(event, separators=(",", ":"), ensure_ascii=False, allow_nan=False)
 
 
+def _finite(value: Any) -> bool:
+    """A JSON number that is finite as a float (JSON also parses NaN, Infinity and integers too big for a float)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return False
+    try:
+        return math.isfinite(value)
+    except OverflowError:
+        return False
+
+
 def check_value(req_id: Any, field: str, value: Any, arg: Arg) -> Any:
     """Validate one value against an Arg spec; returns it (numbers as float)."""
     kind = arg.kind
     if kind == "number":
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        if not _finite(value):
             raise ProtocolError(req_id, field, "must be a finite number")
         value = float(value)
         if arg.lo is not None and value < arg.lo or arg.hi is not None and value > arg.hi:
@@ -198,14 +207,18 @@ class Dispatcher:
             raise ProtocolError(req_id, "action", f"refused: {exc}") from None
         action = spec.factory(robot, args)
         action.id, action.name, action.parts = req_id, spec.name, spec.parts
-        action.timeout_s = f["timeout_s"] or DEFAULT_TIMEOUT_S
+        action.timeout_s = f["timeout_s"]  # None: the action's default, known once it has started
         action.progress_s = f["progress_s"]
         self.ack(req_id)
         self.world.start(robot, action)
 
-    def _clear(self, req_id: Any, x: float, y: float, radius: float) -> None:
-        """Refuse a position where a body of this radius would overlap a wall, the counter or an obstacle."""
+    def _clear(self, req_id: Any, x: float, y: float, radius: float, me: Any = None, users: bool = False) -> None:
+        """Refuse a position where a body of this radius would overlap a wall, the counter or an obstacle; with ``me``
+        (the body being put there, or True for a new user) also a robot, and with ``users`` also a user: the physics
+        would shove it out of the way, through a wall if need be."""
         hit = self.world.static_overlap(x, y, radius)
+        if hit is None and me is not None:
+            hit = self.world.body_overlap(x, y, radius, me, users)
         if hit:
             raise ProtocolError(req_id, "x", f"({x:g}, {y:g}) overlaps {hit}")
 
@@ -216,21 +229,21 @@ class Dispatcher:
             raise ProtocolError(req_id, "x" if f["x"] is None else "y", "must be given together with the other coordinate")
         face = f["face"]
         if face is not None:
-            if len(face) != FACE_DIM or any(isinstance(v, bool) or not isinstance(v, (int, float)) for v in face):
-                raise ProtocolError(req_id, "face", f"must be an array of {FACE_DIM} numbers")
+            if len(face) != FACE_DIM or any(not _finite(v) for v in face):
+                raise ProtocolError(req_id, "face", f"must be an array of {FACE_DIM} finite numbers")
             if not any(face):
                 raise ProtocolError(req_id, "face", "must not be all zeros")
         x, y = (f["x"], f["y"]) if f["x"] is not None else room.DOOR_ENTRY
-        self._clear(req_id, x, y, USER_RADIUS)
+        self._clear(req_id, x, y, USER_RADIUS, me=True)
         heading = from_deg(90.0 if f["heading_deg"] is None else f["heading_deg"])
         user = self.world.spawn_user(f["name"], x, y, heading, face)
         return {"name": user.name, **user.state(), "face": [round(v, 6) for v in user.face]}
 
     def _move_user(self, req_id: Any, f: dict[str, Any]) -> None:
         user = self._user(req_id, f["name"])
+        self._clear(req_id, f["x"], f["y"], USER_RADIUS, me=user.body if f["speed"] is None else None)
         if f["heading_deg"] is not None:
             user.body.angle = from_deg(f["heading_deg"])
-        self._clear(req_id, f["x"], f["y"], USER_RADIUS)
         if f["speed"] is None:
             user.target = None
             user.body.position = (f["x"], f["y"])
@@ -246,7 +259,7 @@ class Dispatcher:
         robot = self._robot(req_id, f["robot"])
         if "base" in robot.actions:
             raise ProtocolError(req_id, "robot", f"{robot.name} is moving ({robot.actions['base'].id!r}); cancel it first")
-        self._clear(req_id, f["x"], f["y"], robot.radius)
+        self._clear(req_id, f["x"], f["y"], robot.radius, me=robot.body, users=True)
         heading = robot.heading if f["heading_deg"] is None else from_deg(f["heading_deg"])
         self.world.place_robot(robot, f["x"], f["y"], heading)
 
@@ -254,6 +267,9 @@ class Dispatcher:
         name = f["name"] or f"obstacle-{len(self.world.obstacles) + 1}"
         if name in self.world.obstacles:
             raise ProtocolError(req_id, "name", f"is already taken by an obstacle: {name!r}")
+        hit = self.world.box_overlap(f["x"], f["y"], f["w"], f["h"])
+        if hit:  # a robot inside a static box could never get out
+            raise ProtocolError(req_id, "x", f"a {f['w']:g} x {f['h']:g} box at ({f['x']:g}, {f['y']:g}) overlaps {hit}")
         self.world.add_obstacle(name, f["x"], f["y"], f["w"], f["h"])
         return {"name": name}
 

@@ -42,6 +42,10 @@ class Timed(Action):
     def duration(self, world: "World") -> float:
         return 1.0
 
+    def default_timeout(self) -> float:
+        """Its known duration never times out by default (a long drive or speech)."""
+        return max(super().default_timeout(), self.dur + 1.0)
+
     def during(self, world: "World") -> Optional[str]:
         """Checked each step while running; a string fails the action."""
         return None
@@ -161,7 +165,9 @@ class ShakeHands(Timed):
 
     def during(self, world: "World") -> Optional[str]:
         gap = user_gap(world, self.robot, self.args["user"])
-        if gap is None or gap > HAND_REACH_M + 0.2:
+        if gap is None:
+            return f"user {self.args['user']!r} left"
+        if gap > HAND_REACH_M + 0.2:
             return f"user {self.args['user']!r} walked away"
         return None
 

@@ -81,7 +81,7 @@ class SetLights(Timed):
         elif isinstance(lights, dict):
             items = []
             for k, v in lights.items():
-                if not (k.isdigit() and 0 <= int(k) < N_LIGHTS):
+                if not (k.isascii() and k.isdigit() and 0 <= int(k) < N_LIGHTS):  # '²' is a digit int() refuses
                     return (f"args.lights.{k}", f"must be a light index 0..{N_LIGHTS - 1}")
                 items.append((int(k), v))
         else:

@@ -96,7 +96,9 @@ class HandOver(Timed):
 
     def during(self, world: "World") -> Optional[str]:
         gap = user_gap(world, self.robot, self.args["user"])
-        if gap is None or gap > HAND_REACH_M + 0.2:
+        if gap is None:
+            return f"user {self.args['user']!r} left"
+        if gap > HAND_REACH_M + 0.2:
             return f"user {self.args['user']!r} walked away"
         return None
 

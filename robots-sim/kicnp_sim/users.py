@@ -20,11 +20,19 @@ USER_RADIUS = 0.25
 
 
 def normalise(v: list[float]) -> list[float]:
-    """v scaled to unit length (ValueError for the zero vector)."""
+    """v scaled to unit length (ValueError for the zero vector).
+
+    Huge or tiny components (whose squares overflow or vanish) are scaled by the largest one first.
+    """
     n = math.sqrt(sum(x * x for x in v))
-    if n == 0.0:
+    if 1e-150 < n < math.inf:
+        return [x / n for x in v]
+    top = max(abs(float(x)) for x in v)
+    if top == 0.0:
         raise ValueError("face vector must not be all zeros")
-    return [x / n for x in v]
+    w = [float(x) / top for x in v]
+    n = math.sqrt(sum(x * x for x in w))
+    return [x / n for x in w]
 
 
 def face_from_seed(seed: int, name: str) -> list[float]:
@@ -59,6 +67,11 @@ class User:
         """Start walking in a straight line to (x, y)."""
         self.target = (x, y)
         self.speed = speed
+
+    def stop(self) -> None:
+        """End the walk where the user stands."""
+        self.target = None
+        self.body.velocity = (0.0, 0.0)
 
     def update(self, dt: float) -> None:
         """Set the kinematic velocity for this step (called before the physics step)."""

@@ -14,12 +14,13 @@ from typing import Any, Optional
 import pymunk
 
 from .actions import Action, Outcome
-from .geometry import r
+from .geometry import dist, r
 from .robots import ROBOT_CLASSES, Robot
 from .room import CAT_STATIC, Cup, add_obstacle, build_room
 from .users import User, face_from_seed, normalise
 
 DEFAULT_DT = 1.0 / 60.0
+USER_STOP_GAP_M = 0.01  # a walking user stops this far from a robot in the way
 START_POSES = {  # name: (x, y, heading in degrees)
     "robovie": (4.0, 3.2, -90.0),
     "pino": (2.5, 3.8, -90.0),
@@ -112,6 +113,8 @@ class World:
                 action.control(self, self.dt)
         for user in self.users.values():
             user.update(self.dt)
+            if user.target is not None and self._walk_blocked(user):
+                user.stop()
         self.space.step(self.dt)
         self.steps += 1
         for cup in self.cups.values():
@@ -124,13 +127,29 @@ class World:
                     continue  # already finished this step
                 outcome = action.check(self)
                 self._progress(action, outcome)
-                if outcome is None and action.elapsed(self) > action.timeout_s:
-                    outcome = ("failed", f"timeout after {action.timeout_s:g} s")
+                if outcome is None and action.elapsed(self) > action.timeout():
+                    outcome = ("failed", f"timeout after {action.timeout():g} s")
                 if outcome is not None:
                     self.finish(action, outcome)
         if self.stream_every and self.steps >= self.stream_next:
             self.stream_next = self.steps + self.stream_every
             self.emit("state", **self.state())
+
+    def _walk_blocked(self, user: User) -> bool:
+        """Whether this step's walk would bring the user into a robot (a user is kinematic: it would shove the
+        robot however hard it takes, even through a wall) or into the counter or an obstacle (it would walk through
+        them), so the user stops in front of it instead."""
+        vx, vy = user.body.velocity
+        nxt = (user.pos[0] + vx * self.dt, user.pos[1] + vy * self.dt)
+        radius = user.shape.radius
+        if self.static_overlap(*nxt, radius) and not self.static_overlap(*user.pos, radius):
+            return True
+        for robot in self.robots.values():
+            reach = user.shape.radius + robot.radius + USER_STOP_GAP_M
+            d_next = dist(nxt, robot.pos)
+            if d_next < reach and d_next < dist(user.pos, robot.pos):
+                return True
+        return False
 
     def _progress(self, action: Action, outcome: Optional[Outcome]) -> None:
         if outcome is None and action.progress_s:
@@ -176,6 +195,25 @@ class World:
         for info in self.space.point_query((x, y), radius, pymunk.ShapeFilter(mask=CAT_STATIC)):
             if info.distance < radius - 1e-9:
                 return getattr(info.shape, "label", "something")
+        return None
+
+    def body_overlap(self, x: float, y: float, radius: float, me: Any, users: bool) -> Optional[str]:
+        """The label of a robot (or, with ``users``, a user) other than the body ``me`` that a circle here would overlap."""
+        bodies = [(rb.body, rb.shape) for rb in self.robots.values()]
+        if users:
+            bodies += [(u.body, u.shape) for u in self.users.values()]
+        for body, shape in bodies:
+            if body is not me and dist((x, y), body.position) < radius + shape.radius - 1e-9:
+                return shape.label
+        return None
+
+    def box_overlap(self, x: float, y: float, w: float, h: float) -> Optional[str]:
+        """The label of a robot or a user that a box centred here would overlap."""
+        for shape in [rb.shape for rb in self.robots.values()] + [u.shape for u in self.users.values()]:
+            cx, cy = shape.body.position
+            nearest = (min(max(cx, x - w / 2), x + w / 2), min(max(cy, y - h / 2), y + h / 2))
+            if dist(nearest, (cx, cy)) < shape.radius - 1e-9:
+                return shape.label
         return None
 
     def add_obstacle(self, name: str, x: float, y: float, w: float, h: float) -> None:

@@ -44,3 +44,9 @@ def test_aibo_lights(sim: Sim) -> None:
     assert len(lights) == 19 and lights[0] == "red" and lights[18] == "#00ff00" and lights[5] == "off"
     bad = sim.command("aibo", "set_lights", "x2", lights=["red"] * 18)
     assert bad[0]["type"] == "error" and bad[0]["field"] == "args.lights"
+
+
+def test_a_light_index_that_is_a_digit_but_not_a_number_is_refused_as_an_index(sim: Sim) -> None:
+    evs = sim.command("aibo", "set_lights", "l1", lights={"²": "red"})  # str.isdigit() is true for '²'
+    assert [e["type"] for e in evs] == ["error"] and evs[0]["field"] == "args.lights.²", evs
+    assert "internal error" not in evs[0]["message"]

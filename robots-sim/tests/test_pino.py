@@ -45,3 +45,12 @@ def test_pino_stumbles_when_walking_into_an_obstacle(sim: Sim) -> None:
     assert end["type"] == "action_ended" and end["result"]["duration_s"] == 3.0
     sim.command("pino", "go_to", "g3", x=1.5, y=3.8)
     assert sim.run("g3", max_s=30)[0]["type"] == "action_ended"
+
+
+def test_a_handshake_with_a_user_who_leaves_the_room_fails_saying_the_user_left(sim: Sim) -> None:
+    sim.request("spawn_user", name="alice", x=2.5, y=3.1, heading_deg=90)  # 0.27 m from PINO's body
+    sim.command("pino", "shake_hands", "k1", user="alice")
+    sim.step(0.5)
+    sim.request("remove_user", name="alice")
+    end, _ = sim.run("k1")
+    assert end["type"] == "action_failed" and end["reason"] == "user 'alice' left", end

@@ -113,3 +113,81 @@ def test_positions_inside_walls_or_counter_are_refused(sim: Sim) -> None:
     evs = sim.request("spawn_user", id="v", name="ghost", x=2.0, y=5.0)
     assert evs[0]["type"] == "error" and "crate" in evs[0]["message"]
     assert sim.request("spawn_user", id="w", name="ghost", x=2.0, y=4.3)[0]["type"] == "ack"
+
+
+def test_a_number_too_big_for_a_float_is_refused_as_not_finite_not_an_internal_error(sim: Sim) -> None:
+    huge = "1" + "0" * 400  # valid JSON; Python parses it as an int that no float can hold
+    evs = sim.send('{"id":"h","type":"command","robot":"scout","action":"go_to","args":{"x":%s,"y":1}}' % huge)
+    assert [e["type"] for e in evs] == ["error"] and evs[0]["field"] == "args.x", evs
+    assert evs[0]["message"] == "request 'h': field 'args.x' must be a finite number"
+    evs = sim.send('{"id":"s","type":"step","seconds":-%s}' % huge)
+    assert evs[0]["field"] == "seconds" and "internal error" not in evs[0]["message"], evs
+
+
+def test_a_walking_user_stops_at_a_robot_instead_of_pushing_it_through_the_wall(sim: Sim) -> None:
+    sim.request("place_robot", robot="robovie", x=0.5, y=3.0)
+    sim.request("place_robot", robot="aibo", x=0.5, y=1.0)
+    sim.request("spawn_user", name="alice", x=1.5, y=3.0)
+    sim.request("spawn_user", name="bob", x=1.5, y=1.0)
+    sim.request("move_user", name="alice", x=0.31, y=3.0, speed=1.0)  # through Robovie, up to the wall
+    sim.request("move_user", name="bob", x=0.31, y=1.0, speed=1.0)  # through AIBO
+    sim.step(4.0)
+    st = sim.state()
+    for robot, user in (("robovie", "alice"), ("aibo", "bob")):
+        rb, u = st["robots"][robot], st["users"][user]
+        radius = json.loads(sim.lines[0])["robots"][robot]["radius_m"]
+        assert rb["x"] >= radius, (robot, rb)  # still inside the room
+        assert math.hypot(rb["x"] - u["x"], rb["y"] - u["y"]) >= radius + 0.25 - 0.02, (robot, rb, u)  # no overlap
+        assert u["walking"] is False  # the walk ended in front of the robot
+
+
+def test_a_teleport_onto_a_robot_is_refused_instead_of_shoving_the_robot(sim: Sim) -> None:
+    start = sim.state()["robots"]
+    evs = sim.request("place_robot", id="p", robot="aibo", x=4.0, y=3.2)  # onto Robovie
+    assert evs[0]["type"] == "error" and evs[0]["field"] == "x" and "robot:robovie" in evs[0]["message"], evs
+    evs = sim.request("spawn_user", id="u", name="alice", x=6.2, y=2.0)  # onto Scout
+    assert evs[0]["type"] == "error" and evs[0]["field"] == "x" and "robot:scout" in evs[0]["message"], evs
+    sim.request("spawn_user", name="bob", x=5.0, y=1.0)
+    evs = sim.request("move_user", id="m", name="bob", x=2.5, y=2.0)  # a teleport onto AIBO
+    assert evs[0]["type"] == "error" and "robot:aibo" in evs[0]["message"], evs
+    evs = sim.request("place_robot", id="q", robot="pino", x=5.0, y=1.2)  # onto bob
+    assert evs[0]["type"] == "error" and "user:bob" in evs[0]["message"], evs
+    sim.step(1.0)
+    now = sim.state()["robots"]
+    assert {n: (rb["x"], rb["y"]) for n, rb in now.items()} == {n: (rb["x"], rb["y"]) for n, rb in start.items()}
+    assert sim.request("place_robot", robot="robovie", x=4.05, y=3.2)[0]["type"] == "ack"  # moving over itself is fine
+    assert sim.request("move_user", name="bob", x=5.0, y=1.1)[0]["type"] == "ack"
+
+
+def test_a_refused_move_user_leaves_the_user_as_it_was(sim: Sim) -> None:
+    sim.request("spawn_user", name="bob", x=5.0, y=1.0, heading_deg=90)
+    evs = sim.request("move_user", id="m", name="bob", x=7.5, y=4.0, heading_deg=180)  # into the counter
+    assert evs[0]["type"] == "error" and "counter" in evs[0]["message"], evs
+    assert sim.state()["users"]["bob"]["heading_deg"] == 90.0
+
+
+def test_an_obstacle_over_a_robot_or_a_user_is_refused_instead_of_trapping_it(sim: Sim) -> None:
+    evs = sim.request("add_obstacle", id="o1", name="box", x=6.2, y=2.0, w=1.0, h=1.0)  # around Scout
+    assert evs[0]["type"] == "error" and evs[0]["field"] == "x" and "robot:scout" in evs[0]["message"], evs
+    evs = sim.request("add_obstacle", id="o2", name="box", x=6.45, y=2.0, w=0.2, h=0.2)  # 5 cm into Scout
+    assert evs[0]["type"] == "error" and "robot:scout" in evs[0]["message"], evs
+    sim.request("spawn_user", name="al", x=2.0, y=5.0)
+    evs = sim.request("add_obstacle", id="o3", name="box", x=2.0, y=5.3, w=1.0, h=0.2)
+    assert evs[0]["type"] == "error" and "user:al" in evs[0]["message"], evs
+    assert sim.state()["obstacles"] == {}
+    sim.command("scout", "go_to", "g", x=5.0, y=2.0)
+    assert sim.run("g")[0]["type"] == "action_ended"
+    assert sim.request("add_obstacle", id="o4", name="box", x=6.2, y=2.0, w=0.5, h=0.5)[0]["type"] == "ack"  # Scout left
+
+
+def test_a_walking_user_stops_at_an_obstacle_or_the_counter_instead_of_walking_through(sim: Sim) -> None:
+    sim.request("add_obstacle", name="crate", x=2.0, y=5.0, w=0.4, h=0.6)
+    sim.request("spawn_user", name="al", x=1.0, y=5.0, heading_deg=0)
+    sim.request("move_user", name="al", x=3.0, y=5.0, speed=1.0)  # straight through the crate
+    sim.request("spawn_user", name="bo", x=6.7, y=2.0, heading_deg=90)
+    sim.request("move_user", name="bo", x=6.7, y=5.0, speed=1.0)  # clear of the counter (x >= 7.2): walks on
+    sim.step(4.0)
+    users = sim.state()["users"]
+    assert users["al"]["walking"] is False
+    assert 1.5 <= users["al"]["x"] <= 1.8 - 0.25 + 0.01 + 0.02, users["al"]  # just short of the crate's west face
+    assert (users["bo"]["x"], users["bo"]["y"]) == (6.7, 5.0)

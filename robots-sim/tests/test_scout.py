@@ -120,3 +120,25 @@ def test_scout_put_down_with_empty_gripper_ends_at_once(sim: Sim) -> None:
     sim.command("scout", "put_down", "b2")
     end, _ = sim.run("b2")
     assert end["type"] == "action_ended" and end["result"] == {"cup": None, "kind": None, "duration_s": 0.0}
+
+
+def test_a_drive_longer_than_the_default_timeout_runs_its_whole_duration(sim: Sim) -> None:
+    sim.command("scout", "drive", "d1", left_mps=0.0, right_mps=0.0, duration_s=150.0)  # no timeout_s given
+    end, _ = sim.run("d1", max_s=160)
+    assert end["type"] == "action_ended" and abs(end["t"] - 150.0) < 0.05, end
+    sim.command("scout", "drive", "d2", timeout_s=5.0, left_mps=0.0, right_mps=0.0, duration_s=150.0)
+    end, _ = sim.run("d2", max_s=10)
+    assert end["type"] == "action_failed" and end["reason"] == "timeout after 5 s", end  # an explicit timeout holds
+
+
+def test_scout_that_bumped_into_a_wall_can_turn_away_and_leave(sim: Sim) -> None:
+    sim.request("place_robot", robot="scout", x=6.2, y=5.5, heading_deg=90)
+    sim.command("scout", "drive", "d", left_mps=0.3, right_mps=0.3, duration_s=3)
+    end, _ = sim.run("d")
+    assert end["reason"] == "blocked: bumper 0"  # against the north wall
+    sim.command("scout", "go_to", "g", x=6.2, y=3.0)  # turning about sweeps the wall's contact past bumpers 1 and 2
+    end, seen = sim.run("g", max_s=20)
+    assert end["type"] == "action_ended", (end, only(seen, "sensor", sensor="bumper"))
+    sim.request("add_obstacle", name="box", x=6.2, y=2.0, w=1.0, h=0.2)
+    sim.command("scout", "go_to", "g2", x=6.2, y=1.0)  # a new contact still stops it
+    assert sim.run("g2", max_s=20)[0]["reason"] == "blocked: bumper 0"

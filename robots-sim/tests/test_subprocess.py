@@ -117,3 +117,53 @@ def test_as_fast_as_possible_and_eof(procs: Any) -> None:
     st = pr.until(lambda e: e["type"] == "state")[-1]
     assert st["id"] == "q"
     assert pr.close_and_wait() == 0
+
+
+def test_non_finite_or_extreme_face_numbers_are_refused_and_the_simulator_keeps_going(procs: Any) -> None:
+    pr = procs("--manual")
+    pr.next()
+    zeros = ",0" * 14
+    for rid, first in (("n", "NaN"), ("i", "Infinity"), ("m", "-Infinity")):
+        pr.send('{"id":"%s","type":"spawn_user","name":"u%s","face":[%s,1%s]}' % (rid, rid, first, zeros))
+        err = pr.next()
+        assert err["type"] == "error" and err["id"] == rid and err["field"] == "face", err
+    assert pr.p.poll() is None  # still alive
+    for rid, first in (("big", "1e308,1e308"), ("tiny", "1e-320,0")):  # scaled, not overflowed or flushed to zero
+        pr.send('{"id":"%s","type":"spawn_user","name":"u%s","face":[%s%s]}' % (rid, rid, first, zeros))
+        ack = pr.next()
+        assert ack["type"] == "ack" and ack["id"] == rid, ack
+        assert abs(sum(v * v for v in ack["result"]["face"]) - 1.0) < 1e-5, ack
+    pr.send({"id": "q", "type": "query"})
+    assert pr.until(lambda e: e["type"] == "state")[-1]["id"] == "q"
+    assert pr.close_and_wait() == 0
+
+
+@pytest.mark.parametrize("args, says", [
+    (["--time-scale", "nan"], "--time-scale must be within [0, 1000]"),
+    (["--log-level", "verbose"], "--log-level"),
+])
+def test_bad_command_line_options_are_usage_errors_not_tracebacks(args: list[str], says: str) -> None:
+    p = subprocess.run([sys.executable, "-m", "kicnp_sim", *args], stdin=subprocess.DEVNULL, capture_output=True,
+                       text=True, timeout=20)
+    assert p.returncode == 2 and says in p.stderr and "Traceback" not in p.stderr, (p.returncode, p.stderr)
+    assert p.stdout == ""  # no hello for a simulator that will not run
+
+
+def test_a_stray_print_in_simulator_code_goes_to_stderr_not_into_the_protocol_stream() -> None:
+    # A robot's author debugging with print() (here without a newline, which would glue it to the next event).
+    code = ("import sys, kicnp_sim.skills as sk, kicnp_sim.__main__ as m\n"
+            "orig = sk.Say.start\n"
+            "def start(self, world):\n"
+            "    print('debug: saying', self.args['text'], end='')\n"
+            "    return orig(self, world)\n"
+            "sk.Say.start = start\n"
+            "sys.exit(m.main(['--manual']))\n")
+    lines = "\n".join(json.dumps(r) for r in (
+        {"id": "c1", "type": "command", "robot": "robovie", "action": "say", "args": {"text": "Hello"}},
+        {"id": "s1", "type": "step", "seconds": 1.0})) + "\n"
+    p = subprocess.run([sys.executable, "-c", code], input=lines, capture_output=True, text=True, timeout=20)
+    assert p.returncode == 0, p.stderr
+    events = [json.loads(line) for line in p.stdout.splitlines()]  # every line is protocol JSON
+    assert [e["type"] for e in events if e.get("id") in ("c1", "s1")] == [
+        "ack", "action_started", "utterance", "action_ended", "ack"]
+    assert "debug: saying Hello" in p.stderr

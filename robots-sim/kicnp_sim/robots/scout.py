@@ -44,6 +44,9 @@ class Scout(Robot):
         self.wheel_cmd: Optional[tuple[float, float]] = None
         self.wheels = (0.0, 0.0)
         self.pressed: dict[int, int] = {}  # bumper -> last step it was in contact
+        self.touched: set[str] = set()  # what Scout touched at the last step
+        self.base_seen: Any = None  # the base action when it was first sensed...
+        self.exempt: set[str] = set()  # ...and what Scout touched then: it may move off (or turn along) those
 
     def drive(self) -> tuple[float, float]:
         if self.wheel_cmd is not None:
@@ -63,14 +66,18 @@ class Scout(Robot):
         self.wheels = (0.0, 0.0)
 
     def sense(self, world: "World") -> None:
-        hits: dict[int, str] = {}
+        hits: dict[int, list[str]] = {}
         for label, angle in self.contacts():
-            hits.setdefault(sensors.bumper_sector(angle), label)
+            hits.setdefault(sensors.bumper_sector(angle), []).append(label)
+        base = self.actions.get("base")
+        if base is not self.base_seen:
+            self.base_seen, self.exempt = base, set(self.touched)
+        self.touched = {label for labels in hits.values() for label in labels}
         for n in sorted(hits):
             if n not in self.pressed:
-                world.sensor(self.name, "bumper", {"bumper": n, "pressed": True, "contact": hits[n]})
+                world.sensor(self.name, "bumper", {"bumper": n, "pressed": True, "contact": hits[n][0]})
                 base = self.actions.get("base")
-                if base is not None:
+                if base is not None and any(label not in self.exempt for label in hits[n]):
                     self.halt()
                     world.finish(base, ("failed", f"blocked: bumper {n}"))
             self.pressed[n] = world.steps

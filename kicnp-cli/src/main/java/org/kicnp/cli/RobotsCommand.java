@@ -30,6 +30,7 @@ import java.util.Properties;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 
 /**
  * {@code kicnp robots}: starts the simulated room (the Python simulator) and the agents of Robovie, PINO, Scout and
@@ -41,6 +42,7 @@ import java.util.concurrent.TimeUnit;
                 + "against a running server.")
 public final class RobotsCommand implements Callable<Integer> {
     private static final List<String> ROBOTS = List.of("robovie", "pino", "scout", "aibo");
+    private static final Duration STOP_WAIT = Duration.ofSeconds(15);
 
     // The port serve listens on by default, so that "serve KB" then "robots" finds it.
     @Option(names = "--gateway", defaultValue = "127.0.0.1:" + PlatformConfig.DEFAULT_GATEWAY_PORT,
@@ -81,6 +83,14 @@ public final class RobotsCommand implements Callable<Integer> {
             err.println(e.getMessage());
             return 2;
         }
+        if (!(timeScale >= 0 && timeScale <= 1000)) {
+            err.println("--time-scale " + timeScale + " is outside 0..1000.");
+            return 2;
+        }
+        if (duration != null && !(duration > 0 && duration < Double.POSITIVE_INFINITY)) {
+            err.println("--for " + duration + " is not a positive number of seconds.");
+            return 2;
+        }
         Properties tokenFile = new Properties();
         try (InputStream in = Files.newInputStream(tokens)) {
             tokenFile.load(in);
@@ -99,47 +109,69 @@ public final class RobotsCommand implements Callable<Integer> {
             options = options.withRepoRoot(repo);
         }
         CountDownLatch stop = new CountDownLatch(1);
+        CountDownLatch stopped = new CountDownLatch(1);
         List<RobotAgent> agents = new ArrayList<>();
+        AtomicBoolean stopping = new AtomicBoolean();
         try (SimWorld world = SimWorld.start(options)) {
             world.addListener(e -> {
-                if (e instanceof SimEvent.Exited x) {
+                if (e instanceof SimEvent.Exited x && !stopping.get()) {
                     err.println("The simulator is gone: " + x.reason() + ".");
                     stop.countDown();
                 }
             });
             out.printf("Simulator started (pid %d, seed %d, time scale %s).%n", world.pid(), seed, timeScale);
-            for (String robot : ROBOTS) {
-                AgentOptions ao = AgentOptions.of(address.host(), address.port(), robot, AgentKind.ROBOT,
-                        tokenFile.getProperty(robot + ".token").strip());
-                RobotAgent agent = switch (robot) {
-                    case "robovie" -> new RobovieAgent(ao, world);
-                    case "pino" -> new PinoAgent(ao, world);
-                    case "scout" -> new ScoutAgent(ao, world);
-                    default -> new AiboAgent(ao, world);
-                };
-                agents.add(agent);
-                agent.startAndAwait(Duration.ofSeconds(15));
-                out.printf("Agent '%s' registered with %s (%d capability frames).%n", robot, gateway,
-                        agent.driver().capabilities().size());
-            }
-            out.flush();
-            Thread hook = new Thread(stop::countDown, "kicnp-robots-stop");
-            Runtime.getRuntime().addShutdownHook(hook);
-            boolean died = duration == null ? awaitForever(stop) : stop.await((long) (duration * 1000), TimeUnit.MILLISECONDS);
             try {
-                Runtime.getRuntime().removeShutdownHook(hook);
-            } catch (IllegalStateException e) {
-                // Shutting down already: the hook is running.
+                return runAgents(world, address, tokenFile, agents, stop, stopped, out);
+            } finally {
+                // The agents go first, so that closing the simulator is not reported to the server as its death.
+                stopping.set(true);
+                agents.reversed().forEach(RobotAgent::close);
             }
-            return died && !world.alive() ? 1 : 0;
         } catch (SimulatorException | AgentException e) {
             err.println(e.getMessage());
             return 1;
         } finally {
-            agents.reversed().forEach(RobotAgent::close);
             out.println("Robots stopped.");
             out.flush();
+            stopped.countDown();
         }
+    }
+
+    private int runAgents(SimWorld world, GatewayAddress address, Properties tokenFile, List<RobotAgent> agents,
+                          CountDownLatch stop, CountDownLatch stopped, PrintWriter out) throws InterruptedException {
+        for (String robot : ROBOTS) {
+            AgentOptions ao = AgentOptions.of(address.host(), address.port(), robot, AgentKind.ROBOT,
+                    tokenFile.getProperty(robot + ".token").strip());
+            RobotAgent agent = switch (robot) {
+                case "robovie" -> new RobovieAgent(ao, world);
+                case "pino" -> new PinoAgent(ao, world);
+                case "scout" -> new ScoutAgent(ao, world);
+                default -> new AiboAgent(ao, world);
+            };
+            agents.add(agent);
+            agent.startAndAwait(Duration.ofSeconds(15));
+            out.printf("Agent '%s' registered with %s (%d capability frames).%n", robot, gateway,
+                    agent.driver().capabilities().size());
+        }
+        out.flush();
+        // On SIGTERM or Ctrl-C the JVM halts once its hooks return: this one waits until the agents and the simulator
+        // have been stopped, so the agents leave the server cleanly and the simulator is shut down, not cut off.
+        Thread hook = new Thread(() -> {
+            stop.countDown();
+            try {
+                stopped.await(STOP_WAIT.toMillis(), TimeUnit.MILLISECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "kicnp-robots-stop");
+        Runtime.getRuntime().addShutdownHook(hook);
+        boolean died = duration == null ? awaitForever(stop) : stop.await((long) (duration * 1000), TimeUnit.MILLISECONDS);
+        try {
+            Runtime.getRuntime().removeShutdownHook(hook);
+        } catch (IllegalStateException e) {
+            // Shutting down already: the hook is running.
+        }
+        return died && !world.alive() ? 1 : 0;
     }
 
     private static boolean awaitForever(CountDownLatch stop) throws InterruptedException {

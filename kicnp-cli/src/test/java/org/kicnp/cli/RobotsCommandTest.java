@@ -59,6 +59,46 @@ class RobotsCommandTest {
             assertThat(exit.get(30, TimeUnit.SECONDS)).isZero();
         }
         assertThat(out.toString()).contains("Agent 'scout' registered with 127.0.0.1:").contains("Robots stopped.");
+        assertThat(err.toString()).doesNotContain("The simulator is gone");
+        assertThat(kb.contains("signal_robovie_simulator")).as("a 'simulator exited' signal on a normal stop").isFalse();
+    }
+
+    @Test
+    void robots_stoppedBySigterm_stopsTheAgentsAndTheSimulatorCleanly(@TempDir Path dir) throws Exception {
+        AgentDirectory agents = AgentDirectory.empty();
+        List<String> lines = new ArrayList<>();
+        for (String robot : List.of("robovie", "pino", "scout", "aibo")) {
+            agents = agents.with(robot, robot + "-secret", AgentKind.ROBOT);
+            lines.add(robot + ".token = " + robot + "-secret");
+        }
+        Path tokens = Files.write(dir.resolve("agents.properties"), lines);
+        Path output = dir.resolve("robots.out");
+        KnowledgeBase kb = KnowledgeBase.create();
+        try (GatewayServer server = GatewayServer.start(GatewayConfig.defaults().withPort(0), agents, kb,
+                FeedbackListener.NONE)) {
+            String java = ProcessHandle.current().info().command().orElse("java");
+            Process robots = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"),
+                    Main.class.getName(), "robots", "--gateway", "127.0.0.1:" + server.port(),
+                    "--tokens", tokens.toString()).redirectErrorStream(true).redirectOutput(output.toFile()).start();
+            try {
+                long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(40);
+                while (server.registeredAgents().size() < 4 && System.nanoTime() < deadline) {
+                    Thread.sleep(20);
+                }
+                assertThat(server.registeredAgents()).hasSize(4);
+                List<ProcessHandle> simulator = robots.descendants().toList();
+                assertThat(simulator).isNotEmpty();
+
+                robots.destroy(); // SIGTERM, as from kill or a service manager
+
+                assertThat(robots.waitFor(20, TimeUnit.SECONDS)).isTrue();
+                assertThat(Files.readString(output)).contains("Robots stopped.").doesNotContain("The simulator is gone");
+                assertThat(simulator).noneMatch(ProcessHandle::isAlive);
+            } finally {
+                robots.descendants().forEach(ProcessHandle::destroyForcibly);
+                robots.destroyForcibly();
+            }
+        }
     }
 
     @Test
@@ -67,6 +107,21 @@ class RobotsCommandTest {
 
         assertThat(run("robots", "--gateway", "localhost:99999", "--tokens", tokens.toString())).isEqualTo(2);
         assertThat(err.toString()).contains("--gateway 'localhost:99999' is not HOST:PORT with a port from 1 to 65535.");
+    }
+
+    @Test
+    void robots_withATimeScaleOrDurationOutOfRange_exitsWith2BeforeStartingAnything(@TempDir Path dir) throws Exception {
+        Path tokens = Files.write(dir.resolve("agents.properties"),
+                List.of("robovie.token = a", "pino.token = b", "scout.token = c", "aibo.token = d"));
+
+        assertThat(run("robots", "--tokens", tokens.toString(), "--time-scale", "5000")).isEqualTo(2);
+        assertThat(run("robots", "--tokens", tokens.toString(), "--for", "-3")).isEqualTo(2);
+        assertThat(run("robots", "--tokens", tokens.toString(), "--for", "NaN")).isEqualTo(2);
+        assertThat(err.toString())
+                .contains("--time-scale 5000.0 is outside 0..1000.")
+                .contains("--for -3.0 is not a positive number of seconds.")
+                .contains("--for NaN is not a positive number of seconds.");
+        assertThat(out.toString()).doesNotContain("Simulator started");
     }
 
     @Test

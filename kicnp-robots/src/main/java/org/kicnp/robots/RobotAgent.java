@@ -22,6 +22,8 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
 import java.util.function.Function;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 /**
  * The agent of one simulated robot (section 3.3): registers the robot's capability frames, hands each platform
@@ -31,6 +33,10 @@ import java.util.function.Function;
  */
 public abstract sealed class RobotAgent extends AgentBase permits RobovieAgent, PinoAgent, ScoutAgent, AiboAgent {
     private static final Logger LOG = LoggerFactory.getLogger(RobotAgent.class);
+
+    private static final Pattern SIM_REQUEST = Pattern.compile("^request 'j\\d+': ");
+    private static final Pattern SIM_ID = Pattern.compile("'(j\\d+)'");
+    private static final String REFUSED = "field 'action' refused: ";
 
     private final RobotDriver driver;
     /** How long a command waits for the robot to stop what it was asked to stop before it starts anyway. */
@@ -128,14 +134,28 @@ public abstract sealed class RobotAgent extends AgentBase permits RobovieAgent, 
                     handle.cancelled(handle.cancelReason().orElse(f.reason()));
                 }
                 case Feedback.Failed f -> {
-                    LOG.warn("Agent '{}': command '{}' ({}) failed: {}", name(), command.id(), command.action(), f.reason());
-                    handle.failed(f.reason());
+                    String reason = inPlatformTerms(f.reason());
+                    LOG.warn("Agent '{}': command '{}' ({}) failed: {}", name(), command.id(), command.action(), reason);
+                    handle.failed(reason);
                 }
             }
         } catch (AgentException e) {
             LOG.warn("Agent '{}' could not report {} of command '{}': {}", name(),
                     feedback.getClass().getSimpleName().toLowerCase(java.util.Locale.ROOT), command.id(), e.getMessage());
         }
+    }
+
+    /**
+     * A simulator refusal as the platform's user reads it: without the simulator's own request id, and with the
+     * simulator's id of a running action replaced by the platform's id of its command ("busy with go_to 'a12'").
+     */
+    private String inPlatformTerms(String reason) {
+        String r = SIM_REQUEST.matcher(reason).replaceFirst("");
+        if (r.startsWith(REFUSED)) {
+            r = r.substring(REFUSED.length() - "refused: ".length());
+        }
+        return SIM_ID.matcher(r).replaceAll(m -> Matcher.quoteReplacement(
+                "'" + commandOf(m.group(1)).orElse(m.group(1)) + "'"));
     }
 
     private void signal(SensorSignal signal) {

@@ -155,7 +155,10 @@ public final class RobotDriver implements AutoCloseable {
 
     private static Feedback toFeedback(ActionUpdate update, ProgressMeter meter) {
         return switch (update) {
-            case ActionUpdate.Started s -> new Feedback.Started();
+            case ActionUpdate.Started s -> {
+                meter.started(s.args());
+                yield new Feedback.Started();
+            }
             case ActionUpdate.Progress p -> new Feedback.Progress(meter.fraction(p), note(p.body()));
             case ActionUpdate.Ended e -> new Feedback.Ended(e.result().toString());
             case ActionUpdate.Failed f -> new Feedback.Failed(f.reason());
@@ -168,23 +171,34 @@ public final class RobotDriver implements AutoCloseable {
         return copy.toString();
     }
 
-    /** Turns the simulator's progress (a fraction, or a remaining distance or gap) into a fraction done. */
+    /**
+     * Turns the simulator's progress (a fraction, or a remaining distance or gap) into a fraction done. A gap
+     * ({@code approach_user}) closes down to the asked {@code distance_m}, not to zero.
+     */
     private static final class ProgressMeter {
         private double first = Double.NaN;
+        private double goal;
+
+        synchronized void started(JsonNode args) {
+            JsonNode d = args.get("distance_m");
+            goal = d != null && d.isNumber() ? d.asDouble() : 0;
+        }
 
         synchronized double fraction(ActionUpdate.Progress p) {
             if (p.fraction().isPresent()) {
                 return clamp(p.fraction().get());
             }
-            JsonNode left = p.body().has("remaining_m") ? p.body().get("remaining_m") : p.body().get("gap_m");
+            boolean remaining = p.body().has("remaining_m");
+            JsonNode left = remaining ? p.body().get("remaining_m") : p.body().get("gap_m");
             if (left == null || !left.isNumber()) {
                 return 0;
             }
+            double toGo = left.asDouble() - (remaining ? 0 : goal);
             if (Double.isNaN(first)) {
-                first = left.asDouble() + 1e-9;
+                first = toGo + 1e-9;
                 return 0;
             }
-            return clamp(1 - left.asDouble() / first);
+            return clamp(1 - toGo / first);
         }
 
         private static double clamp(double v) {

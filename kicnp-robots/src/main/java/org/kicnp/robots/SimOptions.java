@@ -17,6 +17,10 @@ public record SimOptions(long seed, double timeScale, boolean manual, Optional<P
         }
         Objects.requireNonNull(repoRoot, "repoRoot");
         Objects.requireNonNull(requestTimeout, "requestTimeout");
+        if (requestTimeout.isZero() || requestTimeout.isNegative()) {
+            throw new IllegalArgumentException("The request timeout must be positive, not " + requestTimeout.toMillis()
+                    + " ms.");
+        }
     }
 
     /** Seed 42, ten times real time, repository found from the working directory, 10 s per request. */

@@ -16,13 +16,16 @@ import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
+import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicLong;
@@ -34,10 +37,13 @@ import java.util.function.Consumer;
  * or its death); commands are followed as {@link SimAction}s; every event goes to the listeners in stream order on
  * one event thread. When the process dies (exit, kill, broken pipe) every request and action in flight fails with a
  * reason such as {@code simulator exited with code 137}, listeners get {@link SimEvent.Exited}, and every later
- * call throws {@link SimulatorExitedException} at once.
+ * call throws {@link SimulatorExitedException} at once. In real time a simulator that answers no request within the
+ * request timeout (pinged while actions run and it is quiet) is hung: it is stopped and treated as dead.
  */
 public final class SimWorld implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(SimWorld.class);
+    /** The version of the simulator protocol this class speaks (robots-sim/PROTOCOL.md). */
+    public static final String PROTOCOL = "kicnp-sim/1";
 
     private final SimOptions options;
     private final Process process;
@@ -52,9 +58,17 @@ public final class SimWorld implements AutoCloseable {
     private final CompletableFuture<SimEvent.Hello> hello = new CompletableFuture<>();
     private final SimStderr stderr = new SimStderr();
     private final Object deathLock = new Object();
+    /** Lines for the simulator's stdin, written by one thread, so that a simulator that reads nothing blocks no caller. */
+    private final BlockingQueue<String> outbox = new LinkedBlockingQueue<>();
     private volatile String deathReason;
     private volatile boolean closing;
+    /** When the simulator last wrote a line; the watchdog pings it when it has been quiet while actions run. */
+    private volatile long lastHeard = System.nanoTime();
+    private final ScheduledExecutorService watchdog =
+            Executors.newSingleThreadScheduledExecutor(Thread.ofPlatform().daemon().name("sim-watchdog").factory());
+    private CompletableFuture<JsonNode> ping = CompletableFuture.completedFuture(null);
     private Thread reader;
+    private Thread writer;
 
     private SimWorld(SimOptions options, Process process) {
         this.options = options;
@@ -86,6 +100,12 @@ public final class SimWorld implements AutoCloseable {
             LOG.info("Simulator {} started (pid {}, seed {}, mode {})", h.protocol(), process.pid(), h.seed(), h.mode());
             return world;
         } catch (ExecutionException e) {
+            if (!(e.getCause() instanceof SimulatorExitedException)) { // alive, but not speaking the protocol
+                world.process.descendants().forEach(ProcessHandle::destroyForcibly);
+                world.process.destroyForcibly();
+                world.close();
+                throw new SimulatorException("The simulator did not start: " + e.getCause().getMessage());
+            }
             world.close();
             throw new SimulatorExitedException("The simulator did not start: " + e.getCause().getMessage());
         } catch (TimeoutException e) {
@@ -102,6 +122,15 @@ public final class SimWorld implements AutoCloseable {
     private void startThreads() {
         stderr.follow(process.getErrorStream()); // first: a quick death's reason quotes stderr
         reader = Thread.ofPlatform().daemon().name("sim-stdout").start(this::readEvents);
+        writer = Thread.ofPlatform().daemon().name("sim-stdin").start(this::writeRequests);
+        if (!options.manual()) { // in manual mode nothing runs between steps, and a long step answers late
+            long period = Math.max(50, options.requestTimeout().toMillis() / 4);
+            try {
+                watchdog.scheduleWithFixedDelay(this::watch, period, period, TimeUnit.MILLISECONDS);
+            } catch (RejectedExecutionException e) {
+                LOG.debug("The simulator died before its watchdog started: {}", deathReason);
+            }
+        }
     }
 
     /** The simulator's first line: protocol, seed, mode, robots and their actions. */
@@ -149,7 +178,12 @@ public final class SimWorld implements AutoCloseable {
         pending.put(id, ack);
         Duration timeout = request instanceof SimRequest.Step s
                 ? options.requestTimeout().plusMillis((long) (s.seconds() * 1000)) : options.requestTimeout();
-        ack.orTimeout(timeout.toMillis(), TimeUnit.MILLISECONDS).whenComplete((r, e) -> pending.remove(id));
+        ack.orTimeout(timeout.toMillis(), TimeUnit.MILLISECONDS).whenComplete((r, e) -> {
+            pending.remove(id);
+            if (e instanceof TimeoutException) {
+                stopIfHung(timeout);
+            }
+        });
         try {
             send(id, request);
         } catch (SimulatorExitedException e) {
@@ -166,14 +200,53 @@ public final class SimWorld implements AutoCloseable {
 
     /** The whole world state now (robots, users, cups, obstacles). */
     public JsonNode query() {
+        return await(queryAsync());
+    }
+
+    private CompletableFuture<JsonNode> queryAsync() {
         failIfDead();
         String id = nextId();
         CompletableFuture<JsonNode> state = new CompletableFuture<>();
         queries.put(id, state);
-        state.orTimeout(options.requestTimeout().toMillis(), TimeUnit.MILLISECONDS)
-                .whenComplete((r, e) -> queries.remove(id));
-        send(id, new SimRequest.Query());
-        return await(state);
+        state.orTimeout(options.requestTimeout().toMillis(), TimeUnit.MILLISECONDS).whenComplete((r, e) -> {
+            queries.remove(id);
+            if (e instanceof TimeoutException) {
+                stopIfHung(options.requestTimeout());
+            }
+        });
+        try {
+            send(id, new SimRequest.Query());
+        } catch (SimulatorExitedException e) {
+            queries.remove(id);
+            throw e;
+        }
+        return state;
+    }
+
+    /** Real time: while actions run and the simulator has been quiet for half the request timeout, ping it. */
+    private void watch() {
+        long quiet = System.nanoTime() - lastHeard;
+        if (!alive() || actions.isEmpty() || quiet < options.requestTimeout().toNanos() / 2 || !ping.isDone()) {
+            return;
+        }
+        try {
+            ping = queryAsync();
+        } catch (SimulatorExitedException e) {
+            watchdog.shutdown();
+        }
+    }
+
+    /**
+     * Real time: a simulator that answers no request within the timeout is hung (it answers between physics steps,
+     * within milliseconds); it is stopped, and everything in flight fails saying so.
+     */
+    private void stopIfHung(Duration waited) {
+        if (options.manual() || closing || !alive() || System.nanoTime() - lastHeard < waited.toNanos()) {
+            return; // a simulator that wrote a line within the timeout is slow (or this JVM was paused), not hung
+        }
+        String time = waited.toMillis() % 1000 == 0 ? waited.toSeconds() + " s" : waited.toMillis() + " ms";
+        die("simulator did not answer within " + time + " and was stopped");
+        process.destroyForcibly();
     }
 
     /** Manual mode: advances the world by {@code seconds} (stopping early when idle, if asked) and waits. */
@@ -193,7 +266,10 @@ public final class SimWorld implements AutoCloseable {
         pending.put(id, ack);
         ack.orTimeout(options.requestTimeout().toMillis(), TimeUnit.MILLISECONDS).whenComplete((r, e) -> {
             pending.remove(id);
-            if (e != null && !(e instanceof SimulatorExitedException)) { // a death is reported by die(), with its reason
+            if (e instanceof TimeoutException) {
+                stopIfHung(options.requestTimeout());
+            }
+            if (e != null && !(e instanceof SimulatorExitedException) && alive()) { // die() reports a death, with its reason
                 String reason = e instanceof TimeoutException
                         ? "no answer from the simulator within " + options.requestTimeout().toSeconds() + " s"
                         : e.getMessage();
@@ -219,20 +295,31 @@ public final class SimWorld implements AutoCloseable {
         return "j" + ids.incrementAndGet();
     }
 
+    /** Queues a request line; the writer thread sends it, and a broken pipe kills the world there. */
     private void send(String id, SimRequest request) {
         failIfDead();
-        String line = codec.encode(id, request);
-        synchronized (stdin) {
-            try {
+        outbox.add(codec.encode(id, request));
+    }
+
+    private void writeRequests() {
+        try {
+            while (deathReason == null) {
+                String line = outbox.poll(200, TimeUnit.MILLISECONDS);
+                if (line == null) {
+                    continue;
+                }
                 stdin.write(line);
                 stdin.write('\n');
-                stdin.flush();
-            } catch (IOException e) {
-                die(reasonAfterBrokenPipe(e));
-                failIfDead();
+                if (outbox.isEmpty()) {
+                    stdin.flush();
+                }
+                LOG.debug("-> {}", line);
             }
+        } catch (IOException e) {
+            die(reasonAfterBrokenPipe(e));
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         }
-        LOG.debug("-> {}", line);
     }
 
     private void failIfDead() {
@@ -267,6 +354,7 @@ public final class SimWorld implements AutoCloseable {
         try (BufferedReader in = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8))) {
             String line;
             while ((line = in.readLine()) != null) {
+                lastHeard = System.nanoTime();
                 LOG.trace("<- {}", line);
                 handleLine(line);
             }
@@ -281,10 +369,20 @@ public final class SimWorld implements AutoCloseable {
         try {
             event = codec.decode(line);
         } catch (SimProtocolException e) {
+            if (!hello.isDone()) { // the first line must be the hello: no use waiting for another
+                hello.completeExceptionally(new SimulatorException("The simulator's first line is not a valid hello: "
+                        + e.getMessage()));
+            }
             LOG.warn("{}", e.getMessage());
             return;
         }
+        if (!hello.isDone() && !(event instanceof SimEvent.Hello)) {
+            hello.completeExceptionally(new SimulatorException("The simulator's first line is not a valid hello but a "
+                    + event.getClass().getSimpleName() + " event: " + SimCodec.bad(line, "expected a hello").getMessage()));
+        }
         switch (event) {
+            case SimEvent.Hello h when !h.protocol().equals(PROTOCOL) -> hello.completeExceptionally(new SimulatorException(
+                    "The simulator speaks " + h.protocol() + "; this platform speaks " + PROTOCOL + "."));
             case SimEvent.Hello h -> hello.complete(h);
             case SimEvent.Ack a -> {
                 if (!queries.containsKey(a.id())) {
@@ -411,6 +509,8 @@ public final class SimWorld implements AutoCloseable {
             LOG.error("Simulator died: {}", reason);
         }
         SimulatorExitedException dead = new SimulatorExitedException("The simulator is not running: " + reason + ".");
+        outbox.clear();
+        watchdog.shutdownNow();
         hello.completeExceptionally(dead);
         pending.values().forEach(f -> f.completeExceptionally(dead));
         queries.values().forEach(f -> f.completeExceptionally(dead));

@@ -163,6 +163,17 @@ class RobotAgentEndToEndTest {
                 .hasMessage("cancelled: go elsewhere (asked by 'alice')");
     }
 
+    @Test
+    void aCommandForAPartThatIsBusy_failsNamingTheRunningCommandByItsPlatformId() throws Exception {
+        UserAgent alice = scoutAndAlice();
+        CommandTicket go = scoutUnderWay(alice);
+
+        CommandTicket turn = alice.command("scout", "ScoutTurnTo", Map.of("heading_deg", "0")); // no cancel first
+
+        assertThatThrownBy(() -> turn.result(WAIT)).isInstanceOf(ActionFailedException.class)
+                .hasMessage("refused: scout base is busy with go_to '" + go.command().id() + "'");
+    }
+
     /** Scout's agent and the user agent alice, connected, the simulator in real time. */
     private UserAgent scoutAndAlice() throws Exception {
         connect(new ScoutAgent(options("scout", AgentKind.ROBOT), world));

@@ -89,6 +89,20 @@ class RobotDriverTest {
     }
 
     @Test
+    void approachUser_progressGoesTowardsTheAskedDistance_notTowardsTouchingTheUser() throws Exception {
+        RobotDriver scout = driver(SimWorldTest.manual(), RobotModels.scout());
+        world.call(new SimRequest.SpawnUser("alice", 6.2, 5.0, -90, Optional.empty())); // 2.55 m north of Scout
+
+        Feedback end = run(scout, "ScoutApproachUser", Map.of("user", "alice", "distance_m", "1.0"));
+
+        assertThat(end).isInstanceOf(Feedback.Ended.class);
+        List<Double> fractions = feedback.stream().filter(f -> f instanceof Feedback.Progress)
+                .map(f -> ((Feedback.Progress) f).fraction()).toList();
+        assertThat(fractions).hasSizeGreaterThan(2).isSorted();
+        assertThat(fractions.getLast()).as("progress in %s", fractions).isGreaterThan(0.85);
+    }
+
+    @Test
     void aiboLieDown_endsLyingDown() throws Exception {
         RobotDriver aibo = driver(SimWorldTest.manual(), RobotModels.aibo());
 

@@ -1,13 +1,16 @@
 package org.kicnp.robots;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.time.Duration;
 import java.util.Optional;
+import java.util.concurrent.TimeUnit;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
@@ -38,6 +41,70 @@ class SimInstallationTest {
 
         assertThat(found.python()).isEqualTo(sim.resolve(".venv/bin/python"));
         assertThat(sim.resolve("setup-ran")).exists();
+    }
+
+    @Test
+    void locate_whenTheVenvExistsButItsSetUpDidNotFinish_runsSetupVenvAgain() throws IOException {
+        Path sim = fakeSim("touch \"$(dirname \"$0\")/setup-ran\"\n");
+        Path python = Files.createDirectories(sim.resolve(".venv/bin")).resolve("python"); // no packages, no stamp
+        Files.writeString(python, "#!/bin/sh\n");
+        Files.setPosixFilePermissions(python, PosixFilePermissions.fromString("rwxr-xr-x"));
+
+        SimInstallation.locate(Optional.of(repo));
+
+        assertThat(sim.resolve("setup-ran")).exists();
+    }
+
+    @Test
+    @Timeout(value = 20, unit = TimeUnit.SECONDS)
+    void locate_whenTheSetupScriptHangs_givesUpAfterTheTimeoutSayingSo() throws IOException {
+        fakeSim("echo 'pip: connecting...'\nsleep 60\n");
+
+        long start = System.nanoTime();
+        assertThatThrownBy(() -> SimInstallation.locate(Optional.of(repo), Duration.ofSeconds(1)))
+                .isInstanceOf(SimulatorException.class)
+                .hasMessageEndingWith("setup-venv.sh' did not finish within 1 s; its output: pip: connecting...");
+        assertThat(System.nanoTime() - start).isLessThan(TimeUnit.SECONDS.toNanos(5));
+    }
+
+    @Test
+    @Timeout(value = 20, unit = TimeUnit.SECONDS)
+    void start_whenTheSimulatorsFirstLineIsNotAValidHello_failsAtOnceQuotingIt() throws IOException {
+        Path sim = fakeSim("exit 0\n");
+        Path python = Files.createDirectories(sim.resolve(".venv/bin")).resolve("python");
+        Files.writeString(python, "#!/bin/sh\necho '{\"type\":\"hello\",\"t\":0.0,\"protocol\":\"kicnp-sim/1\"}'\nsleep 30\n");
+        Files.setPosixFilePermissions(python, PosixFilePermissions.fromString("rwxr-xr-x"));
+
+        long start = System.nanoTime();
+        assertThatThrownBy(() -> SimWorld.start(SimOptions.defaults().withRepoRoot(repo)))
+                .isInstanceOf(SimulatorException.class)
+                .hasMessageContaining("not a valid hello")
+                .hasMessageContaining("member 'seed' is missing");
+        assertThat(System.nanoTime() - start).isLessThan(TimeUnit.SECONDS.toNanos(8));
+    }
+
+    @Test
+    @Timeout(value = 20, unit = TimeUnit.SECONDS)
+    void start_whenTheSimulatorSpeaksAnotherProtocolVersion_failsNamingBoth() throws IOException {
+        Path sim = fakeSim("exit 0\n");
+        Path python = Files.createDirectories(sim.resolve(".venv/bin")).resolve("python");
+        Files.writeString(python, "#!/bin/sh\necho '{\"type\":\"hello\",\"t\":0.0,\"protocol\":\"kicnp-sim/2\","
+                + "\"seed\":1,\"mode\":\"manual\",\"robots\":{}}'\nsleep 30\n");
+        Files.setPosixFilePermissions(python, PosixFilePermissions.fromString("rwxr-xr-x"));
+
+        assertThatThrownBy(() -> SimWorld.start(SimOptions.defaults().withRepoRoot(repo)))
+                .isInstanceOf(SimulatorException.class)
+                .hasMessageContaining("speaks kicnp-sim/2; this platform speaks kicnp-sim/1");
+    }
+
+    @Test
+    void locate_whenTheVenvExistsButCannotBeUpdated_startsWithTheVenvThereIs() throws IOException {
+        Path sim = fakeSim("echo 'pip: no network'; exit 1\n"); // say, offline after a pin changed
+        Path python = Files.createDirectories(sim.resolve(".venv/bin")).resolve("python");
+        Files.writeString(python, "#!/bin/sh\n");
+        Files.setPosixFilePermissions(python, PosixFilePermissions.fromString("rwxr-xr-x"));
+
+        assertThat(SimInstallation.locate(Optional.of(repo)).python()).isEqualTo(python);
     }
 
     @Test

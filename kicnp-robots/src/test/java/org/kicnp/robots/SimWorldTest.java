@@ -5,8 +5,11 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
 import java.io.IOException;
+import java.time.Duration;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 
@@ -144,6 +147,66 @@ class SimWorldTest {
         assertThatThrownBy(() -> SimWorld.start(manual().withRepoRoot(dir)))
                 .isInstanceOf(SimulatorException.class)
                 .hasMessage("No simulator under '" + dir.resolve("robots-sim") + "': expected robots-sim/kicnp_sim there.");
+    }
+
+    @Test
+    void aHungSimulator_whoseInputPipeIsFull_blocksNeitherACommandNorClose() throws Exception {
+        SimWorld world = SimWorld.start(SimOptions.defaults().withTimeScale(1).withRequestTimeout(Duration.ofSeconds(1)));
+        try {
+            signal("STOP", world.pid()); // alive but reading nothing: the pipe to it fills up
+            String text = "x".repeat(200_000); // more than a pipe holds
+
+            SimAction say = CompletableFuture.supplyAsync(() -> world.command(
+                    SimRequest.Command.of("robovie", "say", Map.of("text", text)))).get(3, TimeUnit.SECONDS);
+            ActionUpdate outcome = say.outcome().get(10, TimeUnit.SECONDS);
+            assertThat(outcome).isInstanceOf(ActionUpdate.Failed.class);
+            assertThat(((ActionUpdate.Failed) outcome).reason()).contains("within 1 s");
+
+            CompletableFuture.runAsync(world::close).get(15, TimeUnit.SECONDS);
+            assertThat(ProcessHandle.of(world.pid()).map(ProcessHandle::isAlive)).isNotEqualTo(Optional.of(true));
+        } finally {
+            signal("KILL", world.pid());
+        }
+    }
+
+    @Test
+    void aSimulatorThatHangsMidAction_isStoppedAndTheActionFailsSayingSo() throws Exception {
+        SimWorld world = SimWorld.start(SimOptions.defaults().withTimeScale(1).withRequestTimeout(Duration.ofSeconds(1)));
+        try {
+            List<SimEvent> exits = new CopyOnWriteArrayList<>();
+            world.addListener(e -> {
+                if (e instanceof SimEvent.Exited) {
+                    exits.add(e);
+                }
+            });
+            SimAction go = world.command(SimRequest.Command.of("scout", "go_to", Map.of("x", 1.0, "y", 1.0)));
+            waitUntil(go::started);
+
+            signal("STOP", world.pid()); // the process lives on, but answers nothing and ends nothing
+
+            ActionUpdate outcome = go.outcome().get(8, TimeUnit.SECONDS);
+            assertThat(outcome).isInstanceOf(ActionUpdate.Failed.class);
+            assertThat(((ActionUpdate.Failed) outcome).reason()).isEqualTo("simulator did not answer within 1 s and was stopped");
+            waitUntil(() -> !exits.isEmpty());
+            assertThat(world.alive()).isFalse();
+            waitUntil(() -> ProcessHandle.of(world.pid()).map(ProcessHandle::isAlive).orElse(false) == false);
+        } finally {
+            signal("KILL", world.pid());
+            world.close();
+        }
+    }
+
+    @Test
+    void options_withARequestTimeoutThatIsNotPositive_areRefused() {
+        assertThatThrownBy(() -> SimOptions.defaults().withRequestTimeout(Duration.ZERO))
+                .isInstanceOf(IllegalArgumentException.class)
+                .hasMessage("The request timeout must be positive, not 0 ms.");
+        assertThatThrownBy(() -> SimOptions.defaults().withRequestTimeout(Duration.ofSeconds(-1)))
+                .isInstanceOf(IllegalArgumentException.class);
+    }
+
+    static void signal(String name, long pid) throws IOException, InterruptedException {
+        new ProcessBuilder("kill", "-" + name, Long.toString(pid)).inheritIO().start().waitFor();
     }
 
     static void kill9(long pid) throws IOException, InterruptedException {
