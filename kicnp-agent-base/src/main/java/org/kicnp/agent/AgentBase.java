@@ -75,6 +75,8 @@ public abstract class AgentBase implements AutoCloseable {
     private final CountDownLatch firstOutcome = new CountDownLatch(1);
     private volatile Connection connection;
     private volatile boolean registered;
+    /** Why the last connection attempt (or connection) failed, for a timeout's message; null: none failed. */
+    private volatile String lastFailure;
     private volatile boolean closed;
     private volatile AgentException fatal;
     private volatile Thread supervisor;
@@ -160,13 +162,21 @@ public abstract class AgentBase implements AutoCloseable {
             throw fatal;
         }
         if (!registered) {
+            String last = lastFailure;
             throw new AgentTimeoutException("Agent '" + name() + "' was not registered with " + options.host() + ":"
-                    + options.port() + " within " + timeout + ".");
+                    + options.port() + " within " + words(timeout) + (last == null ? "." : "; the last attempt failed: "
+                    + last + (last.endsWith(".") ? "" : ".")));
         }
     }
 
     public final String name() {
         return options.name();
+    }
+
+    /** A timeout as people write it: "15 s", "300 ms". */
+    private static String words(Duration d) {
+        long ms = d.toMillis();
+        return ms % 1000 == 0 ? ms / 1000 + " s" : ms + " ms";
     }
 
     public final AgentKind kind() {
@@ -372,6 +382,7 @@ public abstract class AgentBase implements AutoCloseable {
                 if (closed) {
                     return;
                 }
+                lastFailure = e.getMessage() == null ? e.toString() : e.getMessage();
                 LOG.info("Agent '{}' lost its connection to {}:{} ({}); reconnecting.", name(), options.host(),
                         options.port(), e.getMessage() == null ? e.toString() : e.getMessage());
             } catch (RuntimeException e) { // a bug in a subclass (say, in capabilities()) or a server we do not understand

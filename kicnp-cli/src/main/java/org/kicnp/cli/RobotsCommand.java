@@ -94,8 +94,12 @@ public final class RobotsCommand implements Callable<Integer> {
         Properties tokenFile = new Properties();
         try (InputStream in = Files.newInputStream(tokens)) {
             tokenFile.load(in);
-        } catch (IOException e) {
-            err.println("Cannot read the tokens file '" + tokens + "': " + e.getMessage());
+        } catch (java.nio.file.NoSuchFileException e) {
+            err.println("There is no agent file '" + tokens + "'; give --tokens KB_DIR/.kicnp/agents.properties of "
+                    + "the running server (serve writes it there).");
+            return 2;
+        } catch (IOException | IllegalArgumentException e) {
+            err.println("Cannot read the agent file '" + tokens + "': " + e.getMessage());
             return 2;
         }
         for (String robot : ROBOTS) {
@@ -103,6 +107,14 @@ public final class RobotsCommand implements Callable<Integer> {
                 err.println("The tokens file '" + tokens + "' has no '" + robot + ".token'.");
                 return 2;
             }
+        }
+        // Before the simulator starts: with no server there, the agents would only time out.
+        try (java.net.Socket probe = new java.net.Socket()) {
+            probe.connect(new java.net.InetSocketAddress(address.host(), address.port()), 2000);
+        } catch (IOException e) {
+            err.println("No server answers at " + gateway + " (" + (e.getMessage() == null ? e : e.getMessage())
+                    + "); start one first (./kicnp serve KB_DIR) and give its agent file with --tokens.");
+            return 1;
         }
         SimOptions options = SimOptions.defaults().withSeed(seed).withTimeScale(timeScale);
         if (repo != null) {

@@ -133,6 +133,25 @@ class RobotsCommandTest {
     }
 
     @Test
+    void robots_withNoAgentFile_orNoServerThere_saySoAtOnce_withoutStartingTheSimulator(@TempDir Path dir)
+            throws Exception {
+        assertThat(run("robots", "--tokens", dir.resolve("agents.properties").toString())).isEqualTo(2);
+        assertThat(err.toString()).contains("There is no agent file '" + dir.resolve("agents.properties")
+                + "'; give --tokens KB_DIR/.kicnp/agents.properties of the running server");
+
+        Path tokens = Files.write(dir.resolve("agents.properties"),
+                List.of("robovie.token = a", "pino.token = b", "scout.token = c", "aibo.token = d"));
+        int port;
+        try (java.net.ServerSocket s = new java.net.ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
+            port = s.getLocalPort();
+        }
+        assertThat(run("robots", "--gateway", "127.0.0.1:" + port, "--tokens", tokens.toString())).isEqualTo(1);
+        assertThat(err.toString()).contains("No server answers at 127.0.0.1:" + port + " (Connection refused); start "
+                + "one first (./kicnp serve KB_DIR)");
+        assertThat(out.toString()).doesNotContain("Simulator started");
+    }
+
+    @Test
     void robots_byDefault_connectsToThePortServeListensOnByDefault() {
         CommandLine robots = new CommandLine(new RobotsCommand());
         robots.parseArgs();
