@@ -7,6 +7,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.function.Function;
 import org.kicnp.core.BatchRejectedException;
 import org.kicnp.core.Change;
 import org.kicnp.core.Frame;
@@ -49,8 +50,10 @@ final class Recovery {
         Journal journal = Journal.open(metaDir, disk, entries);
         int changed;
         try {
+            // A record was written against the frames the records before it left, not against the files alone.
+            Function<String, Optional<Frame>> above = name -> layout.frame(name).or(() -> kb.frame(name));
             for (Journal.Entry e : entries) {
-                layout.apply(JournalCodec.decode(e.payload(), e.where(), kb));
+                layout.apply(JournalCodec.decode(e.payload(), e.where(), kb, above));
             }
             changed = reconcile(kb);
         } catch (RuntimeException e) {
