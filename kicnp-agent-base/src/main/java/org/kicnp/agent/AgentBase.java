@@ -554,6 +554,7 @@ public abstract class AgentBase implements AutoCloseable {
 
     private static List<Frame> parse(List<String> xml) {
         KnowledgeBase context = KnowledgeBase.create();
-        return xml.stream().flatMap(x -> FrameText.parse(x, "server", context).stream()).toList();
+        // One set: an instance's list items take their type from its class, which travels in another text.
+        return FrameText.parse(xml, i -> "server #" + (i + 1), context);
     }
 }

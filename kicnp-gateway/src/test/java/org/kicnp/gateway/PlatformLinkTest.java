@@ -36,6 +36,7 @@ class PlatformLinkTest {
                 new org.kicnp.core.Change.Add(Frame.instance("Robovie", "Humanoid").build()),
                 new org.kicnp.core.Change.Add(Frame.classFrame("Drink").build())));
         AgentDirectory peers = AgentDirectory.empty().with("lab-a", "a-token", AgentKind.PEER)
+                .with("lab-c", "c-token", AgentKind.PEER)
                 .with("alice", "alice-token", AgentKind.USER);
         local = GatewayServer.start(GatewayConfig.defaults().withPort(0).withServerName("lab-a"), peers, here,
                 FeedbackListener.NONE);
@@ -88,6 +89,48 @@ class PlatformLinkTest {
             alice.startAndAwait(Duration.ofSeconds(10));
             assertThatThrownBy(() -> alice.push(here.frames())).isInstanceOfSatisfying(RequestRefusedException.class,
                     e -> assertThat(e.code()).isEqualTo(ErrorCode.FORBIDDEN));
+        }
+    }
+    /** Frames travel one per text; an instance's list items take their type from its class in the same push. */
+    @Test
+    void push_ofClassAndInstanceWhoseListItemsTakeTheClassArgument_isStoredThereEqual() {
+        Frame scored = Frame.classFrame("Scored").slot(Slot.builder("marks", DataType.LIST).argument("TYPE_INT").build())
+                .build();
+        Frame game = Frame.instance("game1", "Scored").slot(Slot.ofValue("marks", DataType.LIST,
+                new Value.Lst(java.util.List.of(new Value.Int(3), new Value.Int(5))))).build();
+        here.apply(java.util.List.of(new org.kicnp.core.Change.Add(scored), new org.kicnp.core.Change.Add(game)));
+
+        link.push(here, Optional.of("Scored"));
+
+        assertThat(there.require("game1")).isEqualTo(game);
+    }
+
+    @Test
+    void pull_ofClassAndInstanceWhoseListItemsTakeTheClassArgument_bringsThemBackEqual() {
+        Frame scored = Frame.classFrame("Scored").slot(Slot.builder("marks", DataType.LIST).argument("TYPE_INT").build())
+                .build();
+        Frame game = Frame.instance("game1", "Scored").slot(Slot.ofValue("marks", DataType.LIST,
+                new Value.Lst(java.util.List.of(new Value.Int(3), new Value.Int(5))))).build();
+        there.apply(java.util.List.of(new org.kicnp.core.Change.Add(scored), new org.kicnp.core.Change.Add(game)));
+
+        assertThat(link.pull(Optional.of("Scored"))).containsExactly(scored, game);
+        link.pullInto(here, Optional.of("Scored"));
+        assertThat(here.require("game1")).isEqualTo(game);
+    }
+    /** Two different frames under one name in one push: which one is meant is unknown, so none is stored. */
+    @Test
+    void push_namingOneFrameTwice_isRefusedNamingItAndChangesNothing() {
+        try (org.kicnp.agent.UserAgent peer = new org.kicnp.agent.UserAgent(
+                AgentOptions.of("127.0.0.1", remote.port(), "lab-c", AgentKind.PEER, "c-token"))) {
+            peer.startAndAwait(Duration.ofSeconds(10));
+            Frame first = Frame.classFrame("Drink").slot(Slot.builder("hot", DataType.BOOLEAN).build()).build();
+            Frame second = Frame.classFrame("Drink").build();
+
+            assertThatThrownBy(() -> peer.push(java.util.List.of(Frame.classFrame("Food").build(), first, second)))
+                    .isInstanceOfSatisfying(RequestRefusedException.class,
+                            e -> assertThat(e.code()).isEqualTo(ErrorCode.REJECTED))
+                    .hasMessageContaining("'Drink' is defined twice").hasMessageContaining("#2");
+            assertThat(there.frames()).extracting(Frame::name).doesNotContain("Food", "Drink");
         }
     }
 }
