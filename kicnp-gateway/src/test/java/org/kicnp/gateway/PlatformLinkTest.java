@@ -133,4 +133,22 @@ class PlatformLinkTest {
             assertThat(there.frames()).extracting(Frame::name).doesNotContain("Food", "Drink");
         }
     }
+    /** A push larger than the receiver's frame limit cannot be stored; the pusher must hear why, and nothing changes. */
+    @Test
+    void push_largerThanTheReceiversFrameLimit_failsSayingSoAndChangesNothing() {
+        java.util.List<org.kicnp.core.Change> many = new java.util.ArrayList<>();
+        many.add(new org.kicnp.core.Change.Add(Frame.classFrame("Note").slot(Slot.builder("text", DataType.STRING)
+                .build()).build()));
+        for (int i = 0; i < 3_000; i++) {
+            many.add(new org.kicnp.core.Change.Add(Frame.instance("note" + i, "Note")
+                    .slot(Slot.ofValue("text", DataType.STRING, Value.of("x".repeat(400)))).build()));
+        }
+        here.apply(many);
+
+        assertThatThrownBy(() -> link.push(here, Optional.of("Note")))
+                .isInstanceOfSatisfying(RequestRefusedException.class,
+                        e -> assertThat(e.code()).isEqualTo(ErrorCode.FRAME_TOO_LARGE))
+                .hasMessageContaining("longer than this server accepts");
+        assertThat(there.contains("Note")).isFalse();
+    }
 }
