@@ -192,4 +192,30 @@ class StoreRecoveryTest {
             assertThat(journalSegments(dir)).hasSize(1);
         }
     }
+    /**
+     * A crash can tear only the last record of the newest segment. A damaged record with intact ones after it is
+     * something else (a bad disk, an edit): cutting there would drop acknowledged changes for good.
+     */
+    @Test
+    void open_whenARecordOfTheNewestSegmentIsDamagedButIntactOnesFollow_refusesAndKeepsTheJournal() throws Exception {
+        Path dir = baseDir(tmp);
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET)) {
+            store.kb().add(learnedUser("ann", 1));
+            store.kb().add(learnedUser("bob", 1));
+            store.kb().add(learnedUser("cid", 1));
+        }
+        Path segment = journalSegments(dir).get(0);
+        try (RandomAccessFile f = new RandomAccessFile(segment.toFile(), "rw")) {
+            f.seek(Journal.HEADER + 20); // inside ann's payload
+            int b = f.read();
+            f.seek(Journal.HEADER + 20);
+            f.write(b ^ 0x5A);
+        }
+        byte[] damaged = Files.readAllBytes(segment);
+
+        assertThatThrownBy(() -> KnowledgeStore.open(dir, QUIET)).isInstanceOf(StoreException.class)
+                .hasMessageContaining("journal-00000000000000000001").hasMessageContaining("at byte 0")
+                .hasMessageContaining("checksum mismatch").hasMessageContaining("intact record");
+        assertThat(Files.readAllBytes(segment)).as("the journal is kept for a person to look at").isEqualTo(damaged);
+    }
 }
