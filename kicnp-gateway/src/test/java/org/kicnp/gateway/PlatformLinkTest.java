@@ -148,7 +148,7 @@ class PlatformLinkTest {
         assertThatThrownBy(() -> link.push(here, Optional.of("Note")))
                 .isInstanceOfSatisfying(RequestRefusedException.class,
                         e -> assertThat(e.code()).isEqualTo(ErrorCode.FRAME_TOO_LARGE))
-                .hasMessageContaining("longer than this server accepts");
+                .hasMessageContaining("longer than this server accepts (1048576 bytes at most)");
         assertThat(there.contains("Note")).isFalse();
     }
 }
