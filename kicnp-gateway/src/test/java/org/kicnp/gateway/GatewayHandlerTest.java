@@ -110,6 +110,39 @@ class GatewayHandlerTest {
         assertThat(kb.contains("agent_scout")).isFalse();
     }
 
+    /** Capability frames travel one per text; a frame below a capability class inherits its list's item type. */
+    @Test
+    void register_ofAClassAndASubclassWhoseListDefaultTakesTheClassArgument_storesBothAsSent() {
+        authenticate();
+        Frame skill = Frame.classFrame("Skill").slot(org.kicnp.core.Slot.builder("levels", org.kicnp.core.DataType.LIST)
+                .argument("TYPE_INT").build()).build();
+        Frame fast = Frame.classFrame("FastSkill").parent("Skill").slot(org.kicnp.core.Slot.builder("levels",
+                org.kicnp.core.DataType.LIST).defaultValue(new org.kicnp.core.Value.Lst(List.of(
+                        new org.kicnp.core.Value.Int(1), new org.kicnp.core.Value.Int(2)))).build()).build();
+
+        ch.writeInbound(Wire.frame(new Message.Register("2", org.kicnp.protocol.FrameText.toXml(List.of(skill, fast)))));
+
+        assertThat(Wire.written(ch)).containsExactly(new Message.Ack("2"));
+        assertThat(kb.require("FastSkill")).isEqualTo(fast);
+    }
+
+    /** Two capability frames of one name: which is meant is unknown, so neither is stored. */
+    @Test
+    void register_namingOneFrameTwice_isRejectedAndChangesNothing() {
+        authenticate();
+        List<String> capabilities = org.kicnp.protocol.FrameText.toXml(List.of(Frame.classFrame("Fetch").build(),
+                Frame.classFrame("Fetch").slot(org.kicnp.core.Slot.builder("item", org.kicnp.core.DataType.STRING)
+                        .build()).build()));
+
+        ch.writeInbound(Wire.frame(new Message.Register("2", capabilities)));
+
+        assertThat(Wire.written(ch)).singleElement().isInstanceOfSatisfying(Message.ErrorReply.class, e -> {
+            assertThat(e.code()).isEqualTo(ErrorCode.REJECTED);
+            assertThat(e.message()).contains("'Fetch' is defined twice");
+        });
+        assertThat(kb.contains("Fetch")).isFalse();
+    }
+
     @Test
     void register_overAnInstanceABehaviorFrameOrAClassElsewhere_isForbiddenAndChangesNothing() {
         kb.add(Frame.classFrame("User").build());
