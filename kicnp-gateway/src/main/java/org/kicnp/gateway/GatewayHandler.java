@@ -35,11 +35,17 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter {
     private final GatewayMetrics metrics;
     private final MessageCodec codec;
     private final long heartbeatNanos;
+    private final int maxFrameBytes;
     private Session session;
     private ScheduledFuture<?> heartbeats;
 
-    /** @param heartbeatEvery how long the server may send nothing before it sends a heartbeat */
-    GatewayHandler(ServerAgent server, GatewayMetrics metrics, MessageCodec codec, Duration heartbeatEvery) {
+    /**
+     * @param heartbeatEvery how long the server may send nothing before it sends a heartbeat
+     * @param maxFrameBytes the longest answer sent as it is (the server's frame limit)
+     */
+    GatewayHandler(ServerAgent server, GatewayMetrics metrics, MessageCodec codec, Duration heartbeatEvery,
+            int maxFrameBytes) {
+        this.maxFrameBytes = maxFrameBytes;
         this.server = server;
         this.metrics = metrics;
         this.codec = codec;
@@ -47,7 +53,7 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter {
     }
 
     @Override public void handlerAdded(ChannelHandlerContext ctx) {
-        session = new Session(ctx.channel(), codec);
+        session = new Session(ctx.channel(), codec, maxFrameBytes);
         metrics.connections.incrementAndGet();
     }
 

@@ -151,4 +151,23 @@ class PlatformLinkTest {
                 .hasMessageContaining("longer than this server accepts (1048576 bytes at most)");
         assertThat(there.contains("Note")).isFalse();
     }
+    /** An answer longer than one message may carry is refused as such; the link stays up for smaller pulls. */
+    @Test
+    void pull_ofMoreThanOneMessageCarries_isRefusedSayingSoAndTheLinkStaysUp() {
+        java.util.List<org.kicnp.core.Change> many = new java.util.ArrayList<>();
+        many.add(new org.kicnp.core.Change.Add(Frame.classFrame("Note").slot(Slot.builder("text", DataType.STRING)
+                .build()).build()));
+        for (int i = 0; i < 3_000; i++) {
+            many.add(new org.kicnp.core.Change.Add(Frame.instance("note" + i, "Note")
+                    .slot(Slot.ofValue("text", DataType.STRING, Value.of("x".repeat(400)))).build()));
+        }
+        there.apply(many);
+        there.add(Frame.classFrame("Small").build());
+
+        assertThatThrownBy(() -> link.pull(Optional.of("Note")))
+                .isInstanceOfSatisfying(RequestRefusedException.class,
+                        e -> assertThat(e.code()).isEqualTo(ErrorCode.REJECTED))
+                .hasMessageContaining("more than one message may carry (1048576 bytes)");
+        assertThat(link.pull(Optional.of("Small"))).extracting(Frame::name).containsExactly("Small");
+    }
 }
