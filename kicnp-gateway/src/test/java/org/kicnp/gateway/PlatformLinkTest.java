@@ -144,12 +144,48 @@ class PlatformLinkTest {
                     .slot(Slot.ofValue("text", DataType.STRING, Value.of("x".repeat(400)))).build()));
         }
         here.apply(many);
+        AgentOptions generous = AgentOptions.of("127.0.0.1", remote.port(), "lab-c", AgentKind.PEER, "c-token");
+        generous = new AgentOptions(generous.host(), generous.port(), generous.name(), generous.kind(),
+                generous.token(), generous.requestTimeout(), generous.heartbeatInterval(), generous.serverSilence(),
+                generous.backoffInitial(), generous.backoffMax(), 64 << 20, generous.socketFactory());
 
-        assertThatThrownBy(() -> link.push(here, Optional.of("Note")))
-                .isInstanceOfSatisfying(RequestRefusedException.class,
-                        e -> assertThat(e.code()).isEqualTo(ErrorCode.FRAME_TOO_LARGE))
-                .hasMessageContaining("longer than this server accepts (1048576 bytes at most)");
+        try (PlatformLink big = PlatformLink.connect(generous, Duration.ofSeconds(10))) {
+            assertThatThrownBy(() -> big.push(here, Optional.of("Note")))
+                    .isInstanceOfSatisfying(RequestRefusedException.class,
+                            e -> assertThat(e.code()).isEqualTo(ErrorCode.FRAME_TOO_LARGE))
+                    .hasMessageContaining("longer than this server accepts (1048576 bytes at most)");
+        }
         assertThat(there.contains("Note")).isFalse();
+    }
+
+    /**
+     * A push longer than the pusher's own frame limit is not sent at all: a large one would be cut off by the
+     * receiver while it is still being written, and the pusher would only hear "connection reset".
+     */
+    @Test
+    void push_largerThanThePushersFrameLimit_isNotSentAndTheLinkStaysUp() {
+        java.util.List<org.kicnp.core.Change> many = new java.util.ArrayList<>();
+        many.add(new org.kicnp.core.Change.Add(Frame.classFrame("Note").slot(Slot.builder("text", DataType.STRING)
+                .build()).build()));
+        for (int i = 0; i < 300; i++) {
+            many.add(new org.kicnp.core.Change.Add(Frame.instance("note" + i, "Note")
+                    .slot(Slot.ofValue("text", DataType.STRING, Value.of("x".repeat(400)))).build()));
+        }
+        here.apply(many);
+        AgentOptions small = AgentOptions.of("127.0.0.1", remote.port(), "lab-c", AgentKind.PEER, "c-token");
+        small = new AgentOptions(small.host(), small.port(), small.name(), small.kind(), small.token(),
+                small.requestTimeout(), small.heartbeatInterval(), small.serverSilence(), small.backoffInitial(),
+                small.backoffMax(), 64 << 10, small.socketFactory());
+
+        try (PlatformLink tight = PlatformLink.connect(small, Duration.ofSeconds(10))) {
+            assertThatThrownBy(() -> tight.push(here, Optional.of("Note")))
+                    .isInstanceOfSatisfying(RequestRefusedException.class,
+                            e -> assertThat(e.code()).isEqualTo(ErrorCode.FRAME_TOO_LARGE))
+                    .hasMessageContaining("The push message is").hasMessageContaining("more than one message may carry (65536 bytes")
+                    .hasMessageContaining("nothing was sent");
+            assertThat(there.contains("Note")).isFalse();
+            assertThat(tight.pull(Optional.empty())).as("still connected").extracting(Frame::name).doesNotContain("Note");
+        }
     }
     /** An answer longer than one message may carry is refused as such; the link stays up for smaller pulls. */
     @Test
