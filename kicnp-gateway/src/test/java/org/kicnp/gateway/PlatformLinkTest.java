@@ -206,4 +206,15 @@ class PlatformLinkTest {
                 .hasMessageContaining("more than one message may carry (1048576 bytes)");
         assertThat(link.pull(Optional.of("Small"))).extracting(Frame::name).containsExactly("Small");
     }
+    /** "Parents first" (docs/protocol.md): also for a frame moved below a class added after it. */
+    @Test
+    void pull_ofAFrameMovedBelowALaterClass_givesTheParentFirst() {
+        there.add(Frame.classFrame("Machine").build());
+        there.add(Frame.classFrame("Vehicle").build());
+        there.replace(Frame.classFrame("Machine").parent("Vehicle").build());
+        there.add(Frame.instance("car1", "Machine").build());
+
+        assertThat(link.pull(Optional.of("Vehicle"))).extracting(Frame::name)
+                .containsExactly("Vehicle", "Machine", "car1");
+    }
 }
