@@ -249,8 +249,15 @@ final class Journal implements AutoCloseable {
     /** Starts a new segment for further appends and returns the older ones, which compaction will fold and delete. */
     List<Path> roll() throws IOException {
         List<Path> old = new ArrayList<>(segments.values());
-        active.close();
+        FileChannel previous = active;
+        // The new segment first: if it cannot be made (no descriptor or directory entry to spare), appends go on
+        // into the current one, rather than into a closed channel until the store is reopened.
         startSegment(segments.lastKey() + 1);
+        try {
+            previous.close();
+        } catch (IOException e) {
+            LOG.warn("Closing journal segment '{}' failed: {}", old.get(old.size() - 1), e.getMessage());
+        }
         pendingRecords = 0;
         pendingBytes = 0;
         return old;
@@ -265,12 +272,20 @@ final class Journal implements AutoCloseable {
         disk.syncDirectory(dir);
     }
 
+    /** Creates segment {@code number} and makes it the active one; on failure the active segment stays as it was. */
     private void startSegment(long number) throws IOException {
         Path p = dir.resolve(String.format("journal-%020d", number));
-        active = FileChannel.open(p, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
+        FileChannel created = FileChannel.open(p, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
+        try {
+            disk.syncDirectory(dir);
+        } catch (IOException e) {
+            created.close();
+            Files.deleteIfExists(p);
+            throw e;
+        }
+        active = created;
         activeSize = 0;
         segments.put(number, p);
-        disk.syncDirectory(dir);
     }
 
     @Override

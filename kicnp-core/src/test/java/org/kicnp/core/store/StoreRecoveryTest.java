@@ -218,4 +218,27 @@ class StoreRecoveryTest {
                 .hasMessageContaining("checksum mismatch").hasMessageContaining("intact record");
         assertThat(Files.readAllBytes(segment)).as("the journal is kept for a person to look at").isEqualTo(damaged);
     }
+    /**
+     * A compaction that cannot start a new journal segment (no file descriptor or directory entry to spare) must not
+     * take the journal down with it: changes go on into the current segment, and a later compaction works.
+     */
+    @Test
+    void compact_whenTheNewSegmentCannotBeCreated_failsAndChangesGoOnIntoTheCurrentOne() throws Exception {
+        Path dir = baseDir(tmp);
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET)) {
+            store.kb().add(learnedUser("ann", 1));
+            Path blocker = Files.createDirectories(dir.resolve(".kicnp/journal-00000000000000000002"));
+
+            assertThatThrownBy(store::compact).isInstanceOf(StoreException.class)
+                    .hasMessageContaining("Could not start a new journal segment");
+            store.kb().add(learnedUser("bob", 1));
+
+            Files.delete(blocker);
+            store.compact();
+            assertThat(StoreFixtures.namesIn(dir.resolve("learned.xml"))).containsExactly("ann", "bob");
+        }
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET)) {
+            assertThat(store.kb().contains("bob")).isTrue();
+        }
+    }
 }
