@@ -181,7 +181,8 @@ class PlatformLinkTest {
             assertThatThrownBy(() -> tight.push(here, Optional.of("Note")))
                     .isInstanceOfSatisfying(RequestRefusedException.class,
                             e -> assertThat(e.code()).isEqualTo(ErrorCode.FRAME_TOO_LARGE))
-                    .hasMessageContaining("The push message is").hasMessageContaining("more than one message may carry (65536 bytes")
+                    .hasMessageContaining("The push message is")
+                    .hasMessageContaining("more than one message may carry (65536 bytes")
                     .hasMessageContaining("nothing was sent");
             assertThat(there.contains("Note")).isFalse();
             assertThat(tight.pull(Optional.empty())).as("still connected").extracting(Frame::name).doesNotContain("Note");
