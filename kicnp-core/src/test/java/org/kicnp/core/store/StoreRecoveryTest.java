@@ -241,4 +241,32 @@ class StoreRecoveryTest {
             assertThat(store.kb().contains("bob")).isTrue();
         }
     }
+    /**
+     * Edited by hand after a crash, the files no longer take the journal: the message must say where the frames it
+     * names are written, the hand-written one at its file and line, the other at its journal record.
+     */
+    @Test
+    void open_whenAHandEditConflictsWithTheJournal_namesTheFileAndLineAndTheJournalRecord() throws Exception {
+        Path dir = baseDir(tmp);
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET)) {
+            store.kb().add(org.kicnp.core.Frame.classFrame("Gadget").build());
+            store.compact();
+            store.kb().remove("Gadget"); // in the journal only: the process dies before it is folded
+        }
+        Files.writeString(dir.resolve("mine.xml"), """
+                <?xml version="1.0" encoding="UTF-8"?>
+                <KNOWLEDGEBASE>
+                  <FRAME>
+                    <NAME>Phone</NAME>
+                    <ISA>Gadget</ISA>
+                  </FRAME>
+                </KNOWLEDGEBASE>
+                """);
+
+        assertThatThrownBy(() -> KnowledgeStore.open(dir, QUIET)).isInstanceOf(StoreException.class)
+                .hasMessageContaining("'Gadget' cannot be removed")
+                .hasMessageContaining("'Phone' at " + dir.resolve("mine.xml") + ":3:")
+                .hasMessageContaining("Where they are: 'Gadget' changed by the journal record "
+                        + "journal-00000000000000000002 at byte 0");
+    }
 }
