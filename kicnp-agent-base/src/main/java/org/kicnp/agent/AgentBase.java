@@ -5,6 +5,7 @@ import static java.util.Objects.requireNonNull;
 import java.io.IOException;
 import java.time.Duration;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
@@ -19,6 +20,7 @@ import java.util.concurrent.ThreadLocalRandom;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Supplier;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Value;
@@ -79,6 +81,8 @@ public abstract class AgentBase implements AutoCloseable {
     private volatile String lastFailure;
     private volatile boolean closed;
     private volatile AgentException fatal;
+    /** The error, answering no request, with which the server announced it closes the current connection. */
+    private volatile Message.ErrorReply closing;
     private volatile Thread supervisor;
 
     protected AgentBase(AgentOptions options) {
@@ -217,7 +221,7 @@ public abstract class AgentBase implements AutoCloseable {
             }
         }
         events.shutdownNow();
-        failPending("Agent '" + name() + "' was closed.");
+        failPending(() -> new NotConnectedException("Agent '" + name() + "' was closed."));
     }
 
     // ---- what an agent can do ----
@@ -481,8 +485,12 @@ public abstract class AgentBase implements AutoCloseable {
                 case Message.Heartbeat h -> { }
                 case Message.ErrorReply e when e.code() == ErrorCode.SUPERSEDED ->
                         throw new AuthenticationException("Agent '" + name() + "' stops: " + e.message());
-                case Message.ErrorReply e when e.id().isEmpty() -> LOG.warn("Agent '{}': server says {}: {}", name(),
-                        e.code(), e.message());
+                case Message.ErrorReply e when e.id().isEmpty() -> {
+                    LOG.warn("Agent '{}': server says {}: {}", name(), e.code(), e.message());
+                    if (e.code().closesConnection()) {
+                        closing = e;
+                    }
+                }
                 case Message.ErrorReply e -> complete(e.id().get(), e);
                 case Message.Ack a -> complete(a.id(), a);
                 case Message.Frames f -> complete(f.id(), f);
@@ -521,7 +529,17 @@ public abstract class AgentBase implements AutoCloseable {
         boolean was = registered;
         registered = false;
         connection = null;
-        failPending("Agent '" + name() + "' lost its connection.");
+        Message.ErrorReply why = closing;
+        closing = null;
+        if (why != null && why.code() == ErrorCode.FRAME_TOO_LARGE) {
+            // The request in flight was too long for the server, which said so and closed: that is its answer.
+            failPending(() -> new RequestRefusedException(why.code(), why.message()));
+        } else {
+            String reason = "Agent '" + name() + "' lost its connection"
+                    + (why == null ? "." : ": the server closed it (" + why.code().name().toLowerCase(Locale.ROOT)
+                    + "): " + why.message());
+            failPending(() -> new NotConnectedException(reason));
+        }
         // The server sends feedback to the connection that issued a command; a new connection will not hear it.
         tickets.forEach((id, t) -> t.received(new Message.Feedback(id, t.command().robot(), FeedbackStage.FAILED,
                 Optional.empty(), "the connection to the gateway was lost before command '" + id + "' ended")));
@@ -533,8 +551,8 @@ public abstract class AgentBase implements AutoCloseable {
         }
     }
 
-    private void failPending(String reason) {
-        pending.forEach((id, f) -> f.completeExceptionally(new NotConnectedException(reason)));
+    private void failPending(Supplier<AgentException> failure) {
+        pending.forEach((id, f) -> f.completeExceptionally(failure.get()));
         pending.clear();
     }
 
@@ -582,6 +600,7 @@ public abstract class AgentBase implements AutoCloseable {
 
     private static List<Frame> parse(List<String> xml) {
         KnowledgeBase context = KnowledgeBase.create();
-        return xml.stream().flatMap(x -> FrameText.parse(x, "server", context).stream()).toList();
+        // One set: an instance's list items take their type from its class, which travels in another text.
+        return FrameText.parse(xml, i -> "server #" + (i + 1), context);
     }
 }

@@ -8,8 +8,10 @@ import java.io.IOException;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.util.concurrent.locks.ReentrantLock;
+import org.kicnp.protocol.ErrorCode;
 import org.kicnp.protocol.Message;
 import org.kicnp.protocol.MessageCodec;
+import org.kicnp.protocol.MessageType;
 import org.kicnp.protocol.Framing;
 
 /**
@@ -45,8 +47,20 @@ final class Connection implements AutoCloseable {
         }
     }
 
+    /**
+     * Writes one message.
+     *
+     * @throws RequestRefusedException with {@code frame_too_large}, sending nothing, when the message is longer than
+     *     one frame may be ({@link AgentOptions#maxFrameBytes}, the server's default limit too): a server cuts a long
+     *     frame off while it is still being written, and the sender would only hear "connection reset"
+     */
     void send(Message m) throws IOException {
         byte[] payload = codec.encode(m);
+        if (payload.length > maxFrameBytes) {
+            throw new RequestRefusedException(ErrorCode.FRAME_TOO_LARGE, "The " + MessageType.of(m).wireName()
+                    + " message is " + payload.length + " bytes, more than one message may carry (" + maxFrameBytes
+                    + " bytes, AgentOptions.maxFrameBytes); nothing was sent: send less, such as a smaller subtree.");
+        }
         writeLock.lock();
         try {
             Framing.write(out, payload);

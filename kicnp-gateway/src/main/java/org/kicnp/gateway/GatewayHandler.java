@@ -11,7 +11,10 @@ import java.io.IOException;
 import java.time.Duration;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import org.kicnp.protocol.ErrorCode;
+import org.kicnp.protocol.Framing;
 import org.kicnp.protocol.Message;
 import org.kicnp.protocol.Message.ErrorReply;
 import org.kicnp.protocol.MessageCodec;
@@ -26,16 +29,23 @@ import org.slf4j.LoggerFactory;
  */
 final class GatewayHandler extends ChannelInboundHandlerAdapter {
     private static final Logger LOG = LoggerFactory.getLogger(GatewayHandler.class);
+    private static final Pattern NETTY_TOO_LONG = Pattern.compile("exceeds (\\d+): (\\d+)");
 
     private final ServerAgent server;
     private final GatewayMetrics metrics;
     private final MessageCodec codec;
     private final long heartbeatNanos;
+    private final int maxFrameBytes;
     private Session session;
     private ScheduledFuture<?> heartbeats;
 
-    /** @param heartbeatEvery how long the server may send nothing before it sends a heartbeat */
-    GatewayHandler(ServerAgent server, GatewayMetrics metrics, MessageCodec codec, Duration heartbeatEvery) {
+    /**
+     * @param heartbeatEvery how long the server may send nothing before it sends a heartbeat
+     * @param maxFrameBytes the longest answer sent as it is (the server's frame limit)
+     */
+    GatewayHandler(ServerAgent server, GatewayMetrics metrics, MessageCodec codec, Duration heartbeatEvery,
+            int maxFrameBytes) {
+        this.maxFrameBytes = maxFrameBytes;
         this.server = server;
         this.metrics = metrics;
         this.codec = codec;
@@ -43,7 +53,7 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter {
     }
 
     @Override public void handlerAdded(ChannelHandlerContext ctx) {
-        session = new Session(ctx.channel(), codec);
+        session = new Session(ctx.channel(), codec, maxFrameBytes);
         metrics.connections.incrementAndGet();
     }
 
@@ -198,13 +208,26 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter {
             return ErrorReply.of(p.code(), p.getMessage());
         }
         if (cause instanceof TooLongFrameException || cause instanceof CorruptedFrameException) {
-            return ErrorReply.of(ErrorCode.FRAME_TOO_LARGE, "The frame is longer than this server accepts: "
-                    + cause.getMessage());
+            return ErrorReply.of(ErrorCode.FRAME_TOO_LARGE, tooLong(cause));
         }
         if (cause instanceof ProtocolException p) {
             return ErrorReply.of(p.code(), p.getMessage());
         }
         return ErrorReply.of(ErrorCode.INTERNAL, "The server failed on this connection: " + cause);
+    }
+
+    /**
+     * The sentence for an oversize frame, with the payload's size and the limit as docs/protocol.md counts them;
+     * Netty's own message counts the 4-byte length prefix in both ("exceeds 1048580: 2021257 - discarded").
+     */
+    private static String tooLong(Throwable cause) {
+        Matcher m = cause.getMessage() == null ? null : NETTY_TOO_LONG.matcher(cause.getMessage());
+        if (m != null && m.find()) {
+            long limit = Long.parseLong(m.group(1)) - Framing.LENGTH_BYTES;
+            long length = Long.parseLong(m.group(2)) - Framing.LENGTH_BYTES;
+            return "A frame of " + length + " bytes is longer than this server accepts (" + limit + " bytes at most).";
+        }
+        return "The frame is longer than this server accepts: " + cause.getMessage();
     }
 
     private void serverOnly(String type) {

@@ -44,11 +44,12 @@ final class GatewayInitializer extends ChannelInitializer<SocketChannel> {
         p.addLast("frames", new LengthFieldBasedFrameDecoder(config.maxFrameBytes() + Framing.LENGTH_BYTES,
                 0, Framing.LENGTH_BYTES, 0, 0, true)); // the prefix stays: a forwarded relay keeps its frame
         p.addLast("decoder", new MessageDecoder(codec));
-        p.addLast("encoder", new MessageEncoder(codec));
+        p.addLast("encoder", new MessageEncoder(codec, config.maxFrameBytes()));
         long timeout = config.heartbeatTimeout().toMillis();
         // Reader idleness only: a writer-idle check here would wrap every write in a promise with a listener.
         // The handler sends heartbeats itself when the connection has been written nothing for a third of it.
         p.addLast("idle", new IdleStateHandler(timeout, 0, 0, TimeUnit.MILLISECONDS));
-        p.addLast("agent", new GatewayHandler(server, metrics, codec, Duration.ofMillis(Math.max(10, timeout / 3))));
+        p.addLast("agent", new GatewayHandler(server, metrics, codec, Duration.ofMillis(Math.max(10, timeout / 3)),
+                config.maxFrameBytes()));
     }
 }

@@ -286,10 +286,9 @@ final class KnowledgeAccess implements KnowledgeListener {
         }
         List<Change> changes = new ArrayList<>();
         try {
-            for (int i = 0; i < p.frames().size(); i++) {
-                for (Frame f : FrameText.parse(p.frames().get(i), "push from " + from + " #" + (i + 1), kb)) {
-                    changes.add(new Change.Put(f));
-                }
+            // One set, not text by text: an instance's list items take their type from its class in the same push.
+            for (Frame f : FrameText.parse(p.frames(), i -> "push from " + from + " #" + (i + 1), kb)) {
+                changes.add(new Change.Put(f));
             }
         } catch (KnowledgeException | IllegalArgumentException e) {
             return ErrorReply.to(p.id(), ErrorCode.REJECTED, e.getMessage());

@@ -96,13 +96,12 @@ final class ServerAgent {
         List<String> names = new ArrayList<>();
         try {
             List<String> forbidden = new ArrayList<>();
-            for (String xml : r.capabilities()) {
-                for (Frame f : FrameText.parse(xml, "register from " + s, kb)) {
-                    kb.frame(f.name()).flatMap(old -> Capabilities.whyNotReplaceable(old, kb.slots(old.name()), f))
-                            .ifPresent(forbidden::add);
-                    changes.add(new Change.Put(f));
-                    names.add(f.name());
-                }
+            // One set, not text by text: a frame inherits a list's item type from a capability class sent beside it.
+            for (Frame f : FrameText.parse(r.capabilities(), i -> "register from " + s + " #" + (i + 1), kb)) {
+                kb.frame(f.name()).flatMap(old -> Capabilities.whyNotReplaceable(old, kb.slots(old.name()), f))
+                        .ifPresent(forbidden::add);
+                changes.add(new Change.Put(f));
+                names.add(f.name());
             }
             if (!forbidden.isEmpty()) {
                 return ErrorReply.to(r.id(), ErrorCode.FORBIDDEN, "The capabilities of " + s + " were refused: "

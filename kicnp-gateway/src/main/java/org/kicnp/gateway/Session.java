@@ -33,6 +33,7 @@ final class Session {
 
     private final Channel channel;
     private final MessageCodec codec;
+    private final int maxFrameBytes;
     private volatile State state = State.NEW;
     private volatile String agent = "";
     private volatile AgentKind kind = AgentKind.SERVICE;
@@ -53,9 +54,11 @@ final class Session {
     private record Last(Message message) {
     }
 
-    Session(Channel channel, MessageCodec codec) {
+    /** @param maxFrameBytes the longest answer sent as it is; a longer one is replaced by an error saying so */
+    Session(Channel channel, MessageCodec codec, int maxFrameBytes) {
         this.channel = requireNonNull(channel, "channel");
         this.codec = requireNonNull(codec, "codec");
+        this.maxFrameBytes = maxFrameBytes;
     }
 
     Channel channel() {
@@ -149,7 +152,7 @@ final class Session {
                 frame.release();
             }
         } else {
-            byte[] payload = codec.encode((Message) next);
+            byte[] payload = MessageEncoder.payload(codec, (Message) next, maxFrameBytes);
             batch.writeInt(payload.length).writeBytes(payload);
         }
     }

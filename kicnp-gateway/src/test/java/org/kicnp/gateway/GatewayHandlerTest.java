@@ -77,7 +77,10 @@ class GatewayHandlerTest {
     void oversizeFrame_isRefusedBeforeItsBytesArrive() {
         io.netty.buffer.ByteBuf header = Unpooled.buffer(4).writeInt(4097);
         ch.writeInbound(header);
-        assertError(ErrorCode.FRAME_TOO_LARGE, "4101");
+        // The sizes of the payload, as the agent wrote it and as docs/protocol.md counts the limit (not with the
+        // 4-byte prefix that Netty's own message adds).
+        assertError(ErrorCode.FRAME_TOO_LARGE, "A frame of 4097 bytes is longer than this server accepts "
+                + "(4096 bytes at most).");
         assertThat(ch.isOpen()).isFalse();
     }
 
@@ -105,6 +108,39 @@ class GatewayHandlerTest {
 
         ch.close();
         assertThat(kb.contains("agent_scout")).isFalse();
+    }
+
+    /** Capability frames travel one per text; a frame below a capability class inherits its list's item type. */
+    @Test
+    void register_ofAClassAndASubclassWhoseListDefaultTakesTheClassArgument_storesBothAsSent() {
+        authenticate();
+        Frame skill = Frame.classFrame("Skill").slot(org.kicnp.core.Slot.builder("levels", org.kicnp.core.DataType.LIST)
+                .argument("TYPE_INT").build()).build();
+        Frame fast = Frame.classFrame("FastSkill").parent("Skill").slot(org.kicnp.core.Slot.builder("levels",
+                org.kicnp.core.DataType.LIST).defaultValue(new org.kicnp.core.Value.Lst(List.of(
+                        new org.kicnp.core.Value.Int(1), new org.kicnp.core.Value.Int(2)))).build()).build();
+
+        ch.writeInbound(Wire.frame(new Message.Register("2", org.kicnp.protocol.FrameText.toXml(List.of(skill, fast)))));
+
+        assertThat(Wire.written(ch)).containsExactly(new Message.Ack("2"));
+        assertThat(kb.require("FastSkill")).isEqualTo(fast);
+    }
+
+    /** Two capability frames of one name: which is meant is unknown, so neither is stored. */
+    @Test
+    void register_namingOneFrameTwice_isRejectedAndChangesNothing() {
+        authenticate();
+        List<String> capabilities = org.kicnp.protocol.FrameText.toXml(List.of(Frame.classFrame("Fetch").build(),
+                Frame.classFrame("Fetch").slot(org.kicnp.core.Slot.builder("item", org.kicnp.core.DataType.STRING)
+                        .build()).build()));
+
+        ch.writeInbound(Wire.frame(new Message.Register("2", capabilities)));
+
+        assertThat(Wire.written(ch)).singleElement().isInstanceOfSatisfying(Message.ErrorReply.class, e -> {
+            assertThat(e.code()).isEqualTo(ErrorCode.REJECTED);
+            assertThat(e.message()).contains("'Fetch' is defined twice");
+        });
+        assertThat(kb.contains("Fetch")).isFalse();
     }
 
     @Test

@@ -36,6 +36,7 @@ class PlatformLinkTest {
                 new org.kicnp.core.Change.Add(Frame.instance("Robovie", "Humanoid").build()),
                 new org.kicnp.core.Change.Add(Frame.classFrame("Drink").build())));
         AgentDirectory peers = AgentDirectory.empty().with("lab-a", "a-token", AgentKind.PEER)
+                .with("lab-c", "c-token", AgentKind.PEER)
                 .with("alice", "alice-token", AgentKind.USER);
         local = GatewayServer.start(GatewayConfig.defaults().withPort(0).withServerName("lab-a"), peers, here,
                 FeedbackListener.NONE);
@@ -89,5 +90,132 @@ class PlatformLinkTest {
             assertThatThrownBy(() -> alice.push(here.frames())).isInstanceOfSatisfying(RequestRefusedException.class,
                     e -> assertThat(e.code()).isEqualTo(ErrorCode.FORBIDDEN));
         }
+    }
+    /** Frames travel one per text; an instance's list items take their type from its class in the same push. */
+    @Test
+    void push_ofClassAndInstanceWhoseListItemsTakeTheClassArgument_isStoredThereEqual() {
+        Frame scored = Frame.classFrame("Scored").slot(Slot.builder("marks", DataType.LIST).argument("TYPE_INT").build())
+                .build();
+        Frame game = Frame.instance("game1", "Scored").slot(Slot.ofValue("marks", DataType.LIST,
+                new Value.Lst(java.util.List.of(new Value.Int(3), new Value.Int(5))))).build();
+        here.apply(java.util.List.of(new org.kicnp.core.Change.Add(scored), new org.kicnp.core.Change.Add(game)));
+
+        link.push(here, Optional.of("Scored"));
+
+        assertThat(there.require("game1")).isEqualTo(game);
+    }
+
+    @Test
+    void pull_ofClassAndInstanceWhoseListItemsTakeTheClassArgument_bringsThemBackEqual() {
+        Frame scored = Frame.classFrame("Scored").slot(Slot.builder("marks", DataType.LIST).argument("TYPE_INT").build())
+                .build();
+        Frame game = Frame.instance("game1", "Scored").slot(Slot.ofValue("marks", DataType.LIST,
+                new Value.Lst(java.util.List.of(new Value.Int(3), new Value.Int(5))))).build();
+        there.apply(java.util.List.of(new org.kicnp.core.Change.Add(scored), new org.kicnp.core.Change.Add(game)));
+
+        assertThat(link.pull(Optional.of("Scored"))).containsExactly(scored, game);
+        link.pullInto(here, Optional.of("Scored"));
+        assertThat(here.require("game1")).isEqualTo(game);
+    }
+    /** Two different frames under one name in one push: which one is meant is unknown, so none is stored. */
+    @Test
+    void push_namingOneFrameTwice_isRefusedNamingItAndChangesNothing() {
+        try (org.kicnp.agent.UserAgent peer = new org.kicnp.agent.UserAgent(
+                AgentOptions.of("127.0.0.1", remote.port(), "lab-c", AgentKind.PEER, "c-token"))) {
+            peer.startAndAwait(Duration.ofSeconds(10));
+            Frame first = Frame.classFrame("Drink").slot(Slot.builder("hot", DataType.BOOLEAN).build()).build();
+            Frame second = Frame.classFrame("Drink").build();
+
+            assertThatThrownBy(() -> peer.push(java.util.List.of(Frame.classFrame("Food").build(), first, second)))
+                    .isInstanceOfSatisfying(RequestRefusedException.class,
+                            e -> assertThat(e.code()).isEqualTo(ErrorCode.REJECTED))
+                    .hasMessageContaining("'Drink' is defined twice").hasMessageContaining("#2");
+            assertThat(there.frames()).extracting(Frame::name).doesNotContain("Food", "Drink");
+        }
+    }
+    /** A push larger than the receiver's frame limit cannot be stored; the pusher must hear why, and nothing changes. */
+    @Test
+    void push_largerThanTheReceiversFrameLimit_failsSayingSoAndChangesNothing() {
+        java.util.List<org.kicnp.core.Change> many = new java.util.ArrayList<>();
+        many.add(new org.kicnp.core.Change.Add(Frame.classFrame("Note").slot(Slot.builder("text", DataType.STRING)
+                .build()).build()));
+        for (int i = 0; i < 3_000; i++) {
+            many.add(new org.kicnp.core.Change.Add(Frame.instance("note" + i, "Note")
+                    .slot(Slot.ofValue("text", DataType.STRING, Value.of("x".repeat(400)))).build()));
+        }
+        here.apply(many);
+        AgentOptions generous = AgentOptions.of("127.0.0.1", remote.port(), "lab-c", AgentKind.PEER, "c-token");
+        generous = new AgentOptions(generous.host(), generous.port(), generous.name(), generous.kind(),
+                generous.token(), generous.requestTimeout(), generous.heartbeatInterval(), generous.serverSilence(),
+                generous.backoffInitial(), generous.backoffMax(), 64 << 20, generous.socketFactory());
+
+        try (PlatformLink big = PlatformLink.connect(generous, Duration.ofSeconds(10))) {
+            assertThatThrownBy(() -> big.push(here, Optional.of("Note")))
+                    .isInstanceOfSatisfying(RequestRefusedException.class,
+                            e -> assertThat(e.code()).isEqualTo(ErrorCode.FRAME_TOO_LARGE))
+                    .hasMessageContaining("longer than this server accepts (1048576 bytes at most)");
+        }
+        assertThat(there.contains("Note")).isFalse();
+    }
+
+    /**
+     * A push longer than the pusher's own frame limit is not sent at all: a large one would be cut off by the
+     * receiver while it is still being written, and the pusher would only hear "connection reset".
+     */
+    @Test
+    void push_largerThanThePushersFrameLimit_isNotSentAndTheLinkStaysUp() {
+        java.util.List<org.kicnp.core.Change> many = new java.util.ArrayList<>();
+        many.add(new org.kicnp.core.Change.Add(Frame.classFrame("Note").slot(Slot.builder("text", DataType.STRING)
+                .build()).build()));
+        for (int i = 0; i < 300; i++) {
+            many.add(new org.kicnp.core.Change.Add(Frame.instance("note" + i, "Note")
+                    .slot(Slot.ofValue("text", DataType.STRING, Value.of("x".repeat(400)))).build()));
+        }
+        here.apply(many);
+        AgentOptions small = AgentOptions.of("127.0.0.1", remote.port(), "lab-c", AgentKind.PEER, "c-token");
+        small = new AgentOptions(small.host(), small.port(), small.name(), small.kind(), small.token(),
+                small.requestTimeout(), small.heartbeatInterval(), small.serverSilence(), small.backoffInitial(),
+                small.backoffMax(), 64 << 10, small.socketFactory());
+
+        try (PlatformLink tight = PlatformLink.connect(small, Duration.ofSeconds(10))) {
+            assertThatThrownBy(() -> tight.push(here, Optional.of("Note")))
+                    .isInstanceOfSatisfying(RequestRefusedException.class,
+                            e -> assertThat(e.code()).isEqualTo(ErrorCode.FRAME_TOO_LARGE))
+                    .hasMessageContaining("The push message is")
+                    .hasMessageContaining("more than one message may carry (65536 bytes")
+                    .hasMessageContaining("nothing was sent");
+            assertThat(there.contains("Note")).isFalse();
+            assertThat(tight.pull(Optional.empty())).as("still connected").extracting(Frame::name).doesNotContain("Note");
+        }
+    }
+    /** An answer longer than one message may carry is refused as such; the link stays up for smaller pulls. */
+    @Test
+    void pull_ofMoreThanOneMessageCarries_isRefusedSayingSoAndTheLinkStaysUp() {
+        java.util.List<org.kicnp.core.Change> many = new java.util.ArrayList<>();
+        many.add(new org.kicnp.core.Change.Add(Frame.classFrame("Note").slot(Slot.builder("text", DataType.STRING)
+                .build()).build()));
+        for (int i = 0; i < 3_000; i++) {
+            many.add(new org.kicnp.core.Change.Add(Frame.instance("note" + i, "Note")
+                    .slot(Slot.ofValue("text", DataType.STRING, Value.of("x".repeat(400)))).build()));
+        }
+        there.apply(many);
+        there.add(Frame.classFrame("Small").build());
+
+        assertThatThrownBy(() -> link.pull(Optional.of("Note")))
+                .isInstanceOfSatisfying(RequestRefusedException.class,
+                        e -> assertThat(e.code()).isEqualTo(ErrorCode.REJECTED))
+                .hasMessageContaining("more than one message may carry (1048576 bytes)");
+        assertThat(link.pull(Optional.of("Small"))).extracting(Frame::name).containsExactly("Small");
+    }
+    /** "Parents first" (docs/protocol.md): also for a frame moved below a class added after it. */
+    @Test
+    void pull_ofAFrameMovedBelowALaterClass_givesTheParentFirst() {
+        there.add(Frame.classFrame("Machine").build());
+        there.add(Frame.classFrame("Vehicle").build());
+        there.replace(Frame.classFrame("Machine").parent("Vehicle").build());
+        there.add(Frame.instance("car1", "Machine").build());
+
+        assertThat(link.pull(Optional.of("Vehicle"))).extracting(Frame::name)
+                .containsExactly("Vehicle", "Machine", "car1");
     }
 }

@@ -3,6 +3,7 @@ package org.kicnp.protocol;
 import static java.util.Objects.requireNonNull;
 
 import java.util.List;
+import java.util.function.IntFunction;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.xml.KnowledgeLoader;
@@ -42,6 +43,19 @@ public final class FrameText {
      */
     public static List<Frame> parse(String xml, String source, KnowledgeBase context) {
         return KnowledgeLoader.parseText(requireNonNull(xml, "xml"), source, context).stream()
+                .map(SourcedFrame::frame).toList();
+    }
+
+    /**
+     * Parses several XML texts as one set, as frames sent one per text (a push, the answer to a pull) must be: a
+     * frame inherits declarations (a list slot's ARGUMENT) from the others whatever their order, then from
+     * {@code context}, and a name given twice is an error.
+     *
+     * @param source names the text at each index in error messages, such as {@code "push from 'lab-a' #3"}
+     * @throws org.kicnp.core.KnowledgeException listing every problem with its text, line and column
+     */
+    public static List<Frame> parse(List<String> xml, IntFunction<String> source, KnowledgeBase context) {
+        return KnowledgeLoader.parseTexts(requireNonNull(xml, "xml"), source, context).stream()
                 .map(SourcedFrame::frame).toList();
     }
 }

@@ -67,6 +67,12 @@ final class FileLayout {
         return Optional.ofNullable(homes.get(name));
     }
 
+    /** The durable frame of that name as the files will hold it, if there is one. */
+    Optional<Frame> frame(String name) {
+        Path home = homes.get(name);
+        return home == null ? Optional.empty() : Optional.ofNullable(files.get(home).get(name));
+    }
+
     /** Every durable frame, file by file in file order. */
     Map<String, Frame> frames() {
         Map<String, Frame> all = new LinkedHashMap<>();

@@ -104,10 +104,48 @@ final class Journal implements AutoCloseable {
                         + ") although newer segments follow it; a crash cannot leave that, so the store will not guess."
                         + " Restore the directory from a backup or move the segment away to drop its later changes.");
             }
+            long intact = intactEntryAfter(ch, pos, size);
+            if (intact >= 0) {
+                throw new StoreException("Journal segment '" + segment + "' is damaged at byte " + pos + " (" + problem
+                        + ") although an intact record follows at byte " + intact + "; a crash tears only the last "
+                        + "record, so the store will not guess and leaves the segment as it is. Restore the directory "
+                        + "from a backup, or cut the segment at byte " + pos + " to drop the changes from there on.");
+            }
             LOG.warn("Journal segment '{}' ends with an incomplete entry at byte {} ({}); that change was never "
                     + "acknowledged. Cutting off {} bytes.", segment, pos, problem, size - pos);
             ch.truncate(pos);
             disk.force(ch);
+        }
+    }
+
+    /**
+     * Where the first intact entry after a damaged one at {@code damaged} starts, or -1. An append that a crash cut
+     * short is the last one, so an intact entry after the damage means the damage is something else.
+     */
+    private static long intactEntryAfter(FileChannel ch, long damaged, long size) throws IOException {
+        ByteBuffer chunk = ByteBuffer.allocate(1 << 16);
+        for (long start = damaged + 1; start <= size - HEADER; start += chunk.capacity() - 3) {
+            chunk.clear();
+            readAtMost(ch, chunk, start);
+            chunk.flip();
+            for (int i = 0; i + 4 <= chunk.limit(); i++) {
+                if (chunk.getInt(i) == MAGIC && start + i <= size - HEADER
+                        && readEntry(ch, start + i, size).problem() == null) {
+                    return start + i;
+                }
+            }
+            if (chunk.limit() < chunk.capacity()) {
+                break;
+            }
+        }
+        return -1;
+    }
+
+    private static void readAtMost(FileChannel ch, ByteBuffer buf, long pos) throws IOException {
+        while (buf.hasRemaining()) {
+            if (ch.read(buf, pos + buf.position()) < 0) {
+                return;
+            }
         }
     }
 
@@ -211,8 +249,15 @@ final class Journal implements AutoCloseable {
     /** Starts a new segment for further appends and returns the older ones, which compaction will fold and delete. */
     List<Path> roll() throws IOException {
         List<Path> old = new ArrayList<>(segments.values());
-        active.close();
+        FileChannel previous = active;
+        // The new segment first: if it cannot be made (no descriptor or directory entry to spare), appends go on
+        // into the current one, rather than into a closed channel until the store is reopened.
         startSegment(segments.lastKey() + 1);
+        try {
+            previous.close();
+        } catch (IOException e) {
+            LOG.warn("Closing journal segment '{}' failed: {}", old.get(old.size() - 1), e.getMessage());
+        }
         pendingRecords = 0;
         pendingBytes = 0;
         return old;
@@ -227,12 +272,20 @@ final class Journal implements AutoCloseable {
         disk.syncDirectory(dir);
     }
 
+    /** Creates segment {@code number} and makes it the active one; on failure the active segment stays as it was. */
     private void startSegment(long number) throws IOException {
         Path p = dir.resolve(String.format("journal-%020d", number));
-        active = FileChannel.open(p, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
+        FileChannel created = FileChannel.open(p, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
+        try {
+            disk.syncDirectory(dir);
+        } catch (IOException e) {
+            created.close();
+            Files.deleteIfExists(p);
+            throw e;
+        }
+        active = created;
         activeSize = 0;
         segments.put(number, p);
-        disk.syncDirectory(dir);
     }
 
     @Override

@@ -10,6 +10,8 @@ import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
+import java.util.function.Function;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.xml.KnowledgeLoader;
@@ -60,8 +62,11 @@ final class JournalCodec {
      *
      * @param where names the record in messages, such as {@code journal-…0003 at byte 512}
      * @param context the knowledge base the XML reader resolves names against
+     * @param above the frames as the records before this one left them, by name: a put inherits declarations (a list
+     *     slot's ARGUMENT) from them, not from {@code context}, which does not hold the journal's changes yet
      */
-    static JournalRecord decode(byte[] payload, String where, KnowledgeBase context) {
+    static JournalRecord decode(byte[] payload, String where, KnowledgeBase context,
+            Function<String, Optional<Frame>> above) {
         try {
             DataInputStream in = new DataInputStream(new ByteArrayInputStream(payload));
             long version = in.readLong();
@@ -74,7 +79,7 @@ final class JournalCodec {
                 byte tag = in.readByte();
                 String text = readString(in, payload.length);
                 ops.add(switch (tag) {
-                    case PUT -> new JournalRecord.Put(frameOf(text, where, context));
+                    case PUT -> new JournalRecord.Put(frameOf(text, where, context, above));
                     case DELETE -> new JournalRecord.Delete(text);
                     default -> throw new StoreException("The journal record " + where + " has an unknown operation tag "
                             + tag + ".");
@@ -96,8 +101,9 @@ final class JournalCodec {
         return w.toString();
     }
 
-    private static Frame frameOf(String xml, String where, KnowledgeBase context) {
-        List<SourcedFrame> frames = KnowledgeLoader.parseText(xml, where, context);
+    private static Frame frameOf(String xml, String where, KnowledgeBase context,
+            Function<String, Optional<Frame>> above) {
+        List<SourcedFrame> frames = KnowledgeLoader.parseTextAbove(xml, where, context, above);
         if (frames.size() != 1) {
             throw new StoreException("The journal record " + where + " holds " + frames.size()
                     + " frames in one put instead of one.");

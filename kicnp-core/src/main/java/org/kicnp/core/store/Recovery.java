@@ -4,14 +4,19 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
+import java.util.function.Function;
 import org.kicnp.core.BatchRejectedException;
 import org.kicnp.core.Change;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Problem;
 import org.kicnp.core.xml.KnowledgeLoader;
+import org.kicnp.core.xml.SourceLocation;
 import org.kicnp.core.xml.SourcedFrame;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -29,6 +34,10 @@ final class Recovery {
     private final Path metaDir;
     private final Disk disk;
     private final FileLayout layout;
+    /** Where each frame read from the XML files is written, to name it in a message. */
+    private final Map<String, SourceLocation> inFiles = new HashMap<>();
+    /** The journal record that last put or deleted each name, to name it in a message. */
+    private final Map<String, String> inJournal = new HashMap<>();
 
     Recovery(Path dir, Path metaDir, Disk disk, FileLayout layout) {
         this.dir = dir;
@@ -49,8 +58,12 @@ final class Recovery {
         Journal journal = Journal.open(metaDir, disk, entries);
         int changed;
         try {
+            // A record was written against the frames the records before it left, not against the files alone.
+            Function<String, Optional<Frame>> above = name -> layout.frame(name).or(() -> kb.frame(name));
             for (Journal.Entry e : entries) {
-                layout.apply(JournalCodec.decode(e.payload(), e.where(), kb));
+                JournalRecord record = JournalCodec.decode(e.payload(), e.where(), kb, above);
+                record.ops().forEach(op -> inJournal.put(op.name(), e.where()));
+                layout.apply(record);
             }
             changed = reconcile(kb);
         } catch (RuntimeException e) {
@@ -92,6 +105,7 @@ final class Recovery {
             return;
         }
         for (SourcedFrame sf : KnowledgeLoader.load(kb, files)) {
+            inFiles.put(sf.frame().name(), sf.location());
             Path home = homeBySource.get(sf.location().source());
             if (home == null) {
                 throw new StoreException("The XML loader named the source of frame '" + sf.frame().name() + "' as '"
@@ -101,6 +115,35 @@ final class Recovery {
                 layout.loaded(home, sf.frame()); // a RUNTIME fixture is loaded each time but never written
             }
         }
+    }
+
+    /**
+     * Where the frames the problems name (their own frame, and frames quoted in the message) are written: the journal
+     * record that last changed one, else its place in the XML files; empty when there is nothing to say.
+     */
+    private String places(List<Problem> problems) {
+        Set<String> names = new LinkedHashSet<>();
+        for (Problem p : problems) {
+            names.add(p.frame());
+            String m = p.message();
+            for (int open = m.indexOf('\''); open >= 0; ) {
+                int close = m.indexOf('\'', open + 1);
+                if (close < 0) {
+                    break;
+                }
+                names.add(m.substring(open + 1, close));
+                open = m.indexOf('\'', close + 1);
+            }
+        }
+        List<String> out = new ArrayList<>();
+        for (String n : names) {
+            if (inJournal.containsKey(n)) {
+                out.add("'" + n + "' changed by the journal record " + inJournal.get(n));
+            } else if (inFiles.containsKey(n)) {
+                out.add("'" + n + "' at " + inFiles.get(n));
+            }
+        }
+        return out.isEmpty() ? "" : " Where they are: " + String.join("; ", out) + ".";
     }
 
     /** Brings the knowledge base to the frames of the layout in one batch; returns the number of frames changed. */
@@ -124,7 +167,8 @@ final class Recovery {
             kb.apply(changes);
         } catch (BatchRejectedException e) {
             throw new StoreException("The journal of '" + dir + "' does not replay onto its XML files: "
-                    + e.getMessage() + " The journal is kept unchanged; fix the XML files and open the store again.", e);
+                    + e.getMessage() + places(e.problems()) + " The journal is kept unchanged; fix the XML files and "
+                    + "open the store again.", e);
         }
         return changes.size();
     }

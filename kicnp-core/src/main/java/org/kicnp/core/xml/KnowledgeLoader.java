@@ -13,8 +13,10 @@ import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
 import java.util.function.Function;
+import java.util.function.IntFunction;
 import org.kicnp.core.BatchRejectedException;
 import org.kicnp.core.Change;
 import org.kicnp.core.Frame;
@@ -110,14 +112,53 @@ public final class KnowledgeLoader {
         });
     }
 
+    /**
+     * Reads frames from text written against a state that {@code context} does not hold: the frames above those read
+     * (whose declarations, such as a list slot's ARGUMENT, they inherit) are looked up with {@code above} instead. The
+     * knowledge store reads a journal record so, against the frames as the records before it left them.
+     *
+     * @throws KnowledgeXmlException listing every error found
+     */
+    public static List<SourcedFrame> parseTextAbove(String xml, String sourceName, KnowledgeBase context,
+            Function<String, Optional<Frame>> above) {
+        requireNonNull(above, "above");
+        return parseChecked(List.of(xml), i -> sourceName, context, above, null);
+    }
+
+    /**
+     * Reads several texts as one set, as {@link #parse} reads several files: a frame inherits declarations from the
+     * frames of every text, then from {@code context}, and a name defined twice is an error. Frames sent one text
+     * each (a push, the answer to a pull) are read so, whatever their order.
+     *
+     * @param sourceName what errors name as the source of the text at each index
+     * @throws KnowledgeXmlException listing every error found
+     */
+    public static List<SourcedFrame> parseTexts(List<String> texts, IntFunction<String> sourceName,
+            KnowledgeBase context) {
+        requireNonNull(context, "context");
+        return parseChecked(texts, sourceName, context, context::frame, null);
+    }
+
     private static List<SourcedFrame> parseText(String xml, String sourceName, KnowledgeBase context,
             Function<List<Frame>, List<Problem>> check) {
-        requireNonNull(xml, "xml");
+        requireNonNull(context, "context");
+        return parseChecked(List.of(requireNonNull(xml, "xml")), i -> sourceName, context, context::frame, check);
+    }
+
+    private static List<SourcedFrame> parseChecked(List<String> texts, IntFunction<String> sourceName,
+            KnowledgeBase context, Function<String, Optional<Frame>> above, Function<List<Frame>, List<Problem>> check) {
+        requireNonNull(texts, "texts");
         requireNonNull(sourceName, "sourceName");
         requireNonNull(context, "context");
-        LoadSession session = new LoadSession(context, xml.length() > PIPELINE_CHARS, null, check);
+        long chars = 0;
+        for (String t : texts) {
+            chars += requireNonNull(t, "text").length();
+        }
+        LoadSession session = new LoadSession(context, above, chars > PIPELINE_CHARS, null, check);
         try {
-            session.readText(xml, sourceName);
+            for (int i = 0; i < texts.size(); i++) {
+                session.readText(texts.get(i), requireNonNull(sourceName.apply(i), "sourceName"));
+            }
             return sourced(session.finish());
         } finally {
             session.abandon();

@@ -42,6 +42,8 @@ final class LoadSession {
     private static final int STREAM_CHUNK = 512;
 
     private final KnowledgeBase context;
+    /** The frames above those read, by name: the context's, unless the caller reads against another state. */
+    private final Function<String, Optional<Frame>> above;
     private final XMLInputFactory factory = SecureXml.inputFactory();
     private final long maxBytes = SecureXml.maxFileBytes();
     /** Errors found while mapping (on the mapping thread when there is one) and after. */
@@ -94,7 +96,17 @@ final class LoadSession {
      */
     LoadSession(KnowledgeBase context, boolean pipelined, StagedBatch target,
             Function<List<Frame>, List<Problem>> check) {
+        this(context, context::frame, pipelined, target, check);
+    }
+
+    /**
+     * @param above where the declarations of frames not read are looked up, instead of {@code context}: for text
+     *     written against a state the knowledge base does not hold (yet), such as a journal record replayed later
+     */
+    LoadSession(KnowledgeBase context, Function<String, Optional<Frame>> above, boolean pipelined, StagedBatch target,
+            Function<List<Frame>, List<Problem>> check) {
         this.context = context;
+        this.above = above;
         this.target = target;
         this.check = check;
         this.pipeline = pipelined ? new MappingPipeline(this::accept) : null;
@@ -296,7 +308,7 @@ final class LoadSession {
                 return true;
             }
             ParsedFrame read = good.get(p);
-            Frame up = read != null ? read.sourced().frame() : context.frame(p).orElse(null);
+            Frame up = read != null ? read.sourced().frame() : above.apply(p).orElse(null);
             p = up == null ? null : up.parent().orElse(null);
         }
         return false;
@@ -392,7 +404,7 @@ final class LoadSession {
         while (current != null && visited.add(current)) {
             Frame f = byName.get(current);
             if (f == null && !unmapped.containsKey(current)) {
-                f = context.frame(current).orElse(null);
+                f = above.apply(current).orElse(null);
             }
             if (f != null) {
                 Optional<String> own = f.ownSlot(slot).flatMap(Slot::argument);
@@ -446,7 +458,7 @@ final class LoadSession {
                 current = e.present(FrameTag.ISA).map(Located::stripped).orElse(null);
                 continue;
             }
-            Optional<Frame> known = context.frame(current);
+            Optional<Frame> known = above.apply(current);
             if (known.isEmpty()) {
                 return Optional.empty();
             }

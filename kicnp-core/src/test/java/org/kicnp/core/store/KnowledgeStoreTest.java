@@ -294,4 +294,25 @@ class KnowledgeStoreTest {
             assertThat(store.kb().contains("ann")).isTrue();
         }
     }
+    /**
+     * A record is read back after the records before it: an instance whose LIST slot takes its item type from a
+     * class that an earlier record added must come back with the same items, not fail to open.
+     */
+    @Test
+    void reopen_instanceWhoseListItemTypeComesFromAClassAddedEarlierInTheJournal_comesBackEqual() throws Exception {
+        Path dir = baseDir(tmp);
+        Frame scored = Frame.classFrame("Scored").slot(org.kicnp.core.Slot.builder("marks",
+                org.kicnp.core.DataType.LIST).argument("TYPE_INT").build()).build();
+        Frame game = Frame.instance("game1", "Scored").slot(org.kicnp.core.Slot.ofValue("marks",
+                org.kicnp.core.DataType.LIST, new org.kicnp.core.Value.Lst(List.of(new org.kicnp.core.Value.Int(3),
+                        new org.kicnp.core.Value.Int(5))))).build();
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET)) {
+            store.kb().add(scored);
+            store.kb().add(game);
+        }
+
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET)) {
+            assertThat(store.kb().require("game1")).isEqualTo(game);
+        }
+    }
 }

@@ -192,4 +192,81 @@ class StoreRecoveryTest {
             assertThat(journalSegments(dir)).hasSize(1);
         }
     }
+    /**
+     * A crash can tear only the last record of the newest segment. A damaged record with intact ones after it is
+     * something else (a bad disk, an edit): cutting there would drop acknowledged changes for good.
+     */
+    @Test
+    void open_whenARecordOfTheNewestSegmentIsDamagedButIntactOnesFollow_refusesAndKeepsTheJournal() throws Exception {
+        Path dir = baseDir(tmp);
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET)) {
+            store.kb().add(learnedUser("ann", 1));
+            store.kb().add(learnedUser("bob", 1));
+            store.kb().add(learnedUser("cid", 1));
+        }
+        Path segment = journalSegments(dir).get(0);
+        try (RandomAccessFile f = new RandomAccessFile(segment.toFile(), "rw")) {
+            f.seek(Journal.HEADER + 20); // inside ann's payload
+            int b = f.read();
+            f.seek(Journal.HEADER + 20);
+            f.write(b ^ 0x5A);
+        }
+        byte[] damaged = Files.readAllBytes(segment);
+
+        assertThatThrownBy(() -> KnowledgeStore.open(dir, QUIET)).isInstanceOf(StoreException.class)
+                .hasMessageContaining("journal-00000000000000000001").hasMessageContaining("at byte 0")
+                .hasMessageContaining("checksum mismatch").hasMessageContaining("intact record");
+        assertThat(Files.readAllBytes(segment)).as("the journal is kept for a person to look at").isEqualTo(damaged);
+    }
+    /**
+     * A compaction that cannot start a new journal segment (no file descriptor or directory entry to spare) must not
+     * take the journal down with it: changes go on into the current segment, and a later compaction works.
+     */
+    @Test
+    void compact_whenTheNewSegmentCannotBeCreated_failsAndChangesGoOnIntoTheCurrentOne() throws Exception {
+        Path dir = baseDir(tmp);
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET)) {
+            store.kb().add(learnedUser("ann", 1));
+            Path blocker = Files.createDirectories(dir.resolve(".kicnp/journal-00000000000000000002"));
+
+            assertThatThrownBy(store::compact).isInstanceOf(StoreException.class)
+                    .hasMessageContaining("Could not start a new journal segment");
+            store.kb().add(learnedUser("bob", 1));
+
+            Files.delete(blocker);
+            store.compact();
+            assertThat(StoreFixtures.namesIn(dir.resolve("learned.xml"))).containsExactly("ann", "bob");
+        }
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET)) {
+            assertThat(store.kb().contains("bob")).isTrue();
+        }
+    }
+    /**
+     * Edited by hand after a crash, the files no longer take the journal: the message must say where the frames it
+     * names are written, the hand-written one at its file and line, the other at its journal record.
+     */
+    @Test
+    void open_whenAHandEditConflictsWithTheJournal_namesTheFileAndLineAndTheJournalRecord() throws Exception {
+        Path dir = baseDir(tmp);
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET)) {
+            store.kb().add(org.kicnp.core.Frame.classFrame("Gadget").build());
+            store.compact();
+            store.kb().remove("Gadget"); // in the journal only: the process dies before it is folded
+        }
+        Files.writeString(dir.resolve("mine.xml"), """
+                <?xml version="1.0" encoding="UTF-8"?>
+                <KNOWLEDGEBASE>
+                  <FRAME>
+                    <NAME>Phone</NAME>
+                    <ISA>Gadget</ISA>
+                  </FRAME>
+                </KNOWLEDGEBASE>
+                """);
+
+        assertThatThrownBy(() -> KnowledgeStore.open(dir, QUIET)).isInstanceOf(StoreException.class)
+                .hasMessageContaining("'Gadget' cannot be removed")
+                .hasMessageContaining("'Phone' at " + dir.resolve("mine.xml") + ":3:")
+                .hasMessageContaining("Where they are: 'Gadget' changed by the journal record "
+                        + "journal-00000000000000000002 at byte 0");
+    }
 }
