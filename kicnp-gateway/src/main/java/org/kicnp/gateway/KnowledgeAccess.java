@@ -56,7 +56,8 @@ final class KnowledgeAccess implements KnowledgeListener {
         if (c.get().isInstance()) {
             return notAClass(q.id(), q.ofClass(), "query");
         }
-        return new Message.Frames(q.id(), FrameText.toXml(kb.instancesOf(q.ofClass())));
+        return new Message.Frames(q.id(), FrameText.toXml(kb.instancesOf(q.ofClass()).stream()
+                .map(this::selfDescribed).toList()));
     }
 
     /** A slot's effective value; an empty answer means the slot has no value, a slot no frame declares is refused. */
@@ -328,6 +329,27 @@ final class KnowledgeAccess implements KnowledgeListener {
         }
     }
 
+    /**
+     * An instance as an agent reads it alone: each list slot that takes its item type from a class above (its own
+     * slot names no ARGUMENT) names it, so that the agent, which has no classes to read it against, gets the items
+     * typed as they are (1.5, not "1.5"). The frame is otherwise as stored.
+     */
+    private Frame selfDescribed(Frame f) {
+        if (!f.isInstance()) {
+            return f;
+        }
+        Frame out = f;
+        for (Slot own : f.slots()) {
+            if (own.type() == DataType.LIST && own.argument().isEmpty()) {
+                Optional<String> inherited = kb.slot(f.name(), own.name()).flatMap(e -> e.slot().argument());
+                if (inherited.isPresent()) {
+                    out = out.withSlot(own.toBuilder().argument(inherited.get()).build());
+                }
+            }
+        }
+        return out;
+    }
+
     private Set<String> classesOf(Frame f) {
         Set<String> out = new HashSet<>();
         f.parent().ifPresent(p -> {
@@ -339,12 +361,12 @@ final class KnowledgeAccess implements KnowledgeListener {
         return out;
     }
 
-    private static Message.Changed notification(String ofClass, FrameEvent e) {
+    private Message.Changed notification(String ofClass, FrameEvent e) {
         return switch (e) {
             case FrameEvent.Added a -> new Message.Changed(ofClass, ChangeKind.ADDED, a.name(),
-                    Optional.of(FrameText.toXml(a.frame())));
+                    Optional.of(FrameText.toXml(selfDescribed(a.frame()))));
             case FrameEvent.Replaced r -> new Message.Changed(ofClass, ChangeKind.REPLACED, r.name(),
-                    Optional.of(FrameText.toXml(r.frame())));
+                    Optional.of(FrameText.toXml(selfDescribed(r.frame()))));
             case FrameEvent.Removed r -> new Message.Changed(ofClass, ChangeKind.REMOVED, r.name(), Optional.empty());
         };
     }

@@ -147,6 +147,26 @@ class GatewayEndToEndTest {
     }
 
     @Test
+    void queryAndNotifications_carryAListsItemTypeFromTheClass_soItemsComeBackAsTheyAre() {
+        kb.add(Frame.classFrame("Tray").slot(org.kicnp.core.Slot.builder("weights", org.kicnp.core.DataType.LIST)
+                .argument("TYPE_FLOAT").build()).build());
+        UserAgent alice = user("alice");
+        alice.subscribe("Tray");
+        Value weights = new Value.Lst(List.of(Value.of(1.5), Value.of(0.25)));
+        // The instance's slot names no ARGUMENT of its own: its items are floats because its class says so.
+        kb.add(Frame.instance("tray1", "Tray").provenance(org.kicnp.core.Provenance.RUNTIME)
+                .slot(org.kicnp.core.Slot.ofValue("weights", org.kicnp.core.DataType.LIST, weights)).build());
+
+        assertThat(alice.query("Tray")).singleElement().satisfies(f ->
+                assertThat(f.ownSlot("weights").flatMap(org.kicnp.core.Slot::value)).contains(weights));
+        Eventually.await("alice hears of tray1", () -> !alice.changes().isEmpty());
+        List<Frame> heard = org.kicnp.protocol.FrameText.parse(alice.changes().getFirst().frame().orElseThrow(),
+                "notification", KnowledgeBase.create());
+        assertThat(heard).singleElement().satisfies(f ->
+                assertThat(f.ownSlot("weights").flatMap(org.kicnp.core.Slot::value)).contains(weights));
+    }
+
+    @Test
     void queryAndSubscribe_ofAnInstance_andAskOfASlotNoFrameDeclares_areRefusedInWords() {
         UserAgent alice = user("alice");
         kb.add(Frame.classFrame("Mug").parent("Cup")
