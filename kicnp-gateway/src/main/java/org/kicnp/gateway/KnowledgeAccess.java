@@ -286,13 +286,22 @@ final class KnowledgeAccess implements KnowledgeListener {
                     + " is a " + from.kind().name().toLowerCase(java.util.Locale.ROOT) + " agent.");
         }
         List<Change> changes = new ArrayList<>();
+        List<String> live = new ArrayList<>();
         try {
             // One set, not text by text: an instance's list items take their type from its class in the same push.
             for (Frame f : FrameText.parse(p.frames(), i -> "push from " + from + " #" + (i + 1), kb)) {
                 changes.add(new Change.Put(f));
+                // This platform's live state (presences, sensor signals, what its engine derived) is its own.
+                kb.frame(f.name()).filter(old -> old.isInstance() && old.provenance() == Provenance.RUNTIME)
+                        .ifPresent(old -> live.add("'" + old.name() + "'"));
             }
         } catch (KnowledgeException | IllegalArgumentException e) {
             return ErrorReply.to(p.id(), ErrorCode.REJECTED, e.getMessage());
+        }
+        if (!live.isEmpty()) {
+            return ErrorReply.to(p.id(), ErrorCode.FORBIDDEN, "The push from " + from + " would replace this "
+                    + "platform's runtime instances " + String.join(", ", live) + " (presences, sensor signals, "
+                    + "derived instances); nothing was stored.");
         }
         return apply(p.id(), changes);
     }

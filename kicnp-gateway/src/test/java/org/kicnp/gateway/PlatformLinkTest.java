@@ -66,6 +66,27 @@ class PlatformLinkTest {
     }
 
     @Test
+    void push_thatWouldReplaceTheReceiversRuntimeInstances_isForbiddenWholly_namingThem() {
+        link.push(here, Optional.empty());
+        // There: the presence of the connected peer, and an instance the engine (say) derived at run time.
+        assertThat(there.frame("agent_lab-a").map(Frame::provenance)).contains(org.kicnp.core.Provenance.RUNTIME);
+        there.put(Frame.instance("ghost", "Robot").provenance(org.kicnp.core.Provenance.RUNTIME).build());
+        Frame presence = there.require("agent_lab-a");
+        here.add(Frame.instance("agent_lab-a", "System").build());
+        here.add(Frame.instance("ghost", "Humanoid").build());
+        here.add(Frame.classFrame("Tea").parent("Drink").build());
+
+        assertThatThrownBy(() -> link.push(here, Optional.empty()))
+                .isInstanceOfSatisfying(RequestRefusedException.class,
+                        e -> assertThat(e.code()).isEqualTo(ErrorCode.FORBIDDEN))
+                .hasMessageContaining("'agent_lab-a'").hasMessageContaining("'ghost'")
+                .hasMessageContaining("runtime");
+        assertThat(there.require("agent_lab-a")).isSameAs(presence);
+        assertThat(there.frame("ghost").flatMap(Frame::parent)).contains("Robot");
+        assertThat(there.contains("Tea")).isFalse();
+    }
+
+    @Test
     void push_ofSubtreeWhoseParentIsMissingThere_isRefusedWholly() {
         assertThatThrownBy(() -> link.push(here, Optional.of("Robot")))
                 .isInstanceOfSatisfying(RequestRefusedException.class,
