@@ -308,8 +308,13 @@ final class KnowledgeAccess implements KnowledgeListener {
 
     /** A subtree (the root and every frame below it) or the whole knowledge base, parents first, no RUNTIME frames. */
     Message pull(Message.Pull p) {
-        if (p.root().isPresent() && !kb.contains(p.root().get())) {
+        Optional<Frame> root = p.root().flatMap(kb::frame);
+        if (p.root().isPresent() && root.isEmpty()) {
             return unknown(p.id(), p.root().get());
+        }
+        if (root.isPresent() && !root.get().provenance().durable()) {
+            return ErrorReply.to(p.id(), ErrorCode.REJECTED, "'" + p.root().get() + "' exists only at run time on "
+                    + "this platform; pull sends durable frames (declared and learned), so it has none to send.");
         }
         return new Message.Frames(p.id(), FrameText.toXml(Subtree.of(kb, p.root())));
     }

@@ -101,6 +101,10 @@ class PlatformLinkTest {
         there.put(Frame.instance("ghost", "Robot").provenance(org.kicnp.core.Provenance.RUNTIME).build());
         assertThat(link.pull(Optional.of("Robot"))).extracting(Frame::name)
                 .containsExactly("Robot", "Humanoid", "Robovie");
+        // A root that exists only at run time has no durable frames to send: said in words, not an empty answer.
+        assertThatThrownBy(() -> link.pull(Optional.of("ghost"))).isInstanceOfSatisfying(RequestRefusedException.class,
+                e -> assertThat(e.code()).isEqualTo(ErrorCode.REJECTED))
+                .hasMessageContaining("'ghost' exists only at run time on this platform; pull sends durable frames");
     }
 
     @Test
