@@ -515,35 +515,35 @@ public final class AgentCommand {
             } catch (IllegalArgumentException e) {
                 throw new ParameterException(spec.commandLine(), e.getMessage());
             }
-            long deadline = seconds == null ? Long.MAX_VALUE : System.nanoTime() + Math.round(seconds * 1e9);
-            long period = rate == null ? Long.MAX_VALUE : Math.round(1e9 / rate);
+            // Times as nanoseconds since the start: how long to run (until interrupted: no end) and between sends
+            // (without --rate: one send).
+            long length = seconds == null ? Long.MAX_VALUE : Math.round(seconds * 1e9);
+            long period = rate == null ? 0 : Math.round(1e9 / rate);
             PrintWriter err = spec.commandLine().getErr();
             try (CliAgent a = connect(Hooks.NONE)) {
-                int sent = 0;
-                long next = System.nanoTime();
-                while (true) {
+                long start = System.nanoTime();
+                for (long sent = 1; ; sent++) {
                     if (ttlMs == null) {
                         a.sensor(sensor, read);
                     } else {
                         a.sensor(sensor, Duration.ofMillis(ttlMs), read);
                     }
-                    if (sent++ == 0) {
+                    if (sent == 1) {
                         err.println("Sent signal_" + a.name() + "_" + sensor + (rate == null ? "" : " " + rate
                                 + " times a second") + "; " + (seconds == null ? "interrupt to stop"
                                 : "stopping in " + seconds + " s") + " (the server retracts it then).");
                         err.flush();
                     }
-                    next += period;
-                    long wake = Math.min(next, deadline);
+                    long due = period == 0 ? length : Math.min(length, sent * period);
                     long left;
-                    while ((left = wake - System.nanoTime()) > 0) {
+                    while ((left = due - (System.nanoTime() - start)) > 0) {
                         TimeUnit.NANOSECONDS.sleep(Math.min(left, TimeUnit.SECONDS.toNanos(1)));
                         if (a.stopped().isPresent()) {
                             err.println("kicnp agent sensor: " + a.stopped().get().getMessage());
                             return 1;
                         }
                     }
-                    if (System.nanoTime() - deadline >= 0) {
+                    if (System.nanoTime() - start >= length) {
                         return 0;
                     }
                 }

@@ -374,6 +374,22 @@ class AgentCommandTest {
     }
 
     @Test
+    void sensor_withoutARate_sendsTheSignalOnce_andHoldsItUntilTheRunEnds() throws Exception {
+        CompletableFuture<CliRun> run = CompletableFuture.supplyAsync(() -> agent("sensor", "door", "open",
+                "--for", "2"));
+        awaitTrue(() -> kb.contains("signal_director_door"));
+        long first = kb.revision("signal_director_door");
+        Thread.sleep(1_000);
+        assertThat(kb.contains("signal_director_door") && kb.revision("signal_director_door") == first)
+                .as("sent once: the reading was not replaced").isTrue();
+
+        CliRun r = run.get(30, TimeUnit.SECONDS);
+        assertThat(r.exitCode()).as(r.err()).isZero();
+        assertThat(r.err()).contains("Sent signal_director_door; stopping in 2.0 s");
+        awaitTrue(() -> !kb.contains("signal_director_door"));
+    }
+
+    @Test
     void malformedOptionsAndArguments_areUsageErrors_exit2_namingWhatIsWrong() {
         record Case(List<String> args, String says) { }
         List<Case> cases = List.of(
