@@ -15,6 +15,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
+import org.kicnp.core.Change;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Provenance;
@@ -153,6 +154,53 @@ class EditorBrowserTest {
             assertThat(exit).as(Files.readString(log)).isZero();
         }
         assertThat(artifacts.resolve("07-semantic-links.png")).exists();
+    }
+
+    @Test void page_afterTheServerRestarts_asksForTheLoginAgainAndShowsTheOpenFrameAsItIsNow() throws Exception {
+        Path node = which("node");
+        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && node != null,
+                "Chromium or Node.js is not installed; browser test skipped.");
+        Path e2e = Path.of(System.getProperty("user.dir")).resolve("../editor-e2e").normalize();
+        Path artifacts = Path.of(System.getProperty("user.dir"), "target", "e2e");
+        Files.createDirectories(artifacts);
+        if (!Files.isDirectory(e2e.resolve("node_modules/playwright-core"))) {
+            run(e2e, List.of("npm", "ci", "--no-audit", "--no-fund"), Map.of(), artifacts.resolve("npm-ci.log"), 180);
+        }
+        Path request = artifacts.resolve("restart.request");
+        Path done = artifacts.resolve("restart.done");
+        Files.deleteIfExists(request);
+        Files.deleteIfExists(done);
+        Path log = artifacts.resolve("browser-restart.log");
+        EditorServer first = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD),
+                SampleKnowledge.create());
+        int port = first.port();
+        ProcessBuilder pb = new ProcessBuilder(node.toString(), "restart.e2e.mjs").directory(e2e.toFile())
+                .redirectErrorStream(true).redirectOutput(log.toFile());
+        pb.environment().putAll(Map.of("EDITOR_URL", "http://127.0.0.1:" + port + "/", "EDITOR_PASSWORD", PASSWORD,
+                "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString()));
+        Process browser = pb.start();
+        try {
+            for (long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(60); !Files.exists(request)
+                    && browser.isAlive() && System.nanoTime() < end;) {
+                Thread.sleep(100);
+            }
+            assertThat(request).as(Files.readString(log)).exists();
+            first.close();
+            KnowledgeBase after = SampleKnowledge.create();
+            Frame robot = after.require("Robot");
+            after.apply(List.of(new Change.Put(robot.withSlot(robot.ownSlot("robotName").orElseThrow().toBuilder()
+                    .role("changed while the page was away").build()))));
+            try (EditorServer second = EditorServer.start(EditorConfig.defaults().withPort(port).withPassword(PASSWORD),
+                    after)) {
+                Files.writeString(done, "restarted");
+                assertThat(browser.waitFor(60, TimeUnit.SECONDS)).as("the browser script finished").isTrue();
+            }
+            assertThat(browser.exitValue()).as(Files.readString(log)).isZero();
+        } finally {
+            first.close(); // a second close of a stopped server does nothing
+            browser.destroyForcibly();
+        }
+        assertThat(artifacts.resolve("08-after-restart.png")).exists();
     }
 
     private static int run(Path dir, List<String> command, Map<String, String> env, Path log, int seconds)

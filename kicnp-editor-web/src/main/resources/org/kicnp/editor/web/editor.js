@@ -93,7 +93,9 @@ function connect() {
     const event = JSON.parse(m.data);
     if (event.type === 'hello') {
       setVersion(event.version);
-      loadFrames().catch(() => {});
+      const again = helloSeen;
+      helloSeen = true;
+      (again ? reconnected() : loadFrames()).catch(() => {});
     } else if (event.type === 'change') {
       setVersion(event.version);
       applyChanges(event.events);
@@ -108,6 +110,16 @@ function connect() {
       feedbackEvent(event);
     }
   };
+}
+
+let helloSeen = false;
+
+// Back after the connection dropped: the server may have restarted (its sessions gone) and the changes made in
+// between were never pushed, so the session, the tree and the open frame are read again.
+async function reconnected() {
+  await loadSession();
+  await loadFrames();
+  if (state.frame) selectedChanged(state.byName.get(state.selected) || null);
 }
 
 function setVersion(v) {
@@ -142,20 +154,23 @@ function applyChanges(events) {
   for (const n of state.byName.keys()) if (!order.includes(n)) order.push(n);
   state.frames = order.filter((n) => state.byName.has(n)).map((n) => state.byName.get(n));
   scheduleTreeRender();
-  if (touchedSelected && state.frame) {
-    if (touchedSelected.kind === 'removed') {
+  if (touchedSelected && state.frame) selectedChanged(touchedSelected.kind === 'removed' ? null : touchedSelected.frame);
+}
+
+// The open frame's row as the server now lists it (null: gone): reload it, or say why the edit will be refused.
+function selectedChanged(row) {
+  if (!row) {
+    const stale = $('stale-note');
+    stale.textContent = 'Frame ' + state.selected + ' was removed.';
+    stale.hidden = false;
+  } else if (row.revision !== state.frame.revision) {
+    if (state.dirty) {
       const stale = $('stale-note');
-      stale.textContent = 'Frame ' + state.selected + ' was removed.';
+      stale.textContent = 'Someone else changed ' + state.selected + ' (revision ' + row.revision
+        + '). Saving your edit will be refused; reload to see theirs.';
       stale.hidden = false;
-    } else if (touchedSelected.frame.revision !== state.frame.revision) {
-      if (state.dirty) {
-        const stale = $('stale-note');
-        stale.textContent = 'Someone else changed ' + state.selected + ' (revision ' + touchedSelected.frame.revision
-          + '). Saving your edit will be refused; reload to see theirs.';
-        stale.hidden = false;
-      } else {
-        openFrame(state.selected, true);
-      }
+    } else {
+      openFrame(state.selected, true);
     }
   }
 }
