@@ -203,6 +203,31 @@ class EditorBrowserTest {
         assertThat(artifacts.resolve("08-after-restart.png")).exists();
     }
 
+    @Test void inferenceView_errorOfOneQuestion_goesWithTheNextAnswerAndTakesTheOldAnswersAlong() throws Exception {
+        Path node = which("node");
+        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && node != null,
+                "Chromium or Node.js is not installed; browser test skipped.");
+        Path e2e = Path.of(System.getProperty("user.dir")).resolve("../editor-e2e").normalize();
+        Path artifacts = Path.of(System.getProperty("user.dir"), "target", "e2e");
+        Files.createDirectories(artifacts);
+        if (!Files.isDirectory(e2e.resolve("node_modules/playwright-core"))) {
+            run(e2e, List.of("npm", "ci", "--no-audit", "--no-fund"), Map.of(), artifacts.resolve("npm-ci.log"), 180);
+        }
+        KnowledgeBase kb = SampleKnowledge.create();
+        try (InferenceEngine engine = InferenceEngine.builder(kb).build();
+                EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD),
+                        kb, engine)) {
+            Map<String, String> env = Map.of("EDITOR_URL", "http://127.0.0.1:" + server.port() + "/",
+                    "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString());
+            Path log = artifacts.resolve("browser-inference-errors.log");
+
+            int exit = run(e2e, List.of(node.toString(), "inference-errors.e2e.mjs"), env, log, 60);
+
+            assertThat(exit).as(Files.readString(log)).isZero();
+        }
+        assertThat(artifacts.resolve("09-inference-errors.png")).exists();
+    }
+
     private static int run(Path dir, List<String> command, Map<String, String> env, Path log, int seconds)
             throws IOException, InterruptedException {
         ProcessBuilder pb = new ProcessBuilder(command).directory(dir.toFile()).redirectErrorStream(true)
