@@ -193,6 +193,42 @@ class EditorApiTest {
         assertThat(kb.require("AskUserName")).isEqualTo(before);
     }
 
+    @Test void put_withAValueOfTheWrongTypeAndAnUnknownArgumentClass_listsBothProblemsInOneAnswer() {
+        http.login(PASSWORD);
+        Frame before = kb.require("AskUserName");
+        ObjectNode f = forEditing("AskUserName");
+        ArrayNode slots = (ArrayNode) f.get("slots");
+        ((ObjectNode) slots.get(0)).put("argument", "Martian");
+        slots.addObject().put("name", "mood").put("type", "TYPE_INT").put("value", "happy");
+
+        HttpResponse<String> r = http.put("/api/frames/AskUserName", f.toString());
+
+        assertThat(r.statusCode()).isEqualTo(422);
+        List<String> messages = new ArrayList<>();
+        json(r).get("problems").forEach(p -> messages.add(p.get("frame").asText() + "." + p.get("slot").asText() + ": "
+                + p.get("message").asText()));
+        assertThat(messages).hasSize(2)
+                .anySatisfy(m -> assertThat(m).startsWith("AskUserName.mood: ").contains("'happy' is not an integer"))
+                .anySatisfy(m -> assertThat(m).startsWith("AskUserName.mUser: ").contains("'Martian'"));
+        assertThat(kb.require("AskUserName")).isEqualTo(before);
+    }
+
+    @Test void post_withAValueOfTheWrongTypeAndAnUnknownParent_listsBothProblemsInOneAnswer() {
+        http.login(PASSWORD);
+
+        HttpResponse<String> r = http.post("/api/frames", """
+                {"name": "Cook", "kind": "CLASS", "parent": "Kitchen",
+                 "slots": [{"name": "dishes", "type": "TYPE_INT", "value": "many"}]}""");
+
+        assertThat(r.statusCode()).isEqualTo(422);
+        List<String> messages = new ArrayList<>();
+        json(r).get("problems").forEach(p -> messages.add(p.get("slot").asText() + ": " + p.get("message").asText()));
+        assertThat(messages).hasSize(2)
+                .anySatisfy(m -> assertThat(m).startsWith("dishes: ").contains("'many' is not an integer"))
+                .anySatisfy(m -> assertThat(m).startsWith(": ").contains("'Kitchen'"));
+        assertThat(kb.contains("Cook")).isFalse();
+    }
+
     @Test void put_withSlotsThatAreNotAnArray_answers422AndKeepsEverySlot() {
         http.login(PASSWORD);
         Frame before = kb.require("AskUserName");
