@@ -186,7 +186,13 @@ function wire() {
   $('create-form').addEventListener('submit', create);
   $('create-cancel').addEventListener('click', () => showMain(state.frame ? 'frame-panel' : 'welcome'));
   $('save-button').addEventListener('click', save);
-  $('revert-button').addEventListener('click', () => { setFrame(state.frame); showErrors('frame-errors', null); });
+  $('revert-button').addEventListener('click', () => {
+    setFrame(state.frame);
+    showErrors('frame-errors', null);
+    // Someone else saved it meanwhile: revert to what is there now, not to the revision read before theirs.
+    const row = state.byName.get(state.selected);
+    if (row && row.revision !== state.frame.revision) openFrame(state.selected, true);
+  });
   $('add-slot-button').addEventListener('click', () => {
     state.draft.slots.push({ name: 'newSlot' + (state.draft.slots.length + 1), type: 'TYPE_STR', value: null,
       defaultValue: null, condition: 'COND_ANY', argument: null, required: false, shared: true, unique: false,
