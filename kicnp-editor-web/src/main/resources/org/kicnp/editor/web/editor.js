@@ -180,6 +180,7 @@ function selectedChanged(row) {
 function wire() {
   $('login-form').addEventListener('submit', login);
   $('logout-button').addEventListener('click', logout);
+  window.addEventListener('kicnp-session-lost', () => { loadSession().catch(() => {}); });
   $('search').addEventListener('input', renderTree);
   $('new-frame-button').addEventListener('click', () => startCreate(''));
   $('new-child-button').addEventListener('click', () => startCreate(state.frame.name));
