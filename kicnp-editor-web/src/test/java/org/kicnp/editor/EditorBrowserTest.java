@@ -16,10 +16,12 @@ import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.kicnp.core.Change;
+import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Provenance;
 import org.kicnp.core.Slot;
+import org.kicnp.core.Value;
 import org.kicnp.core.xml.KnowledgeLoader;
 import org.kicnp.inference.GraalScriptHost;
 import org.kicnp.inference.InferenceEngine;
@@ -272,6 +274,32 @@ class EditorBrowserTest {
             assertThat(exit).as(Files.readString(log)).isZero();
         }
         assertThat(kb.require("Robot").ownSlot("robotName").flatMap(Slot::role)).contains("kept across the login");
+    }
+
+    @Test void listValue_withCommasInItsItems_keepsItsItemsWhenAnItemIsAddedInTheTable() throws Exception {
+        Path node = which("node");
+        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && node != null,
+                "Chromium or Node.js is not installed; browser test skipped.");
+        Path e2e = Path.of(System.getProperty("user.dir")).resolve("../editor-e2e").normalize();
+        Path artifacts = Path.of(System.getProperty("user.dir"), "target", "e2e");
+        Files.createDirectories(artifacts);
+        if (!Files.isDirectory(e2e.resolve("node_modules/playwright-core"))) {
+            run(e2e, List.of("npm", "ci", "--no-audit", "--no-fund"), Map.of(), artifacts.resolve("npm-ci.log"), 180);
+        }
+        KnowledgeBase kb = SampleKnowledge.create();
+        kb.add(Frame.classFrame("Phrases").parent("System").slot(Slot.ofValue("lines", DataType.LIST,
+                new Value.Lst(List.of(Value.of("Hello, Ken"), Value.of("Bye"))))).build());
+        try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
+            Map<String, String> env = Map.of("EDITOR_URL", "http://127.0.0.1:" + server.port() + "/",
+                    "EDITOR_PASSWORD", PASSWORD, "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString());
+            Path log = artifacts.resolve("browser-lists.log");
+
+            int exit = run(e2e, List.of(node.toString(), "lists.e2e.mjs"), env, log, 60);
+
+            assertThat(exit).as(Files.readString(log)).isZero();
+        }
+        assertThat(kb.value("Phrases", "lines")).contains(new Value.Lst(List.of(Value.of("Hello, Ken"), Value.of("Bye"),
+                Value.of("See you"))));
     }
 
     private static int run(Path dir, List<String> command, Map<String, String> env, Path log, int seconds)
