@@ -302,6 +302,29 @@ class EditorBrowserTest {
                 Value.of("See you"))));
     }
 
+    @Test void newFrameAndRename_withUnsavedEdits_askFirstAndKeepTheEditsWhenDeclined() throws Exception {
+        Path node = which("node");
+        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && node != null,
+                "Chromium or Node.js is not installed; browser test skipped.");
+        Path e2e = Path.of(System.getProperty("user.dir")).resolve("../editor-e2e").normalize();
+        Path artifacts = Path.of(System.getProperty("user.dir"), "target", "e2e");
+        Files.createDirectories(artifacts);
+        if (!Files.isDirectory(e2e.resolve("node_modules/playwright-core"))) {
+            run(e2e, List.of("npm", "ci", "--no-audit", "--no-fund"), Map.of(), artifacts.resolve("npm-ci.log"), 180);
+        }
+        KnowledgeBase kb = SampleKnowledge.create();
+        try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
+            Map<String, String> env = Map.of("EDITOR_URL", "http://127.0.0.1:" + server.port() + "/",
+                    "EDITOR_PASSWORD", PASSWORD, "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString());
+            Path log = artifacts.resolve("browser-edits.log");
+
+            int exit = run(e2e, List.of(node.toString(), "edits.e2e.mjs"), env, log, 60);
+
+            assertThat(exit).as(Files.readString(log)).isZero();
+        }
+        assertThat(kb.require("Robot").ownSlot("robotName").flatMap(Slot::role)).contains("not saved yet");
+    }
+
     private static int run(Path dir, List<String> command, Map<String, String> env, Path log, int seconds)
             throws IOException, InterruptedException {
         ProcessBuilder pb = new ProcessBuilder(command).directory(dir.toFile()).redirectErrorStream(true)

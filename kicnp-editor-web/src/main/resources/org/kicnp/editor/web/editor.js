@@ -3,7 +3,7 @@
 import { $, RELATIONS, api, el, show, showErrors, showMain, state } from './base.js';
 import { loadFrames, renderNameLists, renderTree } from './tree.js';
 import { drawLinks, scheduleDrawLinks, swatch } from './links.js';
-import { create, markDirty, openFrame, remove, rename, renderFrame, save, setFrame, startCreate } from './frame.js';
+import { create, markDirty, mayDiscardEdits, openFrame, remove, rename, renderFrame, save, setFrame, startCreate } from './frame.js';
 import { addTrace, askInference, loadInference, openInference, proveInference, runInference, scheduleInferenceReload, whyNotInference } from './inference.js';
 import { openWorld, renderWorldSession, worldEvent, worldVisible } from './world.js';
 import { cancelWrong, chatLine, feedbackEvent, markWrong, renderActions, renderArgs, say, sendCommand } from './operate.js';
@@ -204,6 +204,7 @@ function wire() {
     inputs[inputs.length - 1].select();
   });
   $('rename-button').addEventListener('click', () => {
+    if (!mayDiscardEdits()) return; // renaming reopens the frame as saved
     show('rename-form', true);
     $('rename-input').value = state.frame.name;
     $('rename-input').select();
