@@ -44,11 +44,18 @@ final class FrameInput {
     }
 
     /**
+     * The frame as read, and the problems found reading it. With problems, {@code frame} (when there is one) is the
+     * frame without the items that had them, so that the frame model can still be asked about the rest.
+     */
+    record Read(Optional<Frame> frame, List<ApiProblem> problems) {
+    }
+
+    /**
      * Reads the frame; {@code name} is the frame name from the URL, or empty to take it from the body.
      *
-     * @throws ApiException 422 with every problem found
+     * @throws ApiException 400 when the body is not a JSON object
      */
-    static Frame read(JsonNode json, Optional<String> name,
+    static Read read(JsonNode json, Optional<String> name,
             BiFunction<String, String, Optional<DataType>> declaredType,
             BiFunction<String, String, Optional<String>> declaredArgument) {
         if (json == null || !json.isObject()) {
@@ -57,10 +64,7 @@ final class FrameInput {
         String n = name.orElseGet(() -> text(json, "name").orElse(""));
         FrameInput in = new FrameInput(json, n, declaredType, declaredArgument);
         Frame frame = in.build();
-        if (!in.problems.isEmpty()) {
-            throw ApiException.invalid(in.problems);
-        }
-        return frame;
+        return new Read(Optional.ofNullable(frame), List.copyOf(in.problems));
     }
 
     private Frame build() {

@@ -5,6 +5,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
+import java.util.Set;
+import java.util.function.Function;
+import java.util.stream.Collectors;
 import org.kicnp.core.Change;
 import org.kicnp.core.ChangeSet;
 import org.kicnp.core.DataType;
@@ -67,8 +70,25 @@ final class FrameResource {
         return Optional.empty();
     }
 
+    /**
+     * The frame read, or 422 with every problem: those found reading it and, for the items read without one, those
+     * the frame model finds (an unknown argument class, an IS-A cycle, ...), so that one answer lists them all.
+     */
+    private Frame valid(FrameInput.Read read, Function<Frame, Change> change) {
+        if (read.problems().isEmpty()) {
+            return read.frame().orElseThrow();
+        }
+        List<ApiProblem> all = new ArrayList<>(read.problems());
+        Set<String> slotsWithProblems = read.problems().stream().map(ApiProblem::slot).filter(s -> !s.isEmpty())
+                .collect(Collectors.toSet());
+        read.frame().ifPresent(f -> kb.problems(List.of(change.apply(f))).stream().map(ApiProblem::of)
+                .filter(p -> !slotsWithProblems.contains(p.slot()) && !all.contains(p)).forEach(all::add));
+        throw ApiException.invalid(all);
+    }
+
     Saved create(JsonNode body) {
-        Frame f = FrameInput.read(body, Optional.empty(), this::declaredType, this::declaredArgument);
+        Frame f = valid(FrameInput.read(body, Optional.empty(), this::declaredType, this::declaredArgument),
+                Change.Add::new);
         ChangeSet cs = kb.apply(List.of(new Change.Add(f)));
         return new Saved(cs.version(), get(f.name()));
     }
@@ -84,7 +104,8 @@ final class FrameResource {
                     + "so that a change made in between is not overwritten.");
         }
         kb.require(name);
-        Frame f = FrameInput.read(body, Optional.of(name), this::declaredType, this::declaredArgument);
+        Frame f = valid(FrameInput.read(body, Optional.of(name), this::declaredType, this::declaredArgument),
+                read -> new Change.Replace(read, rev.asLong()));
         ChangeSet cs = kb.apply(List.of(new Change.Replace(f, rev.asLong())));
         return new Saved(cs.version(), get(name));
     }

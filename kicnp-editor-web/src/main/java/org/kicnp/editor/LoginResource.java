@@ -38,7 +38,7 @@ final class LoginResource {
         String auth = request.getHeaders().get(HttpHeader.AUTHORIZATION);
         if (auth != null && auth.regionMatches(true, 0, "Bearer ", 0, 7)) {
             String address = Request.getRemoteAddr(request);
-            refuseWhileThrottled(address);
+            admitOrRefuse(address);
             if (!sessions.matches(auth.substring(7).strip())) {
                 refuseWrongPassword(address, "Wrong password in the Authorization header: you were not logged in.");
             }
@@ -63,7 +63,7 @@ final class LoginResource {
             throw new ApiException(401, "Editing is disabled: no editor password is configured (editor.password).");
         }
         String address = r.remoteAddress();
-        refuseWhileThrottled(address);
+        admitOrRefuse(address);
         String password = FrameInput.text(r.body(), "password").orElse("");
         if (!sessions.matches(password)) {
             refuseWrongPassword(address, "Wrong password: you were not logged in.");
@@ -75,16 +75,17 @@ final class LoginResource {
         return Reply.json(200, "{\"loggedIn\":true}").withCookie(cookie);
     }
 
-    private void refuseWhileThrottled(String address) {
-        long wait = throttle.waitSeconds(address);
+    /** Counts a password guess, or refuses it while the address is throttled. */
+    private void admitOrRefuse(String address) {
+        long wait = throttle.admit(address);
         if (wait > 0) {
             throw new ApiException(429, "Too many wrong passwords from this address: try again in " + wait
                     + " seconds.");
         }
     }
 
+    /** The guess was counted when it was admitted; a wrong one is only made to wait. */
     private void refuseWrongPassword(String address, String message) {
-        throttle.failed(address);
         try {
             Thread.sleep(WRONG_PASSWORD_PAUSE_MS);
         } catch (InterruptedException e) {

@@ -9,7 +9,9 @@ import java.util.concurrent.ConcurrentHashMap;
 /**
  * Slows password guessing: after {@link #MAX_FAILURES} wrong passwords from one address within {@link #WINDOW},
  * that address may not try again until the window has passed since its first failure. A correct password clears
- * the address's count. The map is bounded by pruning stale entries when it grows.
+ * the address's count. Each guess is counted before it is compared ({@link #admit}), in one atomic step with the
+ * check, so guesses sent in parallel cannot all pass the check before any of them is counted. The map is bounded
+ * by pruning stale entries when it grows.
  */
 final class LoginThrottle {
     static final int MAX_FAILURES = 5;
@@ -26,26 +28,32 @@ final class LoginThrottle {
         this.clock = clock;
     }
 
-    /** Seconds the address must still wait before trying again, or 0 when it may try now. */
-    long waitSeconds(String address) {
-        Failures f = failures.get(address);
-        if (f == null) {
-            return 0;
-        }
-        Duration left = Duration.between(clock.instant(), f.first().plus(WINDOW));
-        if (left.isNegative() || left.isZero()) {
-            failures.remove(address);
-            return 0;
-        }
-        return f.count() >= MAX_FAILURES ? Math.max(1, left.toSeconds()) : 0;
+    /**
+     * Lets one password guess from the address through, counting it as a failure until {@link #succeeded} clears
+     * it, or refuses it: the seconds to wait, or 0 when the guess was admitted.
+     */
+    long admit(String address) {
+        prune();
+        long[] wait = {0};
+        failures.compute(address, (a, f) -> {
+            Instant now = clock.instant();
+            if (f == null || !f.first().plus(WINDOW).isAfter(now)) {
+                return new Failures(now, 1);
+            }
+            if (f.count() >= MAX_FAILURES) {
+                wait[0] = Math.max(1, Duration.between(now, f.first().plus(WINDOW)).toSeconds());
+                return f;
+            }
+            return new Failures(f.first(), f.count() + 1);
+        });
+        return wait[0];
     }
 
-    void failed(String address) {
+    private void prune() {
         if (failures.size() > PRUNE_AT) {
             Instant now = clock.instant();
             failures.values().removeIf(f -> f.first().plus(WINDOW).isBefore(now));
         }
-        failures.merge(address, new Failures(clock.instant(), 1), (old, one) -> new Failures(old.first(), old.count() + 1));
     }
 
     void succeeded(String address) {

@@ -193,6 +193,42 @@ class EditorApiTest {
         assertThat(kb.require("AskUserName")).isEqualTo(before);
     }
 
+    @Test void put_withAValueOfTheWrongTypeAndAnUnknownArgumentClass_listsBothProblemsInOneAnswer() {
+        http.login(PASSWORD);
+        Frame before = kb.require("AskUserName");
+        ObjectNode f = forEditing("AskUserName");
+        ArrayNode slots = (ArrayNode) f.get("slots");
+        ((ObjectNode) slots.get(0)).put("argument", "Martian");
+        slots.addObject().put("name", "mood").put("type", "TYPE_INT").put("value", "happy");
+
+        HttpResponse<String> r = http.put("/api/frames/AskUserName", f.toString());
+
+        assertThat(r.statusCode()).isEqualTo(422);
+        List<String> messages = new ArrayList<>();
+        json(r).get("problems").forEach(p -> messages.add(p.get("frame").asText() + "." + p.get("slot").asText() + ": "
+                + p.get("message").asText()));
+        assertThat(messages).hasSize(2)
+                .anySatisfy(m -> assertThat(m).startsWith("AskUserName.mood: ").contains("'happy' is not an integer"))
+                .anySatisfy(m -> assertThat(m).startsWith("AskUserName.mUser: ").contains("'Martian'"));
+        assertThat(kb.require("AskUserName")).isEqualTo(before);
+    }
+
+    @Test void post_withAValueOfTheWrongTypeAndAnUnknownParent_listsBothProblemsInOneAnswer() {
+        http.login(PASSWORD);
+
+        HttpResponse<String> r = http.post("/api/frames", """
+                {"name": "Cook", "kind": "CLASS", "parent": "Kitchen",
+                 "slots": [{"name": "dishes", "type": "TYPE_INT", "value": "many"}]}""");
+
+        assertThat(r.statusCode()).isEqualTo(422);
+        List<String> messages = new ArrayList<>();
+        json(r).get("problems").forEach(p -> messages.add(p.get("slot").asText() + ": " + p.get("message").asText()));
+        assertThat(messages).hasSize(2)
+                .anySatisfy(m -> assertThat(m).startsWith("dishes: ").contains("'many' is not an integer"))
+                .anySatisfy(m -> assertThat(m).startsWith(": ").contains("'Kitchen'"));
+        assertThat(kb.contains("Cook")).isFalse();
+    }
+
     @Test void put_withSlotsThatAreNotAnArray_answers422AndKeepsEverySlot() {
         http.login(PASSWORD);
         Frame before = kb.require("AskUserName");
@@ -394,6 +430,44 @@ class EditorApiTest {
         assertThat(r.statusCode()).isEqualTo(429);
         assertThat(json(r).get("error").asText()).startsWith("Too many wrong passwords from this address");
         assertThat(r.headers().firstValue("Set-Cookie")).isEmpty();
+    }
+
+    @Test void login_withManyWrongPasswordsSentAtOnce_letsOnlyMaxFailuresOfThemBeTried() throws Exception {
+        // Every guess's headers arrive before any body does, as a guesser's parallel requests may: the server
+        // checks the throttle, then waits for the password.
+        int guesses = 40;
+        List<java.net.Socket> sockets = new ArrayList<>();
+        try {
+            for (int i = 0; i < guesses; i++) {
+                sockets.add(new java.net.Socket("127.0.0.1", server.port()));
+            }
+            List<String> bodies = new ArrayList<>();
+            for (int i = 0; i < guesses; i++) {
+                bodies.add("{\"password\":\"guess " + i + "\"}");
+                sockets.get(i).getOutputStream().write(("POST /api/login HTTP/1.1\r\nHost: 127.0.0.1:" + server.port()
+                        + "\r\nContent-Type: application/json\r\nContent-Length: " + bodies.get(i).length()
+                        + "\r\nConnection: close\r\n\r\n").getBytes(java.nio.charset.StandardCharsets.UTF_8));
+            }
+            Thread.sleep(300);
+            for (int i = 0; i < guesses; i++) {
+                sockets.get(i).getOutputStream().write(bodies.get(i).getBytes(java.nio.charset.StandardCharsets.UTF_8));
+            }
+            List<Integer> statuses = new ArrayList<>();
+            for (java.net.Socket socket : sockets) {
+                socket.setSoTimeout(30_000);
+                String statusLine = new java.io.BufferedReader(new java.io.InputStreamReader(socket.getInputStream(),
+                        java.nio.charset.StandardCharsets.UTF_8)).readLine();
+                statuses.add(Integer.parseInt(statusLine.split(" ")[1]));
+            }
+
+            assertThat(statuses).filteredOn(s -> s == 401).as("guesses compared with the password")
+                    .hasSize(LoginThrottle.MAX_FAILURES);
+            assertThat(statuses).filteredOn(s -> s == 429).hasSize(guesses - LoginThrottle.MAX_FAILURES);
+        } finally {
+            for (java.net.Socket socket : sockets) {
+                socket.close();
+            }
+        }
     }
 
     @Test void login_setsHttpOnlyStrictCookie_andLogoutEndsTheSession() {

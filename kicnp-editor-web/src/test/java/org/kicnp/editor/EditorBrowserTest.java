@@ -15,10 +15,13 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
+import org.kicnp.core.Change;
+import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Provenance;
 import org.kicnp.core.Slot;
+import org.kicnp.core.Value;
 import org.kicnp.core.xml.KnowledgeLoader;
 import org.kicnp.inference.GraalScriptHost;
 import org.kicnp.inference.InferenceEngine;
@@ -153,6 +156,173 @@ class EditorBrowserTest {
             assertThat(exit).as(Files.readString(log)).isZero();
         }
         assertThat(artifacts.resolve("07-semantic-links.png")).exists();
+    }
+
+    @Test void page_afterTheServerRestarts_asksForTheLoginAgainAndShowsTheOpenFrameAsItIsNow() throws Exception {
+        Path node = which("node");
+        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && node != null,
+                "Chromium or Node.js is not installed; browser test skipped.");
+        Path e2e = Path.of(System.getProperty("user.dir")).resolve("../editor-e2e").normalize();
+        Path artifacts = Path.of(System.getProperty("user.dir"), "target", "e2e");
+        Files.createDirectories(artifacts);
+        if (!Files.isDirectory(e2e.resolve("node_modules/playwright-core"))) {
+            run(e2e, List.of("npm", "ci", "--no-audit", "--no-fund"), Map.of(), artifacts.resolve("npm-ci.log"), 180);
+        }
+        Path request = artifacts.resolve("restart.request");
+        Path done = artifacts.resolve("restart.done");
+        Files.deleteIfExists(request);
+        Files.deleteIfExists(done);
+        Path log = artifacts.resolve("browser-restart.log");
+        EditorServer first = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD),
+                SampleKnowledge.create());
+        int port = first.port();
+        ProcessBuilder pb = new ProcessBuilder(node.toString(), "restart.e2e.mjs").directory(e2e.toFile())
+                .redirectErrorStream(true).redirectOutput(log.toFile());
+        pb.environment().putAll(Map.of("EDITOR_URL", "http://127.0.0.1:" + port + "/", "EDITOR_PASSWORD", PASSWORD,
+                "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString()));
+        Process browser = pb.start();
+        try {
+            for (long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(60); !Files.exists(request)
+                    && browser.isAlive() && System.nanoTime() < end;) {
+                Thread.sleep(100);
+            }
+            assertThat(request).as(Files.readString(log)).exists();
+            first.close();
+            KnowledgeBase after = SampleKnowledge.create();
+            Frame robot = after.require("Robot");
+            after.apply(List.of(new Change.Put(robot.withSlot(robot.ownSlot("robotName").orElseThrow().toBuilder()
+                    .role("changed while the page was away").build()))));
+            try (EditorServer second = EditorServer.start(EditorConfig.defaults().withPort(port).withPassword(PASSWORD),
+                    after)) {
+                Files.writeString(done, "restarted");
+                assertThat(browser.waitFor(60, TimeUnit.SECONDS)).as("the browser script finished").isTrue();
+            }
+            assertThat(browser.exitValue()).as(Files.readString(log)).isZero();
+        } finally {
+            first.close(); // a second close of a stopped server does nothing
+            browser.destroyForcibly();
+        }
+        assertThat(artifacts.resolve("08-after-restart.png")).exists();
+    }
+
+    @Test void inferenceView_errorOfOneQuestion_goesWithTheNextAnswerAndTakesTheOldAnswersAlong() throws Exception {
+        Path node = which("node");
+        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && node != null,
+                "Chromium or Node.js is not installed; browser test skipped.");
+        Path e2e = Path.of(System.getProperty("user.dir")).resolve("../editor-e2e").normalize();
+        Path artifacts = Path.of(System.getProperty("user.dir"), "target", "e2e");
+        Files.createDirectories(artifacts);
+        if (!Files.isDirectory(e2e.resolve("node_modules/playwright-core"))) {
+            run(e2e, List.of("npm", "ci", "--no-audit", "--no-fund"), Map.of(), artifacts.resolve("npm-ci.log"), 180);
+        }
+        KnowledgeBase kb = SampleKnowledge.create();
+        try (InferenceEngine engine = InferenceEngine.builder(kb).build();
+                EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD),
+                        kb, engine)) {
+            Map<String, String> env = Map.of("EDITOR_URL", "http://127.0.0.1:" + server.port() + "/",
+                    "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString());
+            Path log = artifacts.resolve("browser-inference-errors.log");
+
+            int exit = run(e2e, List.of(node.toString(), "inference-errors.e2e.mjs"), env, log, 60);
+
+            assertThat(exit).as(Files.readString(log)).isZero();
+        }
+        assertThat(artifacts.resolve("09-inference-errors.png")).exists();
+    }
+
+    @Test void revert_afterSomeoneElseSavedTheFrame_showsTheFrameAsItNowIsAndTheNextSaveWorks() throws Exception {
+        Path node = which("node");
+        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && node != null,
+                "Chromium or Node.js is not installed; browser test skipped.");
+        Path e2e = Path.of(System.getProperty("user.dir")).resolve("../editor-e2e").normalize();
+        Path artifacts = Path.of(System.getProperty("user.dir"), "target", "e2e");
+        Files.createDirectories(artifacts);
+        if (!Files.isDirectory(e2e.resolve("node_modules/playwright-core"))) {
+            run(e2e, List.of("npm", "ci", "--no-audit", "--no-fund"), Map.of(), artifacts.resolve("npm-ci.log"), 180);
+        }
+        KnowledgeBase kb = SampleKnowledge.create();
+        try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
+            Map<String, String> env = Map.of("EDITOR_URL", "http://127.0.0.1:" + server.port() + "/",
+                    "EDITOR_PASSWORD", PASSWORD, "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString());
+            Path log = artifacts.resolve("browser-stale.log");
+
+            int exit = run(e2e, List.of(node.toString(), "stale.e2e.mjs"), env, log, 60);
+
+            assertThat(exit).as(Files.readString(log)).isZero();
+        }
+        assertThat(kb.require("Robot").ownSlot("robotName").flatMap(Slot::role)).contains("my role after theirs");
+    }
+
+    @Test void save_afterTheLoginEndedInAnotherTab_offersTheLoginAgainAndKeepsTheEdit() throws Exception {
+        Path node = which("node");
+        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && node != null,
+                "Chromium or Node.js is not installed; browser test skipped.");
+        Path e2e = Path.of(System.getProperty("user.dir")).resolve("../editor-e2e").normalize();
+        Path artifacts = Path.of(System.getProperty("user.dir"), "target", "e2e");
+        Files.createDirectories(artifacts);
+        if (!Files.isDirectory(e2e.resolve("node_modules/playwright-core"))) {
+            run(e2e, List.of("npm", "ci", "--no-audit", "--no-fund"), Map.of(), artifacts.resolve("npm-ci.log"), 180);
+        }
+        KnowledgeBase kb = SampleKnowledge.create();
+        try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
+            Map<String, String> env = Map.of("EDITOR_URL", "http://127.0.0.1:" + server.port() + "/",
+                    "EDITOR_PASSWORD", PASSWORD, "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString());
+            Path log = artifacts.resolve("browser-session.log");
+
+            int exit = run(e2e, List.of(node.toString(), "session.e2e.mjs"), env, log, 60);
+
+            assertThat(exit).as(Files.readString(log)).isZero();
+        }
+        assertThat(kb.require("Robot").ownSlot("robotName").flatMap(Slot::role)).contains("kept across the login");
+    }
+
+    @Test void listValue_withCommasInItsItems_keepsItsItemsWhenAnItemIsAddedInTheTable() throws Exception {
+        Path node = which("node");
+        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && node != null,
+                "Chromium or Node.js is not installed; browser test skipped.");
+        Path e2e = Path.of(System.getProperty("user.dir")).resolve("../editor-e2e").normalize();
+        Path artifacts = Path.of(System.getProperty("user.dir"), "target", "e2e");
+        Files.createDirectories(artifacts);
+        if (!Files.isDirectory(e2e.resolve("node_modules/playwright-core"))) {
+            run(e2e, List.of("npm", "ci", "--no-audit", "--no-fund"), Map.of(), artifacts.resolve("npm-ci.log"), 180);
+        }
+        KnowledgeBase kb = SampleKnowledge.create();
+        kb.add(Frame.classFrame("Phrases").parent("System").slot(Slot.ofValue("lines", DataType.LIST,
+                new Value.Lst(List.of(Value.of("Hello, Ken"), Value.of("Bye"))))).build());
+        try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
+            Map<String, String> env = Map.of("EDITOR_URL", "http://127.0.0.1:" + server.port() + "/",
+                    "EDITOR_PASSWORD", PASSWORD, "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString());
+            Path log = artifacts.resolve("browser-lists.log");
+
+            int exit = run(e2e, List.of(node.toString(), "lists.e2e.mjs"), env, log, 60);
+
+            assertThat(exit).as(Files.readString(log)).isZero();
+        }
+        assertThat(kb.value("Phrases", "lines")).contains(new Value.Lst(List.of(Value.of("Hello, Ken"), Value.of("Bye"),
+                Value.of("See you"))));
+    }
+
+    @Test void newFrameAndRename_withUnsavedEdits_askFirstAndKeepTheEditsWhenDeclined() throws Exception {
+        Path node = which("node");
+        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && node != null,
+                "Chromium or Node.js is not installed; browser test skipped.");
+        Path e2e = Path.of(System.getProperty("user.dir")).resolve("../editor-e2e").normalize();
+        Path artifacts = Path.of(System.getProperty("user.dir"), "target", "e2e");
+        Files.createDirectories(artifacts);
+        if (!Files.isDirectory(e2e.resolve("node_modules/playwright-core"))) {
+            run(e2e, List.of("npm", "ci", "--no-audit", "--no-fund"), Map.of(), artifacts.resolve("npm-ci.log"), 180);
+        }
+        KnowledgeBase kb = SampleKnowledge.create();
+        try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
+            Map<String, String> env = Map.of("EDITOR_URL", "http://127.0.0.1:" + server.port() + "/",
+                    "EDITOR_PASSWORD", PASSWORD, "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString());
+            Path log = artifacts.resolve("browser-edits.log");
+
+            int exit = run(e2e, List.of(node.toString(), "edits.e2e.mjs"), env, log, 60);
+
+            assertThat(exit).as(Files.readString(log)).isZero();
+        }
+        assertThat(kb.require("Robot").ownSlot("robotName").flatMap(Slot::role)).contains("not saved yet");
     }
 
     private static int run(Path dir, List<String> command, Map<String, String> env, Path log, int seconds)

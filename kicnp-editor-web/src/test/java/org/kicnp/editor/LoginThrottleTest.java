@@ -25,31 +25,28 @@ class LoginThrottleTest {
         }
     }
 
-    @Test void waitSeconds_afterMaxFailures_isPositiveUntilTheWindowPasses() {
+    @Test void admit_afterMaxFailures_refusesUntilTheWindowPasses() {
         MovableClock clock = new MovableClock();
         LoginThrottle t = new LoginThrottle(clock);
-        for (int i = 0; i < LoginThrottle.MAX_FAILURES - 1; i++) {
-            t.failed("10.0.0.1");
+        for (int i = 0; i < LoginThrottle.MAX_FAILURES; i++) {
+            assertThat(t.admit("10.0.0.1")).isZero();
         }
-        assertThat(t.waitSeconds("10.0.0.1")).isZero();
 
-        t.failed("10.0.0.1");
-
-        assertThat(t.waitSeconds("10.0.0.1")).isEqualTo(LoginThrottle.WINDOW.toSeconds());
-        assertThat(t.waitSeconds("10.0.0.2")).isZero();
+        assertThat(t.admit("10.0.0.1")).isEqualTo(LoginThrottle.WINDOW.toSeconds());
+        assertThat(t.admit("10.0.0.2")).isZero();
         clock.now = clock.now.plus(LoginThrottle.WINDOW).plus(Duration.ofSeconds(1));
-        assertThat(t.waitSeconds("10.0.0.1")).isZero();
+        assertThat(t.admit("10.0.0.1")).isZero();
     }
 
     @Test void succeeded_clearsTheCount() {
         LoginThrottle t = new LoginThrottle(new MovableClock());
         for (int i = 0; i < LoginThrottle.MAX_FAILURES - 1; i++) {
-            t.failed("a");
+            t.admit("a");
         }
 
         t.succeeded("a");
-        t.failed("a");
+        t.admit("a");
 
-        assertThat(t.waitSeconds("a")).isZero();
+        assertThat(t.admit("a")).isZero();
     }
 }

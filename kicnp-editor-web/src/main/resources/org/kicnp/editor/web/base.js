@@ -39,6 +39,8 @@ export async function api(method, path, body) {
     data = { error: text };
   }
   if (!response.ok) {
+    // The login ended (logged out in another tab, expired, the server restarted): the page reads its session again.
+    if (response.status === 401 && path !== '/api/login') window.dispatchEvent(new Event('kicnp-session-lost'));
     throw new ApiError(response.status, (data && data.error) || response.statusText, data && data.problems);
   }
   return data;

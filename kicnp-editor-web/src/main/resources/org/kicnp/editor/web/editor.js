@@ -3,7 +3,7 @@
 import { $, RELATIONS, api, el, show, showErrors, showMain, state } from './base.js';
 import { loadFrames, renderNameLists, renderTree } from './tree.js';
 import { drawLinks, scheduleDrawLinks, swatch } from './links.js';
-import { create, markDirty, openFrame, remove, rename, renderFrame, save, setFrame, startCreate } from './frame.js';
+import { create, markDirty, mayDiscardEdits, openFrame, remove, rename, renderFrame, save, setFrame, startCreate } from './frame.js';
 import { addTrace, askInference, loadInference, openInference, proveInference, runInference, scheduleInferenceReload, whyNotInference } from './inference.js';
 import { openWorld, renderWorldSession, worldEvent, worldVisible } from './world.js';
 import { cancelWrong, chatLine, feedbackEvent, markWrong, renderActions, renderArgs, say, sendCommand } from './operate.js';
@@ -93,7 +93,9 @@ function connect() {
     const event = JSON.parse(m.data);
     if (event.type === 'hello') {
       setVersion(event.version);
-      loadFrames().catch(() => {});
+      const again = helloSeen;
+      helloSeen = true;
+      (again ? reconnected() : loadFrames()).catch(() => {});
     } else if (event.type === 'change') {
       setVersion(event.version);
       applyChanges(event.events);
@@ -108,6 +110,16 @@ function connect() {
       feedbackEvent(event);
     }
   };
+}
+
+let helloSeen = false;
+
+// Back after the connection dropped: the server may have restarted (its sessions gone) and the changes made in
+// between were never pushed, so the session, the tree and the open frame are read again.
+async function reconnected() {
+  await loadSession();
+  await loadFrames();
+  if (state.frame) selectedChanged(state.byName.get(state.selected) || null);
 }
 
 function setVersion(v) {
@@ -142,20 +154,23 @@ function applyChanges(events) {
   for (const n of state.byName.keys()) if (!order.includes(n)) order.push(n);
   state.frames = order.filter((n) => state.byName.has(n)).map((n) => state.byName.get(n));
   scheduleTreeRender();
-  if (touchedSelected && state.frame) {
-    if (touchedSelected.kind === 'removed') {
+  if (touchedSelected && state.frame) selectedChanged(touchedSelected.kind === 'removed' ? null : touchedSelected.frame);
+}
+
+// The open frame's row as the server now lists it (null: gone): reload it, or say why the edit will be refused.
+function selectedChanged(row) {
+  if (!row) {
+    const stale = $('stale-note');
+    stale.textContent = 'Frame ' + state.selected + ' was removed.';
+    stale.hidden = false;
+  } else if (row.revision !== state.frame.revision) {
+    if (state.dirty) {
       const stale = $('stale-note');
-      stale.textContent = 'Frame ' + state.selected + ' was removed.';
+      stale.textContent = 'Someone else changed ' + state.selected + ' (revision ' + row.revision
+        + '). Saving your edit will be refused; reload to see theirs.';
       stale.hidden = false;
-    } else if (touchedSelected.frame.revision !== state.frame.revision) {
-      if (state.dirty) {
-        const stale = $('stale-note');
-        stale.textContent = 'Someone else changed ' + state.selected + ' (revision ' + touchedSelected.frame.revision
-          + '). Saving your edit will be refused; reload to see theirs.';
-        stale.hidden = false;
-      } else {
-        openFrame(state.selected, true);
-      }
+    } else {
+      openFrame(state.selected, true);
     }
   }
 }
@@ -165,13 +180,20 @@ function applyChanges(events) {
 function wire() {
   $('login-form').addEventListener('submit', login);
   $('logout-button').addEventListener('click', logout);
+  window.addEventListener('kicnp-session-lost', () => { loadSession().catch(() => {}); });
   $('search').addEventListener('input', renderTree);
   $('new-frame-button').addEventListener('click', () => startCreate(''));
   $('new-child-button').addEventListener('click', () => startCreate(state.frame.name));
   $('create-form').addEventListener('submit', create);
   $('create-cancel').addEventListener('click', () => showMain(state.frame ? 'frame-panel' : 'welcome'));
   $('save-button').addEventListener('click', save);
-  $('revert-button').addEventListener('click', () => { setFrame(state.frame); showErrors('frame-errors', null); });
+  $('revert-button').addEventListener('click', () => {
+    setFrame(state.frame);
+    showErrors('frame-errors', null);
+    // Someone else saved it meanwhile: revert to what is there now, not to the revision read before theirs.
+    const row = state.byName.get(state.selected);
+    if (row && row.revision !== state.frame.revision) openFrame(state.selected, true);
+  });
   $('add-slot-button').addEventListener('click', () => {
     state.draft.slots.push({ name: 'newSlot' + (state.draft.slots.length + 1), type: 'TYPE_STR', value: null,
       defaultValue: null, condition: 'COND_ANY', argument: null, required: false, shared: true, unique: false,
@@ -182,6 +204,7 @@ function wire() {
     inputs[inputs.length - 1].select();
   });
   $('rename-button').addEventListener('click', () => {
+    if (!mayDiscardEdits()) return; // renaming reopens the frame as saved
     show('rename-form', true);
     $('rename-input').value = state.frame.name;
     $('rename-input').select();

@@ -6,9 +6,13 @@ import { checkScripts, renderSlots, splitList } from './slots.js';
 
 // ---- one frame ----
 
+/** Whether the unsaved edits, if any, may go: asks before they are discarded. */
+export function mayDiscardEdits() {
+  return !state.dirty || window.confirm('Discard the unsaved changes to ' + state.selected + '?');
+}
+
 export async function openFrame(name, keepNotice) {
-  if (state.dirty && name !== state.selected
-      && !window.confirm('Discard the unsaved changes to ' + state.selected + '?')) {
+  if (name !== state.selected && !mayDiscardEdits()) {
     return;
   }
   try {
@@ -188,6 +192,7 @@ export async function save() {
 // ---- create, rename, delete ----
 
 export function startCreate(parent) {
+  if (!mayDiscardEdits()) return; // creating opens the new frame, which drops the edits
   showMain('create-panel');
   showErrors('create-errors', null);
   $('create-name').value = '';

@@ -61,7 +61,9 @@ async function why(instance) {
   try {
     const e = await api('GET', '/api/inference/why/' + enc(instance));
     $('why-tree').replaceChildren(el('ul', {}, explanationItem(e)));
+    showErrors('inference-errors', null);
   } catch (err) {
+    $('why-tree').replaceChildren();
     showErrors('inference-errors', err);
   }
 }
@@ -86,8 +88,9 @@ export async function askInference(event) {
       text: (a.instance || '(new ' + a.className + ')') + (a.derivable ? ' — derivable' : ' — exists')
         + (Object.keys(a.slots).length ? ': ' + Object.entries(a.slots).map(([k, v]) => k + '=' + v).join(', ') : '')
     })) : [el('li', { class: 'muted', text: 'No instance exists or could be derived.' })]));
+    showErrors('inference-errors', null);
   } catch (e) {
-    showErrors('inference-errors', e);
+    refused(e);
   }
 }
 
@@ -98,8 +101,9 @@ export async function proveInference() {
     const proofs = await api('GET', '/api/inference/prove?class=' + enc(cls));
     $('ask-answers').replaceChildren(...(proofs.length ? proofs.map(proofItem)
       : [el('li', { class: 'muted', text: 'Nothing to prove: no instance exists or could be derived.' })]));
+    showErrors('inference-errors', null);
   } catch (e) {
-    showErrors('inference-errors', e);
+    refused(e);
   }
 }
 
@@ -119,9 +123,16 @@ export async function whyNotInference() {
       el('span', { class: 'what', text: Object.entries(b.binding).map(([k, v]) => k + '=' + v).join(', ') }),
       el('span', { class: 'how', text: ' — ' + b.reason })));
     $('ask-answers').replaceChildren(el('li', { class: 'why-not-summary', text: w.summary }), ...slots, ...bindings);
+    showErrors('inference-errors', null);
   } catch (e) {
-    showErrors('inference-errors', e);
+    refused(e);
   }
+}
+
+// A refused question: its error replaces the answers to the last one, which would read as answers to this one.
+function refused(error) {
+  $('ask-answers').replaceChildren();
+  showErrors('inference-errors', error);
 }
 
 function proofItem(p) {

@@ -5,8 +5,37 @@ import { markDirty, renderFrame } from './frame.js';
 import { editor as codeEditor } from './highlight.js';
 
 export const isScript = (s) => s.type === 'TYPE_STR' && /^on[A-Z]/.test(s.name);
-export const listText = (v) => (Array.isArray(v) ? v.join(', ') : (v === null || v === undefined ? '' : String(v)));
+// A list item holding a comma or a quote (or a space at either end) is shown as a quoted string, so that the text
+// splits back into the same items (splitItems).
+const itemText = (t) => (/[,"]|^\s|\s$/.test(t) ? JSON.stringify(t) : t);
+export const listText = (v) => (Array.isArray(v) ? v.map((t) => itemText(String(t))).join(', ')
+  : (v === null || v === undefined ? '' : String(v)));
 export const splitList = (text) => text.split(',').map((t) => t.trim()).filter((t) => t);
+
+/** The items of a list value as typed: comma-separated, an item in double quotes may hold commas ("Hello, Ken"). */
+export function splitItems(text) {
+  const items = [];
+  let i = 0;
+  while (i < text.length) {
+    while (i < text.length && /\s/.test(text[i])) i++;
+    let item = null;
+    const quoted = text[i] === '"' ? /^"(?:[^"\\]|\\.)*"/.exec(text.slice(i)) : null;
+    if (quoted) {
+      try {
+        item = JSON.parse(quoted[0]);
+        i += quoted[0].length;
+      } catch (e) {
+        item = null;
+      }
+    }
+    const comma = text.indexOf(',', i);
+    const stop = comma < 0 ? text.length : comma;
+    if (item === null) item = text.slice(i, stop).trim();
+    if (item !== '') items.push(item);
+    i = stop + 1;
+  }
+  return items;
+}
 
 export function renderSlots(editable) {
   const body = $('slot-rows');
@@ -44,7 +73,9 @@ function ownRow(s, i, editable, invalid) {
     oninput: (e) => {
       const v = e.target.value;
       if (key === 'frameListRelated') s[key] = splitList(v);
-      else s[key] = v === '' ? null : v;
+      else if (s.type === 'TYPE_LIST' && (key === 'value' || key === 'defaultValue')) {
+        s[key] = v.trim() === '' ? null : splitItems(v);
+      } else s[key] = v === '' ? null : v;
       markDirty();
     }
   }, opts || {})));
