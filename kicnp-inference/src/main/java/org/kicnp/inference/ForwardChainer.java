@@ -279,11 +279,22 @@ final class ForwardChainer {
 
     private void install(String frame) {
         uninstall(frame);
+        Set<String> derived = supports.derivedFrom(frame);
         compiler.compile(frame).ifPresent(r -> {
             rules.put(frame, r);
+            // Its unshared and unique slots may have changed: what its instances hold is claimed again, before
+            // matching, and an instance that now claims what an older one holds no longer fits.
+            List<String> fired = derived.stream().filter(i -> supports.derivation(i)
+                    .map(d -> d.createdBy().isEmpty()).orElse(false)).toList();
+            Map<String, String> conflicts = supports.reclaim(r, fired);
             network.addRule(r).forEach(this::consider);
+            conflicts.forEach((i, why) -> {
+                Set<String> all = new LinkedHashSet<>(List.of(i));
+                all.addAll(supports.closure(i));
+                removeQuietly(all, "frame '" + frame + "' changed and its " + why);
+            });
         });
-        for (String dep : supports.derivedFrom(frame)) {
+        for (String dep : derived) {
             supports.derivation(dep).ifPresent(d -> retractIfFailing(dep, d, slot -> "frame '" + frame
                     + "' changed and the condition of slot '" + slot + "' no longer holds"));
         }

@@ -153,6 +153,70 @@ class TruthMaintenanceTest {
                 .satisfies(n -> assertThat(f.kb.value(n, "mOrder")).contains(Value.ref("o1")));
     }
 
+    private static Slot cupSlot(boolean shared) {
+        return Slot.builder("mCup", DataType.INSTANCE).argument("Cup").required(true).shared(shared).build();
+    }
+
+    @Test
+    void hotEdit_whenASlotBecomesUnshared_theInstanceItHoldsAlreadyIsConsumed() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Cup", null);
+        f.kb.add(Frame.classFrame("Serve").slot(Fixture.inst("mUser", "User")).slot(cupSlot(true)).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("cup", "Cup");
+        f.assertFact("u1", "User");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Serve")).hasSize(1);
+
+        f.kb.replace(f.kb.require("Serve").withSlot(cupSlot(false)));
+        f.assertFact("u2", "User");
+        e.runToQuiescence();
+
+        assertThat(f.instancesOf("Serve")).as("the cup fills the unshared slot of one live Serve only").hasSize(1);
+    }
+
+    @Test
+    void hotEdit_whenASlotBecomesUnshared_aLaterInstanceHoldingTheSameInstanceIsRetracted() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Cup", null);
+        f.kb.add(Frame.classFrame("Serve").slot(Fixture.inst("mUser", "User")).slot(cupSlot(true)).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("cup", "Cup");
+        f.assertFact("u1", "User");
+        f.assertFact("u2", "User");
+        e.runToQuiescence();
+        List<String> both = f.instancesOf("Serve");
+        assertThat(both).hasSize(2);
+
+        f.kb.replace(f.kb.require("Serve").withSlot(cupSlot(false)));
+        e.runToQuiescence();
+
+        assertThat(f.instancesOf("Serve")).as("the older firing keeps the cup").containsExactly(both.getFirst());
+        assertThat(f.traced(TraceEvent.Retracted.class)).anySatisfy(r -> {
+            assertThat(r.instance()).isEqualTo(both.get(1));
+            assertThat(r.reason()).isEqualTo("frame 'Serve' changed and its unshared slot 'mCup' already holds 'cup' in '"
+                    + both.getFirst() + "'");
+        });
+    }
+
+    @Test
+    void hotEdit_whenAnUnsharedSlotBecomesShared_theBindingsItBlockedFire() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Cup", null);
+        f.kb.add(Frame.classFrame("Serve").slot(Fixture.inst("mUser", "User")).slot(cupSlot(false)).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("cup", "Cup");
+        f.assertFact("u1", "User");
+        f.assertFact("u2", "User");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Serve")).hasSize(1);
+
+        f.kb.replace(f.kb.require("Serve").withSlot(cupSlot(true)));
+        e.runToQuiescence();
+
+        assertThat(f.instancesOf("Serve")).as("a shared cup serves both users").hasSize(2);
+    }
+
     @Test
     void classEdit_whenInheritedDefaultChanges_rechecksItsInstances() {
         Fixture f = new Fixture();
