@@ -110,6 +110,7 @@ final class ForwardChainer {
 
     /** Applies one committed batch to the network, the agenda and the truth maintenance records. */
     void process(ChangeSet cs) {
+        List<String> classesRemoved = new ArrayList<>(0);
         for (FrameEvent e : cs.events()) {
             switch (e) {
                 case FrameEvent.Added a -> {
@@ -139,11 +140,16 @@ final class ForwardChainer {
                     if (rm.frame().isInstance()) {
                         factRemoved(rm.frame());
                     } else {
-                        network.classesChanged();
-                        uninstall(rm.name());
+                        classesRemoved.add(rm.name());
                     }
                 }
             }
+        }
+        // After the batch's instances: a frame removed with its instances still retracts them as its rule says
+        // (their onDestroy runs), whatever order the batch named them in.
+        for (String name : classesRemoved) {
+            network.classesChanged();
+            uninstall(name);
         }
     }
 
@@ -178,11 +184,13 @@ final class ForwardChainer {
         if (d.isPresent()) {
             scripts.retracted(name);
             boolean failed = supports.takeFailed(name);
-            if (!failed) {
-                kb.frame(d.get().frame()).flatMap(c -> kb.value(c.name(), "onDestroy")).ifPresent(src ->
-                        scripts.run(d.get().frame(), "onDestroy", src.text(), ScriptCalls.snapshot(f), name, Optional.empty()));
-            }
             Rule r = rules.get(d.get().frame());
+            if (!failed) {
+                Optional<String> onDestroy = r != null ? r.onDestroy() : kb.frame(d.get().frame())
+                        .flatMap(c -> kb.value(c.name(), "onDestroy")).map(Value::text);
+                onDestroy.ifPresent(src -> scripts.run(d.get().frame(), "onDestroy", src, ScriptCalls.snapshot(f), name,
+                        Optional.empty()));
+            }
             if (r != null) {
                 d.get().binding().forEach((slot, fact) -> network.rematch(r.frame(), slot, fact).forEach(this::reconsider));
             }

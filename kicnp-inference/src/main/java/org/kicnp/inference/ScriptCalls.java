@@ -148,7 +148,7 @@ final class ScriptCalls {
         List<String[]> todo = new ArrayList<>();
         for (Rule r : rules) {
             r.onInstantiate().ifPresent(src -> todo.add(new String[] {r.frame(), "onInstantiate", src}));
-            kb.value(r.frame(), "onDestroy").ifPresent(v -> todo.add(new String[] {r.frame(), "onDestroy", v.text()}));
+            r.onDestroy().ifPresent(src -> todo.add(new String[] {r.frame(), "onDestroy", src}));
             for (SlotPattern p : r.patterns()) {
                 if (p.condition() instanceof org.kicnp.core.Condition.Script s) {
                     todo.add(new String[] {r.frame(), p.slot(), s.source()});

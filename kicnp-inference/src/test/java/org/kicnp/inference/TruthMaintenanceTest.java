@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.kicnp.core.BatchRejectedException;
+import org.kicnp.core.Change;
 import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
 import org.kicnp.core.Slot;
@@ -245,6 +246,29 @@ class TruthMaintenanceTest {
         f.kb.replace(f.kb.require("Taro").toBuilder().parent("KnownUser").build());
         e.runToQuiescence();
         assertThat(f.instancesOf("Greeting")).hasSize(1);
+    }
+
+    @Test
+    void removingABehaviorFrameWithItsInstances_runsTheirOnDestroy_whateverOrderTheBatchNamesThem() {
+        for (boolean frameFirst : List.of(true, false)) {
+            List<String> destroyed = new ArrayList<>();
+            Fixture f = new Fixture();
+            f.cls("User", null);
+            f.kb.add(Frame.classFrame("Serve").slot(Fixture.inst("mUser", "User")).slot(Fixture.str("onDestroy", "bye"))
+                    .build());
+            f.scripts.define("bye", g -> destroyed.add((String) Fixture.view(g).get("$name")));
+            InferenceEngine e = f.engine();
+            f.assertFact("u1", "User");
+            e.runToQuiescence();
+            String serve = f.instancesOf("Serve").getFirst();
+
+            f.kb.apply(frameFirst ? List.of(new Change.Remove("Serve"), new Change.Remove(serve))
+                    : List.of(new Change.Remove(serve), new Change.Remove("Serve")));
+            e.runToQuiescence();
+
+            assertThat(destroyed).as("frame removed " + (frameFirst ? "before" : "after") + " its instance")
+                    .containsExactly(serve);
+        }
     }
 
     @Test
