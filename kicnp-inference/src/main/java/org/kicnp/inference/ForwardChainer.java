@@ -207,10 +207,28 @@ final class ForwardChainer {
         String cls = after.parent().orElseThrow();
         boolean reactive = !before.parent().equals(after.parent()) || changed.stream().anyMatch(s ->
                 kb.slot(cls, s).map(e -> e.slot().reactive()).orElse(true));
-        if (!reactive || !kb.contains(name)) {
+        if (!kb.contains(name)) {
+            return;
+        }
+        if (!reactive) {
+            reindex(name); // nothing is matched again, but facts joined later meet the values there are now
             return;
         }
         rematch(name, "'" + name + "' changed");
+    }
+
+    /** Files a changed instance, and every instance that reads it through a reference, under their index keys now. */
+    private void reindex(String name) {
+        Set<String> seen = new LinkedHashSet<>(List.of(name));
+        List<String> todo = new ArrayList<>(List.of(name));
+        for (int i = 0; i < todo.size(); i++) {
+            network.reindex(todo.get(i));
+            for (String r : kb.referrers(todo.get(i))) {
+                if (seen.add(r)) {
+                    todo.add(r);
+                }
+            }
+        }
     }
 
     /**

@@ -158,6 +158,17 @@ final class MatchNetwork {
         }
     }
 
+    /** Files a fact again in the indexes of the memories it is in, under the keys its paths reach now. */
+    void reindex(String fact) {
+        FactView.Fact f = facts.get(fact);
+        if (f == null || f.entries == null) {
+            return;
+        }
+        for (AlphaMemory.Entry e : List.copyOf(f.entries)) {
+            e.memory.rekey(e, pathValue);
+        }
+    }
+
     /** Takes a fact out of every memory it is in. */
     void retract(String fact) {
         FactView.Fact f = facts.get(fact);

@@ -85,4 +85,25 @@ class JoinIndexTest {
         assertThat(f.kb.require("Echo-1").parent()).contains("Thing");
         assertThat(f.trace).noneMatch(t -> t instanceof TraceEvent.Blocked);
     }
+
+    @Test
+    void join_afterANonReactiveSlotChanged_newFactsAreJoinedOnItsNewValue() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("User").slot(Slot.builder("name", DataType.STRING).reactive(false).build()).build());
+        f.kb.add(Frame.classFrame("Order").slot(Slot.builder("who", DataType.STRING).build()).build());
+        f.kb.add(Frame.classFrame("Deliver").slot(Fixture.inst("mUser", "User"))
+                .slot(Fixture.inst("mOrder", "Order", ".who == mUser.name")).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("u1", "User", "name", "Ann");
+        e.runToQuiescence();
+        f.kb.replace(f.kb.require("u1").withSlot(Fixture.str("name", "Eve"))); // not reactive: nothing is matched again
+        e.runToQuiescence();
+
+        f.assertFact("oAnn", "Order", "who", "Ann");
+        f.assertFact("oEve", "Order", "who", "Eve");
+        e.runToQuiescence();
+
+        assertThat(f.instancesOf("Deliver")).as("u1 is called Eve now").singleElement()
+                .satisfies(d -> assertThat(f.kb.value(d, "mOrder")).contains(Value.ref("oEve")));
+    }
 }
