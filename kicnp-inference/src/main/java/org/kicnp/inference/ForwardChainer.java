@@ -211,19 +211,23 @@ final class ForwardChainer {
             return;
         }
         if (!reactive) {
-            reindex(name); // nothing is matched again, but facts joined later meet the values there are now
+            reindex(name); // nothing is matched again, but facts that come later meet it as it is now
             return;
         }
         rematch(name, "'" + name + "' changed");
     }
 
-    /** Files a changed instance, and every instance that reads it through a reference, under their index keys now. */
+    /**
+     * Brings the memberships and index keys of a changed instance, and of every instance that reads it through a
+     * reference, up to date without matching them again ({@link MatchNetwork#refresh}).
+     */
     private void reindex(String name) {
         Set<String> seen = new LinkedHashSet<>(List.of(name));
         List<String> todo = new ArrayList<>(List.of(name));
         for (int i = 0; i < todo.size(); i++) {
-            network.reindex(todo.get(i));
-            for (String r : kb.referrers(todo.get(i))) {
+            String n = todo.get(i);
+            kb.frame(n).filter(Frame::isInstance).flatMap(Frame::parent).ifPresent(cls -> network.refresh(n, cls));
+            for (String r : kb.referrers(n)) {
                 if (seen.add(r)) {
                     todo.add(r);
                 }

@@ -106,4 +106,31 @@ class JoinIndexTest {
         assertThat(f.instancesOf("Deliver")).as("u1 is called Eve now").singleElement()
                 .satisfies(d -> assertThat(f.kb.value(d, "mOrder")).contains(Value.ref("oEve")));
     }
+
+    @Test
+    void constantCondition_afterANonReactiveSlotChanged_newPartnersMeetTheInstanceAsItIsNow() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("User").slot(Slot.builder("age", DataType.INTEGER).reactive(false).build()).build());
+        f.cls("Mouth", null);
+        f.kb.add(Frame.classFrame("Talk").slot(Slot.builder("mUser", DataType.INSTANCE).argument("User").required(true)
+                        .condition(org.kicnp.core.ConditionParser.parse(".age >= 18")).build())
+                .slot(Slot.builder("mMouth", DataType.INSTANCE).argument("Mouth").required(true).build()).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("adult", "User", "age", 20L);
+        f.assertFact("child", "User", "age", 10L);
+        f.assertFact("m1", "Mouth");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Talk")).hasSize(1);
+        f.kb.replace(f.kb.require("adult").withSlot(Fixture.num("age", 12)));
+        f.kb.replace(f.kb.require("child").withSlot(Fixture.num("age", 19)));
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Talk")).as("not reactive: what was derived stays, nothing fires").hasSize(1);
+
+        f.assertFact("m2", "Mouth");
+        e.runToQuiescence();
+
+        assertThat(f.instancesOf("Talk").stream().filter(t -> f.kb.value(t, "mMouth").equals(java.util.Optional.of(
+                Value.ref("m2")))).map(t -> f.kb.value(t, "mUser").orElseThrow())).as("only the user of 18 or more now")
+                .containsExactly(Value.ref("child"));
+    }
 }
