@@ -381,14 +381,22 @@ final class ForwardChainer {
         }
     }
 
-    /** Fires one activation: creates the instance and runs its onInstantiate script. */
+    /**
+     * Whether an activation whose turn has come may still fire: an earlier firing may have claimed one of its
+     * instances or taken its key since it was made (then it is traced as blocked, and it is not a firing).
+     */
+    boolean mayFire(Activation a) {
+        Optional<String> blocked = supports.blocked(a.rule(), a.facts(), a.refs()[0], a.key());
+        if (blocked.isPresent()) {
+            trace(new TraceEvent.Blocked(a.rule().frame(), a.binding(), blocked.get()));
+            return false;
+        }
+        return true;
+    }
+
+    /** Fires one activation that {@link #mayFire may fire}: creates the instance and runs its onInstantiate script. */
     void fire(Activation a) {
         Rule r = a.rule();
-        Optional<String> blocked = supports.blocked(r, a.facts(), a.refs()[0], a.key());
-        if (blocked.isPresent()) {
-            trace(new TraceEvent.Blocked(r.frame(), a.binding(), blocked.get()));
-            return;
-        }
         Map<String, String> full = r.optional().isEmpty() ? a.binding() : withOptional(r, a.binding());
         FactView.Fact[] refs = a.refs();
         String trigger = newest(refs, full);

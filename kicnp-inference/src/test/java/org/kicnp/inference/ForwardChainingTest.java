@@ -230,6 +230,25 @@ class ForwardChainingTest {
     }
 
     @Test
+    void cycleLimit_countsFirings_notActivationsBlockedWhenTheirTurnCame() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Cup", null);
+        f.kb.add(Frame.classFrame("Serve").slot(Fixture.inst("mUser", "User"))
+                .slot(Slot.builder("mCup", DataType.INSTANCE).argument("Cup").required(true).shared(false).build())
+                .build());
+        InferenceEngine e = f.engine(EngineOptions.defaults().withMaxFirings(2));
+        f.assertFact("cup", "Cup");
+        for (String u : List.of("u1", "u2", "u3", "u4")) {
+            f.assertFact(u, "User");
+        }
+        assertThat(e.agendaSize()).as("all four wait: nothing holds the cup yet").isEqualTo(4);
+
+        assertThat(e.runToQuiescence()).as("one firing; the other three find the cup taken").isEqualTo(1);
+        assertThat(f.instancesOf("Serve")).hasSize(1);
+        assertThat(f.traced(TraceEvent.LimitReached.class)).isEmpty();
+    }
+
+    @Test
     void agenda_ordersByPriorityThenDepthThenConditionsThenRecency() {
         Fixture f = new Fixture();
         f.cls("Thing", null).cls("Base", null);
