@@ -226,8 +226,18 @@ final class ScriptCalls {
             trace(new TraceEvent.ScriptFailed(e.get().declaredBy(), "onNeeded", instance, message(ex)));
             return Optional.empty();
         }
+        Optional<Value> value;
+        try {
+            value = out == null ? Optional.empty() : Optional.of(ScriptApi.toValue(out, e.get().slot().type()));
+        } catch (RuntimeException ex) { // a value the slot's type cannot hold: the demon failed, its effects go too
+            String why = "The onNeeded demon of slot '" + slot + "' of frame '" + e.get().declaredBy()
+                    + "' returned a value that slot cannot hold: " + message(ex);
+            LOG.warn("{} (reading '{}')", why, instance);
+            trace(new TraceEvent.ScriptFailed(e.get().declaredBy(), "onNeeded", instance, why));
+            return Optional.empty();
+        }
         apply(effects, e.get().declaredBy(), instance, Optional.empty());
-        return out == null ? Optional.empty() : Optional.of(ScriptApi.toValue(out, e.get().slot().type()));
+        return value;
     }
 
     private void trace(TraceEvent e) {

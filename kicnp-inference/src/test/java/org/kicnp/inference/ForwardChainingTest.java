@@ -249,6 +249,29 @@ class ForwardChainingTest {
     }
 
     @Test
+    void onNeeded_whenTheDemonReturnsAValueNotOfTheSlotsType_readsNothingAndTracesTheFailureNamingFrameAndSlot() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("User").slot(Slot.builder("age", DataType.INTEGER).onNeeded("guess-age").build())
+                .build());
+        f.scripts.define("guess-age", g -> {
+            Fixture.call(g, "command", "PINO", "ask_age");
+            return "about ten";
+        });
+        InferenceEngine e = f.engine();
+        f.assertFact("u1", "User");
+
+        assertThat(e.read("u1", "age")).isEmpty();
+
+        assertThat(f.traced(TraceEvent.ScriptFailed.class)).singleElement().satisfies(x -> {
+            assertThat(x.frame()).isEqualTo("User");
+            assertThat(x.slot()).isEqualTo("onNeeded");
+            assertThat(x.message()).isEqualTo("The onNeeded demon of slot 'age' of frame 'User' returned a value that "
+                    + "slot cannot hold: 'about ten' is not an integer.");
+        });
+        assertThat(f.sent).as("a failed demon's effects are discarded").isEmpty();
+    }
+
+    @Test
     void agenda_ordersByPriorityThenDepthThenConditionsThenRecency() {
         Fixture f = new Fixture();
         f.cls("Thing", null).cls("Base", null);
