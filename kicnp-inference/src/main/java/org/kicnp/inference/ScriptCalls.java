@@ -198,7 +198,7 @@ final class ScriptCalls {
                 Optional<String> demon = now.isPresent() ? e.slot().onAdded() : e.slot().onRemoved();
                 demon.filter(src -> was.isPresent() || now.isPresent()).ifPresent(src -> run(e.declaredBy(),
                         now.isPresent() ? "onAdded" : "onRemoved", src, new FrameView(kb, after.name(), 0),
-                        after.name(), supports.isDerived(after.name()) ? Optional.of(after.name()) : Optional.empty()));
+                        after.name(), Optional.of(after.name()))); // what it creates rests on the instance
             });
         }
     }

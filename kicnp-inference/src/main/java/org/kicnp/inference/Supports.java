@@ -35,11 +35,6 @@ final class Supports {
         return Optional.ofNullable(f == null ? null : f.derivation);
     }
 
-    boolean isDerived(String instance) {
-        FactView.Fact f = facts.get(instance);
-        return f != null && f.derivation != null;
-    }
-
     /** The live instances a frame derived (a scan: frames change rarely, firings often). */
     Set<String> derivedFrom(String frame) {
         List<Derivation> found = new ArrayList<>();

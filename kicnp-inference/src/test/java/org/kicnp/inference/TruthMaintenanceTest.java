@@ -322,6 +322,25 @@ class TruthMaintenanceTest {
         assertThat(f.instancesOf("Note")).isEmpty();
     }
 
+    @Test
+    void demonCreatedInstance_restsOnTheInstanceWhoseDemonCreatedIt() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("User").slot(Slot.builder("nick", DataType.STRING).onAdded("note-nick").build())
+                .build());
+        f.kb.add(Frame.classFrame("Note").slot(Slot.builder("text", DataType.STRING).build()).build());
+        f.scripts.define("note-nick", g -> Fixture.call(g, "create", "Note", Map.of("text", "nick set")));
+        InferenceEngine e = f.engine();
+        f.assertFact("u1", "User");
+        e.runToQuiescence();
+        f.kb.replace(f.kb.require("u1").withSlot(Fixture.str("nick", "Annie")));
+        e.runToQuiescence();
+        String note = f.instancesOf("Note").getFirst();
+        assertThat(e.why(note).stimuli()).containsExactly("u1");
+
+        assertThat(e.destroy("u1")).containsExactlyInAnyOrder("u1", note);
+        assertThat(f.instancesOf("Note")).isEmpty();
+    }
+
     private static List<String> concat(String first, List<String> rest) {
         List<String> out = new ArrayList<>(List.of(first));
         out.addAll(rest);
