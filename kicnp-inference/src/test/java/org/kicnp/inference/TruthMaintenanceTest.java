@@ -341,6 +341,23 @@ class TruthMaintenanceTest {
         assertThat(f.instancesOf("Note")).isEmpty();
     }
 
+    @Test
+    void joinChange_twoReferencesAway_isCheckedAgain() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Order", null).cls("Address", null);
+        f.kb.add(Frame.classFrame("Deliver").slot(Fixture.inst("mUser", "User"))
+                .slot(Fixture.inst("mOrder", "Order", ".city == mUser.address.city")).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("a1", "Address", "city", "Kyoto");
+        f.assertFact("u1", "User", "address", "@a1");
+        f.assertFact("o1", "Order", "city", "Kyoto");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Deliver")).hasSize(1);
+        f.kb.replace(f.kb.require("a1").withSlot(Fixture.str("city", "Nara")));
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Deliver")).isEmpty();
+    }
+
     private static List<String> concat(String first, List<String> rest) {
         List<String> out = new ArrayList<>(List.of(first));
         out.addAll(rest);
