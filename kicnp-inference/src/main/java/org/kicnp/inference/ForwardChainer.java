@@ -132,7 +132,8 @@ final class ForwardChainer {
                         classChanged(r.name());
                         if (r.frame().isClass() && r.before_().isClass() && (!r.before_().parent()
                                 .equals(r.frame().parent()) || !r.before_().slots().equals(r.frame().slots()))) {
-                            kb.instancesOf(r.name()).forEach(i -> rematchOne(i.name(), "class '" + r.name() + "' changed"));
+                            rematchAll(kb.instancesOf(r.name()).stream().map(Frame::name).toList(),
+                                    "class '" + r.name() + "' changed");
                         }
                     }
                 }
@@ -241,7 +242,17 @@ final class ForwardChainer {
      */
     private void rematch(String name, String why) {
         rematchOne(name, why);
-        rematchReaders(name, why);
+        rematchReaders(name, why, new LinkedHashSet<>(List.of(name)));
+    }
+
+    /**
+     * As {@link #rematch} for every instance of an edited class (they may inherit other values now), then, once
+     * each, every instance that reads one of them through references.
+     */
+    private void rematchAll(List<String> names, String why) {
+        names.forEach(n -> rematchOne(n, why));
+        Set<String> seen = new LinkedHashSet<>(names);
+        names.forEach(n -> rematchReaders(n, why, seen));
     }
 
     /**
@@ -250,8 +261,7 @@ final class ForwardChainer {
      * so that indexes are rebuilt and the conditions of what was derived from them are checked again (and the
      * derived instances retracted where they no longer hold).
      */
-    private void rematchReaders(String name, String why) {
-        Set<String> seen = new LinkedHashSet<>(List.of(name));
+    private void rematchReaders(String name, String why, Set<String> seen) {
         List<String> todo = new ArrayList<>(kb.referrers(name));
         for (int i = 0; i < todo.size(); i++) {
             String r = todo.get(i);

@@ -235,6 +235,28 @@ class TruthMaintenanceTest {
     }
 
     @Test
+    void classEdit_whenADefaultReadThroughAReferenceChanges_rechecksWhatReadsIt() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("Address").slot(Slot.builder("city", DataType.STRING).defaultValue(Value.of("Kyoto"))
+                .build()).build());
+        f.cls("User", null).cls("Order", null);
+        f.kb.add(Frame.classFrame("Deliver").slot(Fixture.inst("mUser", "User"))
+                .slot(Fixture.inst("mOrder", "Order", ".city == mUser.address.city")).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("a1", "Address");
+        f.assertFact("u1", "User", "address", "@a1");
+        f.assertFact("o1", "Order", "city", "Kyoto");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Deliver")).hasSize(1);
+
+        f.kb.replace(f.kb.require("Address").withSlot(Slot.builder("city", DataType.STRING)
+                .defaultValue(Value.of("Nara")).build()));
+        e.runToQuiescence();
+
+        assertThat(f.instancesOf("Deliver")).as("u1's address is in Nara now").isEmpty();
+    }
+
+    @Test
     void classEdit_whenClassMovesUnderKnownUser_itsInstancesAreGreeted() {
         Fixture f = Fixture.paper();
         f.kb.add(Frame.classFrame("Taro").parent("User").build());
