@@ -322,10 +322,11 @@ final class ForwardChainer {
         Set<String> derived = supports.derivedFrom(frame);
         compiler.compile(frame).ifPresent(r -> {
             rules.put(frame, r);
-            // Its unshared and unique slots may have changed: what its instances hold is claimed again, before
-            // matching, and an instance that now claims what an older one holds no longer fits.
+            // Its slots' order and facets may have changed: before matching, what its instances fired stays
+            // refracted and what they hold is claimed again; one that claims what an older one holds no longer fits.
             List<String> fired = derived.stream().filter(i -> supports.derivation(i)
                     .map(d -> d.createdBy().isEmpty()).orElse(false)).toList();
+            supports.refract(r, fired);
             Map<String, String> conflicts = supports.reclaim(r, fired);
             network.addRule(r).forEach(this::consider);
             conflicts.forEach((i, why) -> {

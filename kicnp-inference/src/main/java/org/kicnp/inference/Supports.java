@@ -122,6 +122,27 @@ final class Supports {
         return conflicts;
     }
 
+    /**
+     * A behavior frame was recompiled: the bindings of the live instances it fired stay refracted under the new
+     * rule, whose refraction keys list the instances in its own slot order (an edit may have reordered the slots).
+     */
+    void refract(Rule r, Collection<String> fired) {
+        for (String i : fired) {
+            Derivation d = derivation(i).orElse(null);
+            String[] bound = d == null ? null : Activation.factsOf(r, d.binding());
+            if (bound == null || java.util.Arrays.asList(bound).contains(null)) {
+                continue; // a required slot it does not fill: it no longer fits and is retracted
+            }
+            BindingKey key = new BindingKey(r.frame(), bound);
+            for (String name : bound) {
+                FactView.Fact f = facts.get(name);
+                if (f != null) {
+                    f.fired(key);
+                }
+            }
+        }
+    }
+
     /** What an earlier instance of the rule already holds of a binding's claims or key, in words, if anything. */
     private Optional<String> taken(Rule r, Map<String, String> binding) {
         for (SlotPattern p : r.patterns()) {

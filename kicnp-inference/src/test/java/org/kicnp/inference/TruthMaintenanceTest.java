@@ -219,6 +219,25 @@ class TruthMaintenanceTest {
     }
 
     @Test
+    void hotEdit_whenTheSlotsAreReordered_aBindingThatFiredDoesNotFireAgain() {
+        Fixture f = new Fixture();
+        f.cls("A", null).cls("B", null);
+        Slot mA = Slot.builder("mA", DataType.INSTANCE).argument("A").required(true).build();
+        Slot mB = Slot.builder("mB", DataType.INSTANCE).argument("B").required(true).build();
+        f.kb.add(Frame.classFrame("Pair").slot(mA).slot(mB).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("a1", "A");
+        f.assertFact("b1", "B");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Pair")).hasSize(1);
+
+        f.kb.replace(Frame.classFrame("Pair").slot(mB).slot(mA).build());
+        e.runToQuiescence();
+
+        assertThat(f.instancesOf("Pair")).as("the same binding, still refracted").hasSize(1);
+    }
+
+    @Test
     void classEdit_whenInheritedDefaultChanges_rechecksItsInstances() {
         Fixture f = new Fixture();
         f.kb.add(Frame.classFrame("Order").slot(Slot.builder("drink", DataType.STRING).defaultValue(Value.of("tea"))
