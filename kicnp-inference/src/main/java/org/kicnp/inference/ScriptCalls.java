@@ -118,10 +118,16 @@ final class ScriptCalls {
     }
 
     private void create(Effect.Create c, Optional<String> supporter) {
+        if (supporter.isPresent() && !kb.contains(supporter.get())) {
+            // It would rest on an instance that is gone (destroyed by an earlier effect of the same script): an
+            // orphan outliving its support, which the other order of the two calls would have retracted.
+            throw new InferenceException("create('" + c.className() + "') was not applied: '" + supporter.get()
+                    + "', on which it would rest, is gone (destroyed by the same script).");
+        }
         Frame.Builder b = Frame.instance(c.name(), c.className()).provenance(Provenance.RUNTIME);
         c.slots().forEach((slot, v) -> b.slot(Slot.builder(slot, kb.slot(c.className(), slot)
                 .map(e -> e.slot().type()).orElse(v.type())).value(v).build()));
-        supporter.filter(kb::contains).ifPresent(s -> supports.record(new Derivation(c.name(), c.className(), Map.of(),
+        supporter.ifPresent(s -> supports.record(new Derivation(c.name(), c.className(), Map.of(),
                 List.of(), target.firings(), s, Optional.of(s)), Optional.empty()));
         try {
             kb.add(b.build());

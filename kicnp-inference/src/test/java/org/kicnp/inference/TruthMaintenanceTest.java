@@ -399,6 +399,32 @@ class TruthMaintenanceTest {
         assertThat(f.instancesOf("Deliver")).isEmpty();
     }
 
+    @Test
+    void scriptThatDestroysWhatItRestsOn_thenCreates_leavesNoOrphan_whateverTheOrder() {
+        for (boolean destroyFirst : List.of(true, false)) {
+            Fixture f = Fixture.paper();
+            f.kb.add(Frame.classFrame("Note").slot(Slot.builder("text", DataType.STRING).build()).build());
+            f.scripts.define("ask-name", g -> {
+                if (destroyFirst) {
+                    Fixture.call(g, "destroy", "userA");
+                }
+                Fixture.call(g, "create", "Note", Map.of("text", "asked"));
+                if (!destroyFirst) {
+                    Fixture.call(g, "destroy", "userA");
+                }
+                return null;
+            });
+            InferenceEngine e = f.engine();
+            f.assertFact("mouth1", "Mouth");
+            f.assertFact("userA", "NewUser");
+            e.runToQuiescence();
+
+            assertThat(f.instancesOf("AskUserName")).isEmpty();
+            assertThat(f.instancesOf("Note")).as("the note rests on AskUserName-1, gone with userA (destroy "
+                    + (destroyFirst ? "first" : "last") + ")").isEmpty();
+        }
+    }
+
     private static List<String> concat(String first, List<String> rest) {
         List<String> out = new ArrayList<>(List.of(first));
         out.addAll(rest);
