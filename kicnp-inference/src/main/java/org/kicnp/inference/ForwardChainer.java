@@ -189,7 +189,7 @@ final class ForwardChainer {
             if (!failed) {
                 Optional<String> onDestroy = r != null ? r.onDestroy() : kb.frame(d.get().frame())
                         .flatMap(c -> kb.value(c.name(), "onDestroy")).map(Value::text);
-                onDestroy.ifPresent(src -> scripts.run(d.get().frame(), "onDestroy", src, ScriptCalls.snapshot(f), name,
+                onDestroy.ifPresent(src -> scripts.run(d.get().frame(), "onDestroy", src, scripts.snapshot(f), name,
                         Optional.empty()));
             }
             if (r != null) {

@@ -137,10 +137,19 @@ final class ScriptCalls {
         }
     }
 
-    static Map<String, Object> snapshot(Frame f) {
+    /**
+     * The {@code s} of an {@code onDestroy}: a removed instance's slots as they were, own values first, then the
+     * values it inherited from its class (while the class is there), as {@code s} of its other scripts has them.
+     */
+    Map<String, Object> snapshot(Frame f) {
         Map<String, Object> m = new LinkedHashMap<>();
         m.put(FrameView.NAME, f.name());
         f.slots().forEach(s -> s.effectiveValue().ifPresent(v -> m.put(s.name(), v.text())));
+        f.parent().filter(kb::contains).ifPresent(cls -> kb.slots(cls).forEach(e -> {
+            if (!m.containsKey(e.slot().name())) {
+                kb.value(cls, e.slot().name()).ifPresent(v -> m.put(e.slot().name(), v.text()));
+            }
+        }));
         return Collections.unmodifiableMap(m);
     }
 

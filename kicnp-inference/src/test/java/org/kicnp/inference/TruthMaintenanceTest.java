@@ -425,6 +425,23 @@ class TruthMaintenanceTest {
         }
     }
 
+    @Test
+    void onDestroy_seesTheValuesTheInstanceInheritedFromItsFrame() {
+        Fixture f = new Fixture();
+        f.cls("User", null);
+        f.kb.add(Frame.classFrame("Serve").slot(Fixture.inst("mUser", "User")).slot(Fixture.str("farewell", "bye now"))
+                .slot(Fixture.str("onDestroy", "say-farewell")).build());
+        List<Object> said = new ArrayList<>();
+        f.scripts.define("say-farewell", g -> said.add(Fixture.view(g).get("farewell") + " " + Fixture.view(g).get("mUser")));
+        InferenceEngine e = f.engine();
+        f.assertFact("u1", "User");
+        e.runToQuiescence();
+
+        e.destroy("u1");
+
+        assertThat(said).containsExactly("bye now u1");
+    }
+
     private static List<String> concat(String first, List<String> rest) {
         List<String> out = new ArrayList<>(List.of(first));
         out.addAll(rest);
