@@ -201,6 +201,7 @@ final class ActionCoordinator {
         }
         boolean sent = t.status == Action.Status.SENT || t.status == Action.Status.STARTED;
         held.remove(t);
+        syncBuffer.remove(t); // held for its synchronization group: released at quiescence unless taken out here
         finish(t, Action.Status.FAILED, "cancelled: " + reason);
         if (sent) {
             sink.cancel(t.action, reason);

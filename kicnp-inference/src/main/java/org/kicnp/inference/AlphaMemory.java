@@ -42,7 +42,7 @@ final class AlphaMemory {
     /** One fact's membership: where it sits, and the index keys it is filed under (null where a path reached nothing). */
     static final class Entry {
         final AlphaMemory memory;
-        final Value[] keys;
+        Value[] keys;
         int at;
 
         private Entry(AlphaMemory memory, Value[] keys, int at) {
@@ -130,6 +130,46 @@ final class AlphaMemory {
         items[end] = fact;
         size++;
         return new Entry(this, keys, end++);
+    }
+
+    /**
+     * Files a member again under the keys its indexed paths reach now (a value it is read through changed without
+     * the member being matched again); its place in insertion order stays.
+     */
+    void rekey(Entry e, BiFunction<FactView.Fact, List<String>, Optional<Value>> pathValue) {
+        FactView.Fact fact = items[e.at];
+        if (fact == null || paths.isEmpty()) {
+            return;
+        }
+        for (int i = 0; i < paths.size(); i++) {
+            Value was = e.keys == null ? null : e.keys[i];
+            Value now = pathValue.apply(fact, paths.get(i)).map(Values::key).orElse(null);
+            if (java.util.Objects.equals(was, now)) {
+                continue;
+            }
+            Map<Value, Collection<FactView.Fact>> index = indexes.get(i);
+            if (was != null) {
+                Collection<FactView.Fact> bucket = index.get(was);
+                if (bucket != null) {
+                    bucket.remove(fact);
+                    if (bucket.isEmpty()) {
+                        index.remove(was);
+                    }
+                }
+            }
+            if (now != null) {
+                Collection<FactView.Fact> bucket = index.computeIfAbsent(now, k -> new ArrayList<>(2));
+                if (bucket.size() == SMALL && bucket instanceof ArrayList) {
+                    bucket = new LinkedHashSet<>(bucket);
+                    index.put(now, bucket);
+                }
+                bucket.add(fact);
+            }
+            if (e.keys == null) {
+                e.keys = new Value[paths.size()];
+            }
+            e.keys[i] = now;
+        }
     }
 
     /** Removes a member, given its membership. */

@@ -110,6 +110,7 @@ final class ForwardChainer {
 
     /** Applies one committed batch to the network, the agenda and the truth maintenance records. */
     void process(ChangeSet cs) {
+        List<String> classesRemoved = new ArrayList<>(0);
         for (FrameEvent e : cs.events()) {
             switch (e) {
                 case FrameEvent.Added a -> {
@@ -131,7 +132,8 @@ final class ForwardChainer {
                         classChanged(r.name());
                         if (r.frame().isClass() && r.before_().isClass() && (!r.before_().parent()
                                 .equals(r.frame().parent()) || !r.before_().slots().equals(r.frame().slots()))) {
-                            kb.instancesOf(r.name()).forEach(i -> rematchOne(i.name(), "class '" + r.name() + "' changed"));
+                            rematchAll(kb.instancesOf(r.name()).stream().map(Frame::name).toList(),
+                                    "class '" + r.name() + "' changed");
                         }
                     }
                 }
@@ -139,11 +141,16 @@ final class ForwardChainer {
                     if (rm.frame().isInstance()) {
                         factRemoved(rm.frame());
                     } else {
-                        network.classesChanged();
-                        uninstall(rm.name());
+                        classesRemoved.add(rm.name());
                     }
                 }
             }
+        }
+        // After the batch's instances: a frame removed with its instances still retracts them as its rule says
+        // (their onDestroy runs), whatever order the batch named them in.
+        for (String name : classesRemoved) {
+            network.classesChanged();
+            uninstall(name);
         }
     }
 
@@ -178,11 +185,13 @@ final class ForwardChainer {
         if (d.isPresent()) {
             scripts.retracted(name);
             boolean failed = supports.takeFailed(name);
-            if (!failed) {
-                kb.frame(d.get().frame()).flatMap(c -> kb.value(c.name(), "onDestroy")).ifPresent(src ->
-                        scripts.run(d.get().frame(), "onDestroy", src.text(), ScriptCalls.snapshot(f), name, Optional.empty()));
-            }
             Rule r = rules.get(d.get().frame());
+            if (!failed) {
+                Optional<String> onDestroy = r != null ? r.onDestroy() : kb.frame(d.get().frame())
+                        .flatMap(c -> kb.value(c.name(), "onDestroy")).map(Value::text);
+                onDestroy.ifPresent(src -> scripts.run(d.get().frame(), "onDestroy", src, scripts.snapshot(f), name,
+                        Optional.empty()));
+            }
             if (r != null) {
                 d.get().binding().forEach((slot, fact) -> network.rematch(r.frame(), slot, fact).forEach(this::reconsider));
             }
@@ -199,10 +208,32 @@ final class ForwardChainer {
         String cls = after.parent().orElseThrow();
         boolean reactive = !before.parent().equals(after.parent()) || changed.stream().anyMatch(s ->
                 kb.slot(cls, s).map(e -> e.slot().reactive()).orElse(true));
-        if (!reactive || !kb.contains(name)) {
+        if (!kb.contains(name)) {
+            return;
+        }
+        if (!reactive) {
+            reindex(name); // nothing is matched again, but facts that come later meet it as it is now
             return;
         }
         rematch(name, "'" + name + "' changed");
+    }
+
+    /**
+     * Brings the memberships and index keys of a changed instance, and of every instance that reads it through a
+     * reference, up to date without matching them again ({@link MatchNetwork#refresh}).
+     */
+    private void reindex(String name) {
+        Set<String> seen = new LinkedHashSet<>(List.of(name));
+        List<String> todo = new ArrayList<>(List.of(name));
+        for (int i = 0; i < todo.size(); i++) {
+            String n = todo.get(i);
+            kb.frame(n).filter(Frame::isInstance).flatMap(Frame::parent).ifPresent(cls -> network.refresh(n, cls));
+            for (String r : kb.referrers(n)) {
+                if (seen.add(r)) {
+                    todo.add(r);
+                }
+            }
+        }
     }
 
     /**
@@ -211,7 +242,17 @@ final class ForwardChainer {
      */
     private void rematch(String name, String why) {
         rematchOne(name, why);
-        rematchReaders(name, why);
+        rematchReaders(name, why, new LinkedHashSet<>(List.of(name)));
+    }
+
+    /**
+     * As {@link #rematch} for every instance of an edited class (they may inherit other values now), then, once
+     * each, every instance that reads one of them through references.
+     */
+    private void rematchAll(List<String> names, String why) {
+        names.forEach(n -> rematchOne(n, why));
+        Set<String> seen = new LinkedHashSet<>(names);
+        names.forEach(n -> rematchReaders(n, why, seen));
     }
 
     /**
@@ -220,8 +261,7 @@ final class ForwardChainer {
      * so that indexes are rebuilt and the conditions of what was derived from them are checked again (and the
      * derived instances retracted where they no longer hold).
      */
-    private void rematchReaders(String name, String why) {
-        Set<String> seen = new LinkedHashSet<>(List.of(name));
+    private void rematchReaders(String name, String why, Set<String> seen) {
         List<String> todo = new ArrayList<>(kb.referrers(name));
         for (int i = 0; i < todo.size(); i++) {
             String r = todo.get(i);
@@ -279,11 +319,23 @@ final class ForwardChainer {
 
     private void install(String frame) {
         uninstall(frame);
+        Set<String> derived = supports.derivedFrom(frame);
         compiler.compile(frame).ifPresent(r -> {
             rules.put(frame, r);
+            // Its slots' order and facets may have changed: before matching, what its instances fired stays
+            // refracted and what they hold is claimed again; one that claims what an older one holds no longer fits.
+            List<String> fired = derived.stream().filter(i -> supports.derivation(i)
+                    .map(d -> d.createdBy().isEmpty()).orElse(false)).toList();
+            supports.refract(r, fired);
+            Map<String, String> conflicts = supports.reclaim(r, fired);
             network.addRule(r).forEach(this::consider);
+            conflicts.forEach((i, why) -> {
+                Set<String> all = new LinkedHashSet<>(List.of(i));
+                all.addAll(supports.closure(i));
+                removeQuietly(all, "frame '" + frame + "' changed and its " + why);
+            });
         });
-        for (String dep : supports.derivedFrom(frame)) {
+        for (String dep : derived) {
             supports.derivation(dep).ifPresent(d -> retractIfFailing(dep, d, slot -> "frame '" + frame
                     + "' changed and the condition of slot '" + slot + "' no longer holds"));
         }
@@ -340,14 +392,22 @@ final class ForwardChainer {
         }
     }
 
-    /** Fires one activation: creates the instance and runs its onInstantiate script. */
+    /**
+     * Whether an activation whose turn has come may still fire: an earlier firing may have claimed one of its
+     * instances or taken its key since it was made (then it is traced as blocked, and it is not a firing).
+     */
+    boolean mayFire(Activation a) {
+        Optional<String> blocked = supports.blocked(a.rule(), a.facts(), a.refs()[0], a.key());
+        if (blocked.isPresent()) {
+            trace(new TraceEvent.Blocked(a.rule().frame(), a.binding(), blocked.get()));
+            return false;
+        }
+        return true;
+    }
+
+    /** Fires one activation that {@link #mayFire may fire}: creates the instance and runs its onInstantiate script. */
     void fire(Activation a) {
         Rule r = a.rule();
-        Optional<String> blocked = supports.blocked(r, a.facts(), a.refs()[0], a.key());
-        if (blocked.isPresent()) {
-            trace(new TraceEvent.Blocked(r.frame(), a.binding(), blocked.get()));
-            return;
-        }
         Map<String, String> full = r.optional().isEmpty() ? a.binding() : withOptional(r, a.binding());
         FactView.Fact[] refs = a.refs();
         String trigger = newest(refs, full);

@@ -206,6 +206,9 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
                     }
                     continue;
                 }
+                if (!forward.mayFire(next.get())) {
+                    continue; // blocked when its turn came: not a firing, so not counted against the limit
+                }
                 count++;
                 perFrame.computeIfAbsent(next.get().rule().frame(), f -> new int[1])[0]++;
                 if (count > options.maxFirings()) {

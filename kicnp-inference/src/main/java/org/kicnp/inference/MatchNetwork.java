@@ -92,8 +92,8 @@ final class MatchNetwork {
         return insert(facts.touch(fact), className);
     }
 
-    /** As {@link #insert(String, String)}, with the fact's record at hand. */
-    List<Match> insert(FactView.Fact fact, String className) {
+    /** The memories an instance of the class may enter: those of its class and its ancestors (cached). */
+    private List<AlphaMemory> entering(String className) {
         List<AlphaMemory> candidates = entryCache.get(className);
         if (candidates == null) {
             candidates = new ArrayList<>();
@@ -105,6 +105,12 @@ final class MatchNetwork {
             }
             entryCache.put(className, candidates);
         }
+        return candidates;
+    }
+
+    /** As {@link #insert(String, String)}, with the fact's record at hand. */
+    List<Match> insert(FactView.Fact fact, String className) {
+        List<AlphaMemory> candidates = entering(className);
         if (candidates.isEmpty()) {
             return List.of();
         }
@@ -155,6 +161,31 @@ final class MatchNetwork {
         /** The binding as slot → instance, in slot order (a new map). */
         Map<String, String> binding() {
             return Activation.bindingOf(rule, facts());
+        }
+    }
+
+    /**
+     * Brings an instance's memberships up to date after a change that is not matched again (a non-reactive slot):
+     * it leaves the memories whose constant conditions no longer hold for it, enters those where they now hold, and
+     * is filed under the index keys its paths reach now. No binding is made: facts that come later meet it as it is.
+     */
+    void refresh(String fact, String className) {
+        FactView.Fact f = facts.get(fact);
+        if (f == null) {
+            return;
+        }
+        for (AlphaMemory m : entering(className)) {
+            SlotPattern p = m.pattern();
+            boolean fits = !p.alpha() || conditions.holds(p.condition(), Value.ref(f.name), m.rule().frame(), Map.of());
+            AlphaMemory.Entry e = f.entryIn(m);
+            if (e != null && !fits) {
+                m.remove(e);
+                f.leave(m);
+            } else if (e != null) {
+                m.rekey(e, pathValue);
+            } else if (fits) {
+                offer(m, f);
+            }
         }
     }
 

@@ -57,8 +57,9 @@ final class RuleCompiler {
             return Optional.empty();
         }
         Optional<String> script = kb.value(frameName, "onInstantiate").map(Value::text).filter(t -> !t.isBlank());
+        Optional<String> onDestroy = kb.value(frameName, "onDestroy").map(Value::text).filter(t -> !t.isBlank());
         return Optional.of(Rule.of(frameName, frame.get().priority(), kb.ancestors(frameName).size(), conditions,
-                required, optional, script));
+                required, optional, script, onDestroy));
     }
 
     private static SlotPattern pattern(int index, Slot s, Set<String> instanceSlots) {

@@ -118,10 +118,16 @@ final class ScriptCalls {
     }
 
     private void create(Effect.Create c, Optional<String> supporter) {
+        if (supporter.isPresent() && !kb.contains(supporter.get())) {
+            // It would rest on an instance that is gone (destroyed by an earlier effect of the same script): an
+            // orphan outliving its support, which the other order of the two calls would have retracted.
+            throw new InferenceException("create('" + c.className() + "') was not applied: '" + supporter.get()
+                    + "', on which it would rest, is gone (destroyed by the same script).");
+        }
         Frame.Builder b = Frame.instance(c.name(), c.className()).provenance(Provenance.RUNTIME);
         c.slots().forEach((slot, v) -> b.slot(Slot.builder(slot, kb.slot(c.className(), slot)
                 .map(e -> e.slot().type()).orElse(v.type())).value(v).build()));
-        supporter.filter(kb::contains).ifPresent(s -> supports.record(new Derivation(c.name(), c.className(), Map.of(),
+        supporter.ifPresent(s -> supports.record(new Derivation(c.name(), c.className(), Map.of(),
                 List.of(), target.firings(), s, Optional.of(s)), Optional.empty()));
         try {
             kb.add(b.build());
@@ -131,10 +137,19 @@ final class ScriptCalls {
         }
     }
 
-    static Map<String, Object> snapshot(Frame f) {
+    /**
+     * The {@code s} of an {@code onDestroy}: a removed instance's slots as they were, own values first, then the
+     * values it inherited from its class (while the class is there), as {@code s} of its other scripts has them.
+     */
+    Map<String, Object> snapshot(Frame f) {
         Map<String, Object> m = new LinkedHashMap<>();
         m.put(FrameView.NAME, f.name());
         f.slots().forEach(s -> s.effectiveValue().ifPresent(v -> m.put(s.name(), v.text())));
+        f.parent().filter(kb::contains).ifPresent(cls -> kb.slots(cls).forEach(e -> {
+            if (!m.containsKey(e.slot().name())) {
+                kb.value(cls, e.slot().name()).ifPresent(v -> m.put(e.slot().name(), v.text()));
+            }
+        }));
         return Collections.unmodifiableMap(m);
     }
 
@@ -148,7 +163,7 @@ final class ScriptCalls {
         List<String[]> todo = new ArrayList<>();
         for (Rule r : rules) {
             r.onInstantiate().ifPresent(src -> todo.add(new String[] {r.frame(), "onInstantiate", src}));
-            kb.value(r.frame(), "onDestroy").ifPresent(v -> todo.add(new String[] {r.frame(), "onDestroy", v.text()}));
+            r.onDestroy().ifPresent(src -> todo.add(new String[] {r.frame(), "onDestroy", src}));
             for (SlotPattern p : r.patterns()) {
                 if (p.condition() instanceof org.kicnp.core.Condition.Script s) {
                     todo.add(new String[] {r.frame(), p.slot(), s.source()});
@@ -198,7 +213,7 @@ final class ScriptCalls {
                 Optional<String> demon = now.isPresent() ? e.slot().onAdded() : e.slot().onRemoved();
                 demon.filter(src -> was.isPresent() || now.isPresent()).ifPresent(src -> run(e.declaredBy(),
                         now.isPresent() ? "onAdded" : "onRemoved", src, new FrameView(kb, after.name(), 0),
-                        after.name(), supports.isDerived(after.name()) ? Optional.of(after.name()) : Optional.empty()));
+                        after.name(), Optional.of(after.name()))); // what it creates rests on the instance
             });
         }
     }
@@ -226,8 +241,18 @@ final class ScriptCalls {
             trace(new TraceEvent.ScriptFailed(e.get().declaredBy(), "onNeeded", instance, message(ex)));
             return Optional.empty();
         }
+        Optional<Value> value;
+        try {
+            value = out == null ? Optional.empty() : Optional.of(ScriptApi.toValue(out, e.get().slot().type()));
+        } catch (RuntimeException ex) { // a value the slot's type cannot hold: the demon failed, its effects go too
+            String why = "The onNeeded demon of slot '" + slot + "' of frame '" + e.get().declaredBy()
+                    + "' returned a value that slot cannot hold: " + message(ex);
+            LOG.warn("{} (reading '{}')", why, instance);
+            trace(new TraceEvent.ScriptFailed(e.get().declaredBy(), "onNeeded", instance, why));
+            return Optional.empty();
+        }
         apply(effects, e.get().declaredBy(), instance, Optional.empty());
-        return out == null ? Optional.empty() : Optional.of(ScriptApi.toValue(out, e.get().slot().type()));
+        return value;
     }
 
     private void trace(TraceEvent e) {

@@ -6,6 +6,7 @@ import java.util.Collection;
 import java.util.Deque;
 import java.util.HashMap;
 import java.util.HashSet;
+import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -32,11 +33,6 @@ final class Supports {
     Optional<Derivation> derivation(String instance) {
         FactView.Fact f = facts.get(instance);
         return Optional.ofNullable(f == null ? null : f.derivation);
-    }
-
-    boolean isDerived(String instance) {
-        FactView.Fact f = facts.get(instance);
-        return f != null && f.derivation != null;
     }
 
     /** The live instances a frame derived (a scan: frames change rarely, firings often). */
@@ -75,23 +71,90 @@ final class Supports {
             recordOf(support, known).dependent(d.instance());
         }
         d.createdBy().ifPresent(c -> recordOf(c, known).dependent(d.instance()));
-        rule.filter(r -> r.claims()).ifPresent(r -> {
-            List<String> held = new ArrayList<>();
-            for (SlotPattern p : r.patterns()) {
-                String v = d.binding().get(p.slot());
-                if (v != null && p.claims()) {
-                    String c = claimKey(r.frame(), p.slot(), v);
-                    claims.put(c, d.instance());
-                    held.add(c);
+        rule.filter(r -> r.claims()).ifPresent(r -> claim(r, d));
+        return self;
+    }
+
+    /** Takes the claims and the key that the rule's unshared and unique slots give the derived instance. */
+    private void claim(Rule r, Derivation d) {
+        List<String> held = new ArrayList<>();
+        for (SlotPattern p : r.patterns()) {
+            String v = d.binding().get(p.slot());
+            if (v != null && p.claims()) {
+                String c = claimKey(r.frame(), p.slot(), v);
+                claims.put(c, d.instance());
+                held.add(c);
+            }
+        }
+        uniqueKey(r, d.binding()).ifPresent(k -> {
+            keys.put(k, d.instance());
+            held.add(k);
+        });
+        heldBy.put(d.instance(), held);
+    }
+
+    /**
+     * A behavior frame was recompiled (edited): its facets may have changed, so the claims and keys of the live
+     * instances it fired are taken again under the new rule, oldest firing first. Returns, oldest first, the
+     * instances that now claim what an older one holds, each with the reason; they keep no claims.
+     */
+    Map<String, String> reclaim(Rule r, Collection<String> fired) {
+        for (String i : fired) {
+            for (String c : heldBy.getOrDefault(i, List.of())) {
+                claims.remove(c);
+                keys.remove(c);
+            }
+            heldBy.remove(i);
+        }
+        Map<String, String> conflicts = new LinkedHashMap<>();
+        for (String i : fired) {
+            Derivation d = derivation(i).orElse(null);
+            if (d == null || !r.claims()) {
+                continue;
+            }
+            Optional<String> taken = taken(r, d.binding());
+            if (taken.isPresent()) {
+                conflicts.put(i, taken.get());
+            } else {
+                claim(r, d);
+            }
+        }
+        return conflicts;
+    }
+
+    /**
+     * A behavior frame was recompiled: the bindings of the live instances it fired stay refracted under the new
+     * rule, whose refraction keys list the instances in its own slot order (an edit may have reordered the slots).
+     */
+    void refract(Rule r, Collection<String> fired) {
+        for (String i : fired) {
+            Derivation d = derivation(i).orElse(null);
+            String[] bound = d == null ? null : Activation.factsOf(r, d.binding());
+            if (bound == null || java.util.Arrays.asList(bound).contains(null)) {
+                continue; // a required slot it does not fill: it no longer fits and is retracted
+            }
+            BindingKey key = new BindingKey(r.frame(), bound);
+            for (String name : bound) {
+                FactView.Fact f = facts.get(name);
+                if (f != null) {
+                    f.fired(key);
                 }
             }
-            uniqueKey(r, d.binding()).ifPresent(k -> {
-                keys.put(k, d.instance());
-                held.add(k);
-            });
-            heldBy.put(d.instance(), held);
-        });
-        return self;
+        }
+    }
+
+    /** What an earlier instance of the rule already holds of a binding's claims or key, in words, if anything. */
+    private Optional<String> taken(Rule r, Map<String, String> binding) {
+        for (SlotPattern p : r.patterns()) {
+            String v = binding.get(p.slot());
+            String holder = v == null || !p.claims() ? null : claims.get(claimKey(r.frame(), p.slot(), v));
+            if (holder != null) {
+                return Optional.of((p.shared() ? "unique" : "unshared") + " slot '" + p.slot() + "' already holds '"
+                        + v + "' in '" + holder + "'");
+            }
+        }
+        return uniqueKey(r, binding).filter(keys::containsKey)
+                .map(k -> "unique slots " + r.uniqueSlots() + " already hold these values in '" + keys.get(k) + "'");
     }
 
     /** The record of a fact: one of {@code known} when it is there (a few, compared by name), else looked up. */

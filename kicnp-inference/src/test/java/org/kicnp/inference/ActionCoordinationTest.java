@@ -247,6 +247,25 @@ class ActionCoordinationTest {
     }
 
     @Test
+    void synchronization_whenAScriptCancelsAHeldActionBeforeQuiescence_itIsNeverSent() {
+        Fixture f = twoFrames(Relation.Coordination.SYNCHRONIZATION);
+        f.cls("Stop", null);
+        f.kb.add(Frame.classFrame("Halt").slot(Fixture.inst("mStop", "Stop"))
+                .slot(Fixture.str("onInstantiate", "halt")).build());
+        f.scripts.define("halt", g -> Fixture.call(g, "cancel", "PINO", "stop requested"));
+        InferenceEngine e = f.engine();
+        f.assertFact("go", "Go");
+        f.assertFact("stop", "Stop");
+
+        e.runToQuiescence(); // A (priority 1) issues the walk, held for its group; Halt (newer fact) cancels it; B last
+
+        String walk = e.actions().stream().filter(a -> a.robot().equals("PINO")).findFirst().orElseThrow().id();
+        assertThat(e.actionStatus(walk)).contains(Action.Status.FAILED);
+        assertThat(f.sent).as("a cancelled held action is never sent").extracting(Action::robot).containsExactly("AIBO");
+        assertThat(f.cancelled).as("the robot never had it").isEmpty();
+    }
+
+    @Test
     void restriction_whileRestrictedActionRuns_otherRobotsWaitInOrder() {
         Fixture f = twoFrames(null);
         f.kb.replace(f.kb.require("A").toBuilder().linkTo(Relation.Coordination.RESTRICTION, "B").build());

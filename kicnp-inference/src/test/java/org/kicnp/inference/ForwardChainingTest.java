@@ -230,6 +230,48 @@ class ForwardChainingTest {
     }
 
     @Test
+    void cycleLimit_countsFirings_notActivationsBlockedWhenTheirTurnCame() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Cup", null);
+        f.kb.add(Frame.classFrame("Serve").slot(Fixture.inst("mUser", "User"))
+                .slot(Slot.builder("mCup", DataType.INSTANCE).argument("Cup").required(true).shared(false).build())
+                .build());
+        InferenceEngine e = f.engine(EngineOptions.defaults().withMaxFirings(2));
+        f.assertFact("cup", "Cup");
+        for (String u : List.of("u1", "u2", "u3", "u4")) {
+            f.assertFact(u, "User");
+        }
+        assertThat(e.agendaSize()).as("all four wait: nothing holds the cup yet").isEqualTo(4);
+
+        assertThat(e.runToQuiescence()).as("one firing; the other three find the cup taken").isEqualTo(1);
+        assertThat(f.instancesOf("Serve")).hasSize(1);
+        assertThat(f.traced(TraceEvent.LimitReached.class)).isEmpty();
+    }
+
+    @Test
+    void onNeeded_whenTheDemonReturnsAValueNotOfTheSlotsType_readsNothingAndTracesTheFailureNamingFrameAndSlot() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("User").slot(Slot.builder("age", DataType.INTEGER).onNeeded("guess-age").build())
+                .build());
+        f.scripts.define("guess-age", g -> {
+            Fixture.call(g, "command", "PINO", "ask_age");
+            return "about ten";
+        });
+        InferenceEngine e = f.engine();
+        f.assertFact("u1", "User");
+
+        assertThat(e.read("u1", "age")).isEmpty();
+
+        assertThat(f.traced(TraceEvent.ScriptFailed.class)).singleElement().satisfies(x -> {
+            assertThat(x.frame()).isEqualTo("User");
+            assertThat(x.slot()).isEqualTo("onNeeded");
+            assertThat(x.message()).isEqualTo("The onNeeded demon of slot 'age' of frame 'User' returned a value that "
+                    + "slot cannot hold: 'about ten' is not an integer.");
+        });
+        assertThat(f.sent).as("a failed demon's effects are discarded").isEmpty();
+    }
+
+    @Test
     void agenda_ordersByPriorityThenDepthThenConditionsThenRecency() {
         Fixture f = new Fixture();
         f.cls("Thing", null).cls("Base", null);

@@ -85,4 +85,52 @@ class JoinIndexTest {
         assertThat(f.kb.require("Echo-1").parent()).contains("Thing");
         assertThat(f.trace).noneMatch(t -> t instanceof TraceEvent.Blocked);
     }
+
+    @Test
+    void join_afterANonReactiveSlotChanged_newFactsAreJoinedOnItsNewValue() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("User").slot(Slot.builder("name", DataType.STRING).reactive(false).build()).build());
+        f.kb.add(Frame.classFrame("Order").slot(Slot.builder("who", DataType.STRING).build()).build());
+        f.kb.add(Frame.classFrame("Deliver").slot(Fixture.inst("mUser", "User"))
+                .slot(Fixture.inst("mOrder", "Order", ".who == mUser.name")).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("u1", "User", "name", "Ann");
+        e.runToQuiescence();
+        f.kb.replace(f.kb.require("u1").withSlot(Fixture.str("name", "Eve"))); // not reactive: nothing is matched again
+        e.runToQuiescence();
+
+        f.assertFact("oAnn", "Order", "who", "Ann");
+        f.assertFact("oEve", "Order", "who", "Eve");
+        e.runToQuiescence();
+
+        assertThat(f.instancesOf("Deliver")).as("u1 is called Eve now").singleElement()
+                .satisfies(d -> assertThat(f.kb.value(d, "mOrder")).contains(Value.ref("oEve")));
+    }
+
+    @Test
+    void constantCondition_afterANonReactiveSlotChanged_newPartnersMeetTheInstanceAsItIsNow() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("User").slot(Slot.builder("age", DataType.INTEGER).reactive(false).build()).build());
+        f.cls("Mouth", null);
+        f.kb.add(Frame.classFrame("Talk").slot(Slot.builder("mUser", DataType.INSTANCE).argument("User").required(true)
+                        .condition(org.kicnp.core.ConditionParser.parse(".age >= 18")).build())
+                .slot(Slot.builder("mMouth", DataType.INSTANCE).argument("Mouth").required(true).build()).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("adult", "User", "age", 20L);
+        f.assertFact("child", "User", "age", 10L);
+        f.assertFact("m1", "Mouth");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Talk")).hasSize(1);
+        f.kb.replace(f.kb.require("adult").withSlot(Fixture.num("age", 12)));
+        f.kb.replace(f.kb.require("child").withSlot(Fixture.num("age", 19)));
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Talk")).as("not reactive: what was derived stays, nothing fires").hasSize(1);
+
+        f.assertFact("m2", "Mouth");
+        e.runToQuiescence();
+
+        assertThat(f.instancesOf("Talk").stream().filter(t -> f.kb.value(t, "mMouth").equals(java.util.Optional.of(
+                Value.ref("m2")))).map(t -> f.kb.value(t, "mUser").orElseThrow())).as("only the user of 18 or more now")
+                .containsExactly(Value.ref("child"));
+    }
 }

@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.kicnp.core.BatchRejectedException;
+import org.kicnp.core.Change;
 import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
 import org.kicnp.core.Slot;
@@ -153,6 +154,89 @@ class TruthMaintenanceTest {
                 .satisfies(n -> assertThat(f.kb.value(n, "mOrder")).contains(Value.ref("o1")));
     }
 
+    private static Slot cupSlot(boolean shared) {
+        return Slot.builder("mCup", DataType.INSTANCE).argument("Cup").required(true).shared(shared).build();
+    }
+
+    @Test
+    void hotEdit_whenASlotBecomesUnshared_theInstanceItHoldsAlreadyIsConsumed() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Cup", null);
+        f.kb.add(Frame.classFrame("Serve").slot(Fixture.inst("mUser", "User")).slot(cupSlot(true)).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("cup", "Cup");
+        f.assertFact("u1", "User");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Serve")).hasSize(1);
+
+        f.kb.replace(f.kb.require("Serve").withSlot(cupSlot(false)));
+        f.assertFact("u2", "User");
+        e.runToQuiescence();
+
+        assertThat(f.instancesOf("Serve")).as("the cup fills the unshared slot of one live Serve only").hasSize(1);
+    }
+
+    @Test
+    void hotEdit_whenASlotBecomesUnshared_aLaterInstanceHoldingTheSameInstanceIsRetracted() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Cup", null);
+        f.kb.add(Frame.classFrame("Serve").slot(Fixture.inst("mUser", "User")).slot(cupSlot(true)).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("cup", "Cup");
+        f.assertFact("u1", "User");
+        f.assertFact("u2", "User");
+        e.runToQuiescence();
+        List<String> both = f.instancesOf("Serve");
+        assertThat(both).hasSize(2);
+
+        f.kb.replace(f.kb.require("Serve").withSlot(cupSlot(false)));
+        e.runToQuiescence();
+
+        assertThat(f.instancesOf("Serve")).as("the older firing keeps the cup").containsExactly(both.getFirst());
+        assertThat(f.traced(TraceEvent.Retracted.class)).anySatisfy(r -> {
+            assertThat(r.instance()).isEqualTo(both.get(1));
+            assertThat(r.reason()).isEqualTo("frame 'Serve' changed and its unshared slot 'mCup' already holds 'cup' in '"
+                    + both.getFirst() + "'");
+        });
+    }
+
+    @Test
+    void hotEdit_whenAnUnsharedSlotBecomesShared_theBindingsItBlockedFire() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Cup", null);
+        f.kb.add(Frame.classFrame("Serve").slot(Fixture.inst("mUser", "User")).slot(cupSlot(false)).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("cup", "Cup");
+        f.assertFact("u1", "User");
+        f.assertFact("u2", "User");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Serve")).hasSize(1);
+
+        f.kb.replace(f.kb.require("Serve").withSlot(cupSlot(true)));
+        e.runToQuiescence();
+
+        assertThat(f.instancesOf("Serve")).as("a shared cup serves both users").hasSize(2);
+    }
+
+    @Test
+    void hotEdit_whenTheSlotsAreReordered_aBindingThatFiredDoesNotFireAgain() {
+        Fixture f = new Fixture();
+        f.cls("A", null).cls("B", null);
+        Slot mA = Slot.builder("mA", DataType.INSTANCE).argument("A").required(true).build();
+        Slot mB = Slot.builder("mB", DataType.INSTANCE).argument("B").required(true).build();
+        f.kb.add(Frame.classFrame("Pair").slot(mA).slot(mB).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("a1", "A");
+        f.assertFact("b1", "B");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Pair")).hasSize(1);
+
+        f.kb.replace(Frame.classFrame("Pair").slot(mB).slot(mA).build());
+        e.runToQuiescence();
+
+        assertThat(f.instancesOf("Pair")).as("the same binding, still refracted").hasSize(1);
+    }
+
     @Test
     void classEdit_whenInheritedDefaultChanges_rechecksItsInstances() {
         Fixture f = new Fixture();
@@ -170,6 +254,28 @@ class TruthMaintenanceTest {
     }
 
     @Test
+    void classEdit_whenADefaultReadThroughAReferenceChanges_rechecksWhatReadsIt() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("Address").slot(Slot.builder("city", DataType.STRING).defaultValue(Value.of("Kyoto"))
+                .build()).build());
+        f.cls("User", null).cls("Order", null);
+        f.kb.add(Frame.classFrame("Deliver").slot(Fixture.inst("mUser", "User"))
+                .slot(Fixture.inst("mOrder", "Order", ".city == mUser.address.city")).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("a1", "Address");
+        f.assertFact("u1", "User", "address", "@a1");
+        f.assertFact("o1", "Order", "city", "Kyoto");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Deliver")).hasSize(1);
+
+        f.kb.replace(f.kb.require("Address").withSlot(Slot.builder("city", DataType.STRING)
+                .defaultValue(Value.of("Nara")).build()));
+        e.runToQuiescence();
+
+        assertThat(f.instancesOf("Deliver")).as("u1's address is in Nara now").isEmpty();
+    }
+
+    @Test
     void classEdit_whenClassMovesUnderKnownUser_itsInstancesAreGreeted() {
         Fixture f = Fixture.paper();
         f.kb.add(Frame.classFrame("Taro").parent("User").build());
@@ -181,6 +287,29 @@ class TruthMaintenanceTest {
         f.kb.replace(f.kb.require("Taro").toBuilder().parent("KnownUser").build());
         e.runToQuiescence();
         assertThat(f.instancesOf("Greeting")).hasSize(1);
+    }
+
+    @Test
+    void removingABehaviorFrameWithItsInstances_runsTheirOnDestroy_whateverOrderTheBatchNamesThem() {
+        for (boolean frameFirst : List.of(true, false)) {
+            List<String> destroyed = new ArrayList<>();
+            Fixture f = new Fixture();
+            f.cls("User", null);
+            f.kb.add(Frame.classFrame("Serve").slot(Fixture.inst("mUser", "User")).slot(Fixture.str("onDestroy", "bye"))
+                    .build());
+            f.scripts.define("bye", g -> destroyed.add((String) Fixture.view(g).get("$name")));
+            InferenceEngine e = f.engine();
+            f.assertFact("u1", "User");
+            e.runToQuiescence();
+            String serve = f.instancesOf("Serve").getFirst();
+
+            f.kb.apply(frameFirst ? List.of(new Change.Remove("Serve"), new Change.Remove(serve))
+                    : List.of(new Change.Remove(serve), new Change.Remove("Serve")));
+            e.runToQuiescence();
+
+            assertThat(destroyed).as("frame removed " + (frameFirst ? "before" : "after") + " its instance")
+                    .containsExactly(serve);
+        }
     }
 
     @Test
@@ -232,6 +361,85 @@ class TruthMaintenanceTest {
         assertThat(e.why(note).stimuli()).containsExactlyInAnyOrder("userA", "mouth1");
         e.destroy("userA");
         assertThat(f.instancesOf("Note")).isEmpty();
+    }
+
+    @Test
+    void demonCreatedInstance_restsOnTheInstanceWhoseDemonCreatedIt() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("User").slot(Slot.builder("nick", DataType.STRING).onAdded("note-nick").build())
+                .build());
+        f.kb.add(Frame.classFrame("Note").slot(Slot.builder("text", DataType.STRING).build()).build());
+        f.scripts.define("note-nick", g -> Fixture.call(g, "create", "Note", Map.of("text", "nick set")));
+        InferenceEngine e = f.engine();
+        f.assertFact("u1", "User");
+        e.runToQuiescence();
+        f.kb.replace(f.kb.require("u1").withSlot(Fixture.str("nick", "Annie")));
+        e.runToQuiescence();
+        String note = f.instancesOf("Note").getFirst();
+        assertThat(e.why(note).stimuli()).containsExactly("u1");
+
+        assertThat(e.destroy("u1")).containsExactlyInAnyOrder("u1", note);
+        assertThat(f.instancesOf("Note")).isEmpty();
+    }
+
+    @Test
+    void joinChange_twoReferencesAway_isCheckedAgain() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Order", null).cls("Address", null);
+        f.kb.add(Frame.classFrame("Deliver").slot(Fixture.inst("mUser", "User"))
+                .slot(Fixture.inst("mOrder", "Order", ".city == mUser.address.city")).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("a1", "Address", "city", "Kyoto");
+        f.assertFact("u1", "User", "address", "@a1");
+        f.assertFact("o1", "Order", "city", "Kyoto");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Deliver")).hasSize(1);
+        f.kb.replace(f.kb.require("a1").withSlot(Fixture.str("city", "Nara")));
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Deliver")).isEmpty();
+    }
+
+    @Test
+    void scriptThatDestroysWhatItRestsOn_thenCreates_leavesNoOrphan_whateverTheOrder() {
+        for (boolean destroyFirst : List.of(true, false)) {
+            Fixture f = Fixture.paper();
+            f.kb.add(Frame.classFrame("Note").slot(Slot.builder("text", DataType.STRING).build()).build());
+            f.scripts.define("ask-name", g -> {
+                if (destroyFirst) {
+                    Fixture.call(g, "destroy", "userA");
+                }
+                Fixture.call(g, "create", "Note", Map.of("text", "asked"));
+                if (!destroyFirst) {
+                    Fixture.call(g, "destroy", "userA");
+                }
+                return null;
+            });
+            InferenceEngine e = f.engine();
+            f.assertFact("mouth1", "Mouth");
+            f.assertFact("userA", "NewUser");
+            e.runToQuiescence();
+
+            assertThat(f.instancesOf("AskUserName")).isEmpty();
+            assertThat(f.instancesOf("Note")).as("the note rests on AskUserName-1, gone with userA (destroy "
+                    + (destroyFirst ? "first" : "last") + ")").isEmpty();
+        }
+    }
+
+    @Test
+    void onDestroy_seesTheValuesTheInstanceInheritedFromItsFrame() {
+        Fixture f = new Fixture();
+        f.cls("User", null);
+        f.kb.add(Frame.classFrame("Serve").slot(Fixture.inst("mUser", "User")).slot(Fixture.str("farewell", "bye now"))
+                .slot(Fixture.str("onDestroy", "say-farewell")).build());
+        List<Object> said = new ArrayList<>();
+        f.scripts.define("say-farewell", g -> said.add(Fixture.view(g).get("farewell") + " " + Fixture.view(g).get("mUser")));
+        InferenceEngine e = f.engine();
+        f.assertFact("u1", "User");
+        e.runToQuiescence();
+
+        e.destroy("u1");
+
+        assertThat(said).containsExactly("bye now u1");
     }
 
     private static List<String> concat(String first, List<String> rest) {
