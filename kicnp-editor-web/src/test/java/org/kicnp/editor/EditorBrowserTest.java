@@ -105,26 +105,12 @@ class EditorBrowserTest {
     }
 
     @Test void worldPanel_withoutAPlatform_saysSoInWordsInEveryPart() throws Exception {
-        Path node = which("node");
-        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && node != null,
-                "Chromium or Node.js is not installed; browser test skipped.");
-        Path e2e = Path.of(System.getProperty("user.dir")).resolve("../editor-e2e").normalize();
-        Path artifacts = Path.of(System.getProperty("user.dir"), "target", "e2e");
-        Files.createDirectories(artifacts);
-        if (!Files.isDirectory(e2e.resolve("node_modules/playwright-core"))) {
-            run(e2e, List.of("npm", "ci", "--no-audit", "--no-fund"), Map.of(), artifacts.resolve("npm-ci.log"), 180);
-        }
+        Browser browser = Browser.ready();
         try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD),
                 SampleKnowledge.create())) {
-            Map<String, String> env = Map.of("EDITOR_URL", "http://127.0.0.1:" + server.port() + "/",
-                    "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString());
-            Path log = artifacts.resolve("browser-offline.log");
-
-            int exit = run(e2e, List.of(node.toString(), "world-offline.e2e.mjs"), env, log, 60);
-
-            assertThat(exit).as(Files.readString(log)).isZero();
+            browser.play("world-offline.e2e.mjs", server.port(), false, "browser-offline.log", 60);
         }
-        assertThat(artifacts.resolve("06-world-not-connected.png")).exists();
+        assertThat(browser.artifacts().resolve("06-world-not-connected.png")).exists();
     }
 
     @Test void hierarchy_onTable5Scenario_drawsSemanticLinksAsArrowsBetweenFrameNodes() throws Exception {
@@ -206,123 +192,85 @@ class EditorBrowserTest {
     }
 
     @Test void inferenceView_errorOfOneQuestion_goesWithTheNextAnswerAndTakesTheOldAnswersAlong() throws Exception {
-        Path node = which("node");
-        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && node != null,
-                "Chromium or Node.js is not installed; browser test skipped.");
-        Path e2e = Path.of(System.getProperty("user.dir")).resolve("../editor-e2e").normalize();
-        Path artifacts = Path.of(System.getProperty("user.dir"), "target", "e2e");
-        Files.createDirectories(artifacts);
-        if (!Files.isDirectory(e2e.resolve("node_modules/playwright-core"))) {
-            run(e2e, List.of("npm", "ci", "--no-audit", "--no-fund"), Map.of(), artifacts.resolve("npm-ci.log"), 180);
-        }
+        Browser browser = Browser.ready();
         KnowledgeBase kb = SampleKnowledge.create();
         try (InferenceEngine engine = InferenceEngine.builder(kb).build();
                 EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD),
                         kb, engine)) {
-            Map<String, String> env = Map.of("EDITOR_URL", "http://127.0.0.1:" + server.port() + "/",
-                    "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString());
-            Path log = artifacts.resolve("browser-inference-errors.log");
-
-            int exit = run(e2e, List.of(node.toString(), "inference-errors.e2e.mjs"), env, log, 60);
-
-            assertThat(exit).as(Files.readString(log)).isZero();
+            browser.play("inference-errors.e2e.mjs", server.port(), false, "browser-inference-errors.log", 60);
         }
-        assertThat(artifacts.resolve("09-inference-errors.png")).exists();
+        assertThat(browser.artifacts().resolve("09-inference-errors.png")).exists();
     }
 
     @Test void revert_afterSomeoneElseSavedTheFrame_showsTheFrameAsItNowIsAndTheNextSaveWorks() throws Exception {
-        Path node = which("node");
-        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && node != null,
-                "Chromium or Node.js is not installed; browser test skipped.");
-        Path e2e = Path.of(System.getProperty("user.dir")).resolve("../editor-e2e").normalize();
-        Path artifacts = Path.of(System.getProperty("user.dir"), "target", "e2e");
-        Files.createDirectories(artifacts);
-        if (!Files.isDirectory(e2e.resolve("node_modules/playwright-core"))) {
-            run(e2e, List.of("npm", "ci", "--no-audit", "--no-fund"), Map.of(), artifacts.resolve("npm-ci.log"), 180);
-        }
+        Browser browser = Browser.ready();
         KnowledgeBase kb = SampleKnowledge.create();
         try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
-            Map<String, String> env = Map.of("EDITOR_URL", "http://127.0.0.1:" + server.port() + "/",
-                    "EDITOR_PASSWORD", PASSWORD, "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString());
-            Path log = artifacts.resolve("browser-stale.log");
-
-            int exit = run(e2e, List.of(node.toString(), "stale.e2e.mjs"), env, log, 60);
-
-            assertThat(exit).as(Files.readString(log)).isZero();
+            browser.play("stale.e2e.mjs", server.port(), true, "browser-stale.log", 60);
         }
         assertThat(kb.require("Robot").ownSlot("robotName").flatMap(Slot::role)).contains("my role after theirs");
     }
 
     @Test void save_afterTheLoginEndedInAnotherTab_offersTheLoginAgainAndKeepsTheEdit() throws Exception {
-        Path node = which("node");
-        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && node != null,
-                "Chromium or Node.js is not installed; browser test skipped.");
-        Path e2e = Path.of(System.getProperty("user.dir")).resolve("../editor-e2e").normalize();
-        Path artifacts = Path.of(System.getProperty("user.dir"), "target", "e2e");
-        Files.createDirectories(artifacts);
-        if (!Files.isDirectory(e2e.resolve("node_modules/playwright-core"))) {
-            run(e2e, List.of("npm", "ci", "--no-audit", "--no-fund"), Map.of(), artifacts.resolve("npm-ci.log"), 180);
-        }
+        Browser browser = Browser.ready();
         KnowledgeBase kb = SampleKnowledge.create();
         try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
-            Map<String, String> env = Map.of("EDITOR_URL", "http://127.0.0.1:" + server.port() + "/",
-                    "EDITOR_PASSWORD", PASSWORD, "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString());
-            Path log = artifacts.resolve("browser-session.log");
-
-            int exit = run(e2e, List.of(node.toString(), "session.e2e.mjs"), env, log, 60);
-
-            assertThat(exit).as(Files.readString(log)).isZero();
+            browser.play("session.e2e.mjs", server.port(), true, "browser-session.log", 60);
         }
         assertThat(kb.require("Robot").ownSlot("robotName").flatMap(Slot::role)).contains("kept across the login");
     }
 
     @Test void listValue_withCommasInItsItems_keepsItsItemsWhenAnItemIsAddedInTheTable() throws Exception {
-        Path node = which("node");
-        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && node != null,
-                "Chromium or Node.js is not installed; browser test skipped.");
-        Path e2e = Path.of(System.getProperty("user.dir")).resolve("../editor-e2e").normalize();
-        Path artifacts = Path.of(System.getProperty("user.dir"), "target", "e2e");
-        Files.createDirectories(artifacts);
-        if (!Files.isDirectory(e2e.resolve("node_modules/playwright-core"))) {
-            run(e2e, List.of("npm", "ci", "--no-audit", "--no-fund"), Map.of(), artifacts.resolve("npm-ci.log"), 180);
-        }
+        Browser browser = Browser.ready();
         KnowledgeBase kb = SampleKnowledge.create();
         kb.add(Frame.classFrame("Phrases").parent("System").slot(Slot.ofValue("lines", DataType.LIST,
                 new Value.Lst(List.of(Value.of("Hello, Ken"), Value.of("Bye"))))).build());
         try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
-            Map<String, String> env = Map.of("EDITOR_URL", "http://127.0.0.1:" + server.port() + "/",
-                    "EDITOR_PASSWORD", PASSWORD, "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString());
-            Path log = artifacts.resolve("browser-lists.log");
-
-            int exit = run(e2e, List.of(node.toString(), "lists.e2e.mjs"), env, log, 60);
-
-            assertThat(exit).as(Files.readString(log)).isZero();
+            browser.play("lists.e2e.mjs", server.port(), true, "browser-lists.log", 60);
         }
         assertThat(kb.value("Phrases", "lines")).contains(new Value.Lst(List.of(Value.of("Hello, Ken"), Value.of("Bye"),
                 Value.of("See you"))));
     }
 
     @Test void newFrameAndRename_withUnsavedEdits_askFirstAndKeepTheEditsWhenDeclined() throws Exception {
-        Path node = which("node");
-        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && node != null,
-                "Chromium or Node.js is not installed; browser test skipped.");
-        Path e2e = Path.of(System.getProperty("user.dir")).resolve("../editor-e2e").normalize();
-        Path artifacts = Path.of(System.getProperty("user.dir"), "target", "e2e");
-        Files.createDirectories(artifacts);
-        if (!Files.isDirectory(e2e.resolve("node_modules/playwright-core"))) {
-            run(e2e, List.of("npm", "ci", "--no-audit", "--no-fund"), Map.of(), artifacts.resolve("npm-ci.log"), 180);
-        }
+        Browser browser = Browser.ready();
         KnowledgeBase kb = SampleKnowledge.create();
         try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
-            Map<String, String> env = Map.of("EDITOR_URL", "http://127.0.0.1:" + server.port() + "/",
-                    "EDITOR_PASSWORD", PASSWORD, "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString());
-            Path log = artifacts.resolve("browser-edits.log");
-
-            int exit = run(e2e, List.of(node.toString(), "edits.e2e.mjs"), env, log, 60);
-
-            assertThat(exit).as(Files.readString(log)).isZero();
+            browser.play("edits.e2e.mjs", server.port(), true, "browser-edits.log", 60);
         }
         assertThat(kb.require("Robot").ownSlot("robotName").flatMap(Slot::role)).contains("not saved yet");
+    }
+
+    /** Where the browser scripts run; skips the test when Chromium or Node.js is missing, installs Playwright once. */
+    private record Browser(Path node, Path e2e, Path artifacts) {
+        static Browser ready() throws IOException, InterruptedException {
+            Path node = which("node");
+            Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && node != null,
+                    "Chromium or Node.js is not installed; browser test skipped.");
+            Path e2e = Path.of(System.getProperty("user.dir")).resolve("../editor-e2e").normalize();
+            Path artifacts = Path.of(System.getProperty("user.dir"), "target", "e2e");
+            Files.createDirectories(artifacts);
+            if (!Files.isDirectory(e2e.resolve("node_modules/playwright-core"))) {
+                run(e2e, List.of("npm", "ci", "--no-audit", "--no-fund"), Map.of(), artifacts.resolve("npm-ci.log"), 180);
+            }
+            return new Browser(node, e2e, artifacts);
+        }
+
+        /**
+         * Runs {@code editor-e2e/SCRIPT} against the editor on {@code port} (given the password to log in with, or
+         * not), its output in {@code target/e2e/LOG}; fails the test, with that output, unless it exits 0.
+         */
+        void play(String script, int port, boolean withPassword, String log, int seconds)
+                throws IOException, InterruptedException {
+            Map<String, String> env = new java.util.HashMap<>(Map.of("EDITOR_URL", "http://127.0.0.1:" + port + "/",
+                    "ARTIFACTS", artifacts.toString(), "CHROMIUM", CHROMIUM.toString()));
+            if (withPassword) {
+                env.put("EDITOR_PASSWORD", PASSWORD);
+            }
+            Path output = artifacts.resolve(log);
+            int exit = run(e2e, List.of(node.toString(), script), env, output, seconds);
+            assertThat(exit).as(Files.readString(output)).isZero();
+        }
     }
 
     private static int run(Path dir, List<String> command, Map<String, String> env, Path log, int seconds)
