@@ -560,7 +560,9 @@ public final class AgentCommand {
                     throw new IllegalArgumentException("VALUE '" + text + "' starts a list but is not a JSON array: "
                             + e.getOriginalMessage());
                 }
-                return item(list, text);
+                return org.kicnp.protocol.ValueJson.fromJson(list, n -> new IllegalArgumentException("VALUE '"
+                        + text + "' holds " + n + ", which is no slot value: items are numbers, true or false, "
+                        + "\"text\", {\"ref\": \"NAME\"} or lists."));
             }
             if (text.length() >= 2 && text.startsWith("\"") && text.endsWith("\"")) {
                 return org.kicnp.core.Value.of(text.substring(1, text.length() - 1));
@@ -581,27 +583,6 @@ public final class AgentCommand {
                 return org.kicnp.core.Value.ref(text.substring(1));
             }
             return org.kicnp.core.Value.of(text);
-        }
-
-        /** An item of a JSON array VALUE, written as the protocol writes slot values ({"ref": NAME} a reference). */
-        private static org.kicnp.core.Value item(com.fasterxml.jackson.databind.JsonNode n, String text) {
-            if (n.isArray()) {
-                List<org.kicnp.core.Value> items = new ArrayList<>();
-                n.forEach(i -> items.add(item(i, text)));
-                return new org.kicnp.core.Value.Lst(items);
-            } else if (n.isIntegralNumber() && n.canConvertToLong()) {
-                return org.kicnp.core.Value.of(n.longValue());
-            } else if (n.isNumber() && Double.isFinite(n.doubleValue())) {
-                return org.kicnp.core.Value.of(n.doubleValue());
-            } else if (n.isBoolean()) {
-                return org.kicnp.core.Value.of(n.booleanValue());
-            } else if (n.isTextual()) {
-                return org.kicnp.core.Value.of(n.textValue());
-            } else if (n.isObject() && n.size() == 1 && n.path("ref").isTextual()) {
-                return org.kicnp.core.Value.ref(n.path("ref").textValue());
-            }
-            throw new IllegalArgumentException("VALUE '" + text + "' holds " + n + ", which is no slot value: items "
-                    + "are numbers, true or false, \"text\", {\"ref\": \"NAME\"} or lists.");
         }
     }
 

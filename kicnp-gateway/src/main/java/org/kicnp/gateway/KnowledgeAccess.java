@@ -330,10 +330,15 @@ final class KnowledgeAccess implements KnowledgeListener {
         try {
             for (FrameEvent e : changes.events()) {
                 Set<String> classes = classesOf(e.frame());
+                Optional<String> xml = null; // the frame as agents read it: written once per event, when needed
                 for (Session s : subscribers) {
                     for (String c : s.subscriptions()) {
                         if (classes.contains(c)) {
-                            out.send(s, notification(c, e));
+                            if (xml == null) {
+                                xml = e instanceof FrameEvent.Removed ? Optional.empty()
+                                        : Optional.of(FrameText.toXml(selfDescribed(e.frame())));
+                            }
+                            out.send(s, notification(c, e, xml));
                         }
                     }
                 }
@@ -375,14 +380,13 @@ final class KnowledgeAccess implements KnowledgeListener {
         return out;
     }
 
-    private Message.Changed notification(String ofClass, FrameEvent e) {
-        return switch (e) {
-            case FrameEvent.Added a -> new Message.Changed(ofClass, ChangeKind.ADDED, a.name(),
-                    Optional.of(FrameText.toXml(selfDescribed(a.frame()))));
-            case FrameEvent.Replaced r -> new Message.Changed(ofClass, ChangeKind.REPLACED, r.name(),
-                    Optional.of(FrameText.toXml(selfDescribed(r.frame()))));
-            case FrameEvent.Removed r -> new Message.Changed(ofClass, ChangeKind.REMOVED, r.name(), Optional.empty());
+    private static Message.Changed notification(String ofClass, FrameEvent e, Optional<String> xml) {
+        ChangeKind kind = switch (e) {
+            case FrameEvent.Added a -> ChangeKind.ADDED;
+            case FrameEvent.Replaced r -> ChangeKind.REPLACED;
+            case FrameEvent.Removed r -> ChangeKind.REMOVED;
         };
+        return new Message.Changed(ofClass, kind, e.name(), xml);
     }
 
     private Message apply(String id, List<Change> changes) {

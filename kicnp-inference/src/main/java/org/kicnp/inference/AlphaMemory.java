@@ -108,16 +108,7 @@ final class AlphaMemory {
             Optional<Value> key = pathValue.apply(fact, paths.get(i));
             if (key.isPresent()) {
                 Value k = Values.key(key.get());
-                Map<Value, Collection<FactView.Fact>> index = indexes.get(i);
-                Collection<FactView.Fact> bucket = index.get(k);
-                if (bucket == null) {
-                    bucket = new ArrayList<>(2);
-                    index.put(k, bucket);
-                } else if (bucket.size() == SMALL && bucket instanceof ArrayList) {
-                    bucket = new LinkedHashSet<>(bucket);
-                    index.put(k, bucket);
-                }
-                bucket.add(fact);
+                file(indexes.get(i), k, fact);
                 if (keys == null) {
                     keys = new Value[paths.size()];
                 }
@@ -149,26 +140,39 @@ final class AlphaMemory {
             }
             Map<Value, Collection<FactView.Fact>> index = indexes.get(i);
             if (was != null) {
-                Collection<FactView.Fact> bucket = index.get(was);
-                if (bucket != null) {
-                    bucket.remove(fact);
-                    if (bucket.isEmpty()) {
-                        index.remove(was);
-                    }
-                }
+                unfile(index, was, fact);
             }
             if (now != null) {
-                Collection<FactView.Fact> bucket = index.computeIfAbsent(now, k -> new ArrayList<>(2));
-                if (bucket.size() == SMALL && bucket instanceof ArrayList) {
-                    bucket = new LinkedHashSet<>(bucket);
-                    index.put(now, bucket);
-                }
-                bucket.add(fact);
+                file(index, now, fact);
             }
             if (e.keys == null) {
                 e.keys = new Value[paths.size()];
             }
             e.keys[i] = now;
+        }
+    }
+
+    /** Files a fact under a key: a short list, a set once the bucket grows past {@link #SMALL}. */
+    private static void file(Map<Value, Collection<FactView.Fact>> index, Value key, FactView.Fact fact) {
+        Collection<FactView.Fact> bucket = index.get(key);
+        if (bucket == null) {
+            bucket = new ArrayList<>(2);
+            index.put(key, bucket);
+        } else if (bucket.size() == SMALL && bucket instanceof ArrayList) {
+            bucket = new LinkedHashSet<>(bucket);
+            index.put(key, bucket);
+        }
+        bucket.add(fact);
+    }
+
+    /** Takes a fact out of a key's bucket, dropping the bucket once it is empty. */
+    private static void unfile(Map<Value, Collection<FactView.Fact>> index, Value key, FactView.Fact fact) {
+        Collection<FactView.Fact> bucket = index.get(key);
+        if (bucket != null) {
+            bucket.remove(fact);
+            if (bucket.isEmpty()) {
+                index.remove(key);
+            }
         }
     }
 
@@ -182,16 +186,8 @@ final class AlphaMemory {
         size--;
         if (e.keys != null) {
             for (int i = 0; i < e.keys.length; i++) {
-                if (e.keys[i] == null) {
-                    continue;
-                }
-                Map<Value, Collection<FactView.Fact>> index = indexes.get(i);
-                Collection<FactView.Fact> bucket = index.get(e.keys[i]);
-                if (bucket != null) {
-                    bucket.remove(fact);
-                    if (bucket.isEmpty()) {
-                        index.remove(e.keys[i]);
-                    }
+                if (e.keys[i] != null) {
+                    unfile(indexes.get(i), e.keys[i], fact);
                 }
             }
         }

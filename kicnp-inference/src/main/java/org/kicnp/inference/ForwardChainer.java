@@ -223,17 +223,12 @@ final class ForwardChainer {
      * reference, up to date without matching them again ({@link MatchNetwork#refresh}).
      */
     private void reindex(String name) {
-        Set<String> seen = new LinkedHashSet<>(List.of(name));
-        List<String> todo = new ArrayList<>(List.of(name));
-        for (int i = 0; i < todo.size(); i++) {
-            String n = todo.get(i);
-            kb.frame(n).filter(Frame::isInstance).flatMap(Frame::parent).ifPresent(cls -> network.refresh(n, cls));
-            for (String r : kb.referrers(n)) {
-                if (seen.add(r)) {
-                    todo.add(r);
-                }
-            }
-        }
+        refresh(name);
+        forEachReader(name, new LinkedHashSet<>(List.of(name)), this::refresh);
+    }
+
+    private void refresh(String name) {
+        kb.frame(name).filter(Frame::isInstance).flatMap(Frame::parent).ifPresent(cls -> network.refresh(name, cls));
     }
 
     /**
@@ -262,6 +257,14 @@ final class ForwardChainer {
      * derived instances retracted where they no longer hold).
      */
     private void rematchReaders(String name, String why, Set<String> seen) {
+        forEachReader(name, seen, r -> rematchOne(r, why + " (read through '" + r + "')"));
+    }
+
+    /**
+     * Visits, once each, every instance the engine holds that refers to {@code name}, directly or through others;
+     * those in {@code seen} are skipped, and each visited one is added to it.
+     */
+    private void forEachReader(String name, Set<String> seen, Consumer<String> visit) {
         List<String> todo = new ArrayList<>(kb.referrers(name));
         for (int i = 0; i < todo.size(); i++) {
             String r = todo.get(i);
@@ -269,7 +272,7 @@ final class ForwardChainer {
             if (!seen.add(r) || f == null || f.frame == null) {
                 continue;
             }
-            rematchOne(r, why + " (read through '" + r + "')");
+            visit.accept(r);
             todo.addAll(kb.referrers(r));
         }
     }

@@ -17,8 +17,39 @@ import org.kicnp.core.Value;
  * Maps slot {@link Value}s to plain JSON values and back: string, integer, number with a fraction, boolean, array,
  * and {@code {"ref": "frame"}} for a frame reference. Kept here so the core domain carries no Jackson annotations.
  */
-final class ValueJson {
+public final class ValueJson {
     private ValueJson() {
+    }
+
+    /**
+     * A slot value from its JSON form, as the protocol reads it (text, whole number, number, boolean, array, or
+     * {@code {"ref": "frame"}}); {@code refuse} makes the exception thrown for the first node, at any depth, that is
+     * none of these.
+     */
+    public static Value fromJson(JsonNode node, java.util.function.Function<JsonNode, ? extends RuntimeException> refuse) {
+        if (node.isTextual()) {
+            return Value.of(node.textValue());
+        }
+        if (node.isIntegralNumber() && node.canConvertToLong()) {
+            return Value.of(node.longValue());
+        }
+        if (node.isNumber()) {
+            return Value.of(node.doubleValue());
+        }
+        if (node.isBoolean()) {
+            return Value.of(node.booleanValue());
+        }
+        if (node.isArray()) {
+            List<Value> items = new ArrayList<>(node.size());
+            for (JsonNode item : node) {
+                items.add(fromJson(item, refuse));
+            }
+            return new Value.Lst(items);
+        }
+        if (node.isObject() && node.size() == 1 && node.path("ref").isTextual()) {
+            return Value.ref(node.get("ref").textValue());
+        }
+        throw refuse.apply(node);
     }
 
     static SimpleModule module() {
@@ -62,31 +93,23 @@ final class ValueJson {
         }
 
         private static Value toValue(JsonNode node, JsonParser parser) throws IOException {
-            if (node.isTextual()) {
-                return Value.of(node.textValue());
+            try {
+                return fromJson(node, NotAValue::new);
+            } catch (NotAValue e) {
+                throw new com.fasterxml.jackson.databind.exc.InvalidFormatException(parser,
+                        "A slot value must be a string, a number, a boolean, an array or {\"ref\": \"frame\"}, not "
+                                + e.node + ".", node, Value.class);
             }
-            if (node.isIntegralNumber() && node.canConvertToLong()) {
-                return Value.of(node.longValue());
+        }
+
+        /** The node {@link #fromJson} found no slot value in, carried out to be reported at the parser. */
+        private static final class NotAValue extends RuntimeException {
+            final transient JsonNode node;
+
+            NotAValue(JsonNode node) {
+                super(null, null, false, false);
+                this.node = node;
             }
-            if (node.isNumber()) {
-                return Value.of(node.doubleValue());
-            }
-            if (node.isBoolean()) {
-                return Value.of(node.booleanValue());
-            }
-            if (node.isArray()) {
-                List<Value> items = new ArrayList<>(node.size());
-                for (JsonNode item : node) {
-                    items.add(toValue(item, parser));
-                }
-                return new Value.Lst(items);
-            }
-            if (node.isObject() && node.size() == 1 && node.path("ref").isTextual()) {
-                return Value.ref(node.get("ref").textValue());
-            }
-            throw new com.fasterxml.jackson.databind.exc.InvalidFormatException(parser,
-                    "A slot value must be a string, a number, a boolean, an array or {\"ref\": \"frame\"}, not "
-                            + node + ".", node, Value.class);
         }
     }
 }
