@@ -1,10 +1,6 @@
 package org.kicnp.cli;
 
-import java.io.IOException;
-import java.io.InputStream;
 import java.io.PrintWriter;
-import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -110,15 +106,11 @@ public final class AgentCommand {
             throw new ParameterException(caller.commandLine(), e.getMessage());
         }
         requirePositive(caller, "--timeout", timeoutSeconds);
-        Properties file = new Properties();
-        try (InputStream in = Files.newInputStream(tokens)) {
-            file.load(in);
-        } catch (NoSuchFileException e) {
-            throw new ParameterException(caller.commandLine(), "There is no agent file '" + tokens
-                    + "'; give --tokens KB_DIR/.kicnp/agents.properties of the running server.");
-        } catch (IOException | IllegalArgumentException e) {
-            throw new ParameterException(caller.commandLine(), "Cannot read the agent file '" + tokens + "': "
-                    + e.getMessage());
+        Properties file;
+        try {
+            file = AgentFile.read(tokens);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(caller.commandLine(), e.getMessage());
         }
         String token = file.getProperty(as + ".token", "").strip();
         if (token.isEmpty()) {

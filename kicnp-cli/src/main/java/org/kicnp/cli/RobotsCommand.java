@@ -19,9 +19,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 import java.io.IOException;
-import java.io.InputStream;
 import java.io.PrintWriter;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -91,15 +89,11 @@ public final class RobotsCommand implements Callable<Integer> {
             err.println("--for " + duration + " is not a positive number of seconds.");
             return 2;
         }
-        Properties tokenFile = new Properties();
-        try (InputStream in = Files.newInputStream(tokens)) {
-            tokenFile.load(in);
-        } catch (java.nio.file.NoSuchFileException e) {
-            err.println("There is no agent file '" + tokens + "'; give --tokens KB_DIR/.kicnp/agents.properties of "
-                    + "the running server (serve writes it there).");
-            return 2;
-        } catch (IOException | IllegalArgumentException e) {
-            err.println("Cannot read the agent file '" + tokens + "': " + e.getMessage());
+        Properties tokenFile;
+        try {
+            tokenFile = AgentFile.read(tokens);
+        } catch (IllegalArgumentException e) {
+            err.println(e.getMessage());
             return 2;
         }
         for (String robot : ROBOTS) {
