@@ -17,6 +17,8 @@ final class Activation {
     private final long rank;
     /** Where the activation sits in the agenda's heap; -1 when it is not queued. */
     int heapIndex = -1;
+    /** Whether the activation waits in a recency group of the agenda's {@link ActivationQueue}. */
+    boolean stacked;
 
     Activation(Rule rule, String[] facts, FactView.Fact[] refs, long recency, long seq) {
         this.rule = rule;

@@ -28,6 +28,11 @@ final class ActivationHeap {
         up(a.heapIndex);
     }
 
+    /** The first activation in agenda order, left queued; null when there is none. */
+    Activation peek() {
+        return size == 0 ? null : heap[0];
+    }
+
     /** Takes the first activation in agenda order; null when there is none. */
     Activation poll() {
         if (size == 0) {

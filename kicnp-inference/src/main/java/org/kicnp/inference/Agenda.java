@@ -28,7 +28,7 @@ final class Agenda {
                 | Math.min(r.conditionCount(), 0xFFFF);
     }
 
-    private final ActivationHeap queue = new ActivationHeap();
+    private final ActivationQueue queue = new ActivationQueue();
     /** Where each fact's activations are kept (its {@link FactView.Fact}), so a fact leaving withdraws them. */
     private final FactView facts;
 
