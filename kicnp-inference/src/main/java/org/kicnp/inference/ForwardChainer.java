@@ -533,8 +533,9 @@ final class ForwardChainer {
 
     /** As {@link #destroyNow(String, String)}, only while the instance is at {@code expectedRevision}. */
     Set<String> destroyNow(String instance, String reason, long expectedRevision) {
-        if (!kb.frame(instance).map(Frame::isInstance).orElse(false)) {
-            throw new UnknownFrameException(instance);
+        Frame target = kb.frame(instance).orElseThrow(() -> new UnknownFrameException(instance));
+        if (!target.isInstance()) {
+            throw new KnowledgeException("Frame '" + instance + "' is a class frame; only instances can be destroyed.");
         }
         Set<String> all = new LinkedHashSet<>(List.of(instance));
         all.addAll(supports.closure(instance));
