@@ -17,6 +17,11 @@ final class Activation {
     private final long rank;
     /** Where the activation sits in the agenda's heap; -1 when it is not queued. */
     int heapIndex = -1;
+    /**
+     * Set when a change that matches nothing again (a non-reactive slot's) reached one of its bound instances while it
+     * waited: its conditions are checked again before it fires ({@link ForwardChainer#mayFire}).
+     */
+    boolean changed;
 
     Activation(Rule rule, String[] facts, FactView.Fact[] refs, long recency, long seq) {
         this.rule = rule;
