@@ -14,6 +14,8 @@ import java.util.function.Consumer;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Relation;
 import org.kicnp.core.SemanticLink;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 
 /**
  * Follows every issued action through its life cycle and turns the coordination links of behavior frames into
@@ -23,6 +25,7 @@ import org.kicnp.core.SemanticLink;
  * Owned by the engine thread.
  */
 final class ActionCoordinator {
+    private static final Logger LOG = LoggerFactory.getLogger(ActionCoordinator.class);
     private final KnowledgeBase kb;
     private final ActionSink sink;
     private final Clock clock;
@@ -159,7 +162,7 @@ final class ActionCoordinator {
             if (t.status == Action.Status.SENT || t.status == Action.Status.STARTED) {
                 String why = "no end reported within " + limit(t) + " ms";
                 finish(t, Action.Status.TIMED_OUT, why);
-                sink.cancel(t.action, "timed out: " + why); // the robot stops what the platform gave up on
+                askToStop(t, "timed out: " + why); // the robot stops what the platform gave up on
             }
         }
     }
@@ -204,7 +207,7 @@ final class ActionCoordinator {
         syncBuffer.remove(t); // held for its synchronization group: released at quiescence unless taken out here
         finish(t, Action.Status.FAILED, "cancelled: " + reason);
         if (sent) {
-            sink.cancel(t.action, reason);
+            askToStop(t, reason);
         }
         return true;
     }
@@ -223,6 +226,9 @@ final class ActionCoordinator {
         while (progress) {
             progress = false;
             for (Tracked t : List.copyOf(held)) {
+                if (!held.contains(t)) {
+                    continue; // finished or sent meanwhile, by the releases that finishing another one made
+                }
                 Optional<Tracked> bad = t.waitsOn.stream().map(actions::get)
                         .filter(o -> o.status == Action.Status.FAILED || o.status == Action.Status.TIMED_OUT).findFirst();
                 if (bad.isPresent()) {
@@ -245,7 +251,25 @@ final class ActionCoordinator {
         t.action = t.action.releasedAt(startAt);
         t.deadline = clock.millis() + limit(t);
         changed(t, Action.Status.SENT, "");
-        sink.send(t.action);
+        try {
+            sink.send(t.action);
+        } catch (RuntimeException e) {
+            // The firing that issued it stands; the action fails through its life cycle like one the robot failed.
+            String why = "the action sink failed to send it: " + ScriptCalls.message(e);
+            LOG.warn("Action '{}' ({} for robot '{}', frame '{}') failed: {}", t.action.id(), t.action.name(),
+                    t.action.robot(), t.action.frame(), why, e);
+            finish(t, Action.Status.FAILED, why);
+        }
+    }
+
+    /** Asks the robot to stop a finished action; a sink that throws is logged, as the action is finished anyway. */
+    private void askToStop(Tracked t, String reason) {
+        try {
+            sink.cancel(t.action, reason);
+        } catch (RuntimeException e) {
+            LOG.warn("The action sink failed to ask robot '{}' to stop action '{}' ({}): {}", t.action.robot(),
+                    t.action.id(), reason, ScriptCalls.message(e));
+        }
     }
 
     private long limit(Tracked t) {

@@ -19,6 +19,11 @@ final class Activation {
     int heapIndex = -1;
     /** Whether the activation waits in a recency group of the agenda's {@link ActivationQueue}. */
     boolean stacked;
+    /**
+     * Set when a change that matches nothing again (a non-reactive slot's) reached one of its bound instances while it
+     * waited: its conditions are checked again before it fires ({@link ForwardChainer#mayFire}).
+     */
+    boolean changed;
 
     Activation(Rule rule, String[] facts, FactView.Fact[] refs, long recency, long seq) {
         this.rule = rule;

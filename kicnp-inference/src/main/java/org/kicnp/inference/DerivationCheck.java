@@ -53,6 +53,19 @@ final class DerivationCheck {
                 .map(x -> "script");
     }
 
+    /**
+     * Why a waiting binding of a rule's required slots no longer holds, if it does not: the first slot whose condition
+     * is false now, or a false (or failing) script condition.
+     */
+    Optional<String> failing(Rule r, Binding binding) {
+        for (SlotPattern p : r.required()) {
+            if (!conditions.holds(p.condition(), Value.ref(binding.get(p.slot())), r.frame(), binding)) {
+                return Optional.of("the condition of slot '" + p.slot() + "' no longer holds");
+            }
+        }
+        return r.scripted() ? scripts.conditionFails(r, binding) : Optional.empty();
+    }
+
     /** Lets the derivation's binding fire again once its instance is retracted (refraction no longer applies). */
     void unmarkFired(Derivation d) {
         Rule r = rules.get(d.frame());

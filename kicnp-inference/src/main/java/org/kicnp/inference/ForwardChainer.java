@@ -228,6 +228,12 @@ final class ForwardChainer {
     }
 
     private void refresh(String name) {
+        FactView.Fact f = facts.get(name);
+        if (f != null && f.activations != null) {
+            for (Activation a : f.activations) {
+                a.changed = true; // what waits with it is checked again before it fires, not matched again now
+            }
+        }
         kb.frame(name).filter(Frame::isInstance).flatMap(Frame::parent).ifPresent(cls -> network.refresh(name, cls));
     }
 
@@ -397,10 +403,15 @@ final class ForwardChainer {
 
     /**
      * Whether an activation whose turn has come may still fire: an earlier firing may have claimed one of its
-     * instances or taken its key since it was made (then it is traced as blocked, and it is not a firing).
+     * instances or taken its key since it was made, or a non-reactive change to one of them made a condition false
+     * (then it is traced as blocked, and it is not a firing). Conditions are checked again only after such a change.
      */
     boolean mayFire(Activation a) {
         Optional<String> blocked = supports.blocked(a.rule(), a.facts(), a.refs()[0], a.key());
+        if (blocked.isEmpty() && a.changed) {
+            blocked = check.failing(a.rule(), a.binding())
+                    .map(why -> why + ": a bound instance changed while the binding waited on the agenda");
+        }
         if (blocked.isPresent()) {
             trace(new TraceEvent.Blocked(a.rule().frame(), a.binding(), blocked.get()));
             return false;
@@ -533,8 +544,9 @@ final class ForwardChainer {
 
     /** As {@link #destroyNow(String, String)}, only while the instance is at {@code expectedRevision}. */
     Set<String> destroyNow(String instance, String reason, long expectedRevision) {
-        if (!kb.frame(instance).map(Frame::isInstance).orElse(false)) {
-            throw new UnknownFrameException(instance);
+        Frame target = kb.frame(instance).orElseThrow(() -> new UnknownFrameException(instance));
+        if (!target.isInstance()) {
+            throw new KnowledgeException("Frame '" + instance + "' is a class frame; only instances can be destroyed.");
         }
         Set<String> all = new LinkedHashSet<>(List.of(instance));
         all.addAll(supports.closure(instance));

@@ -292,8 +292,9 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
      * Destroys an instance and everything derived from it, in one batch, then runs to quiescence so
      * {@code onDestroy} scripts run and freed bindings may fire again. Returns the names removed.
      *
-     * @throws UnknownFrameException when there is no such instance
-     * @throws KnowledgeException when a frame the engine did not derive still refers to one of them
+     * @throws UnknownFrameException when there is no frame of that name
+     * @throws KnowledgeException when the frame is a class frame (nothing is destroyed), or a frame the engine did not
+     *                            derive still refers to one of them
      */
     public Set<String> destroy(String instance) {
         return destroy(instance, Change.ANY_REVISION, "destroyed through the engine");

@@ -300,6 +300,78 @@ class ActionCoordinationTest {
                 .map(v -> v.text()).contains("arrived");
     }
 
+    /** An engine over the fixture whose action sink throws for robot PINO and records the other robots' actions. */
+    private static InferenceEngine withSinkFailingFor(Fixture f, String robot) {
+        InferenceEngine e = InferenceEngine.builder(f.kb).scripts(f.scripts).clock(() -> f.now).actionSink(new ActionSink() {
+            @Override public void send(Action action) {
+                if (action.robot().equals(robot)) {
+                    throw new IllegalStateException(robot + " is not connected");
+                }
+                f.sent.add(action);
+            }
+
+            @Override public void cancel(Action action, String reason) {
+                throw new IllegalStateException("cannot reach " + action.robot());
+            }
+        }).build();
+        e.addTraceListener(f.trace::add);
+        return e;
+    }
+
+    @Test
+    void sinkThatThrows_failsOnlyThatAction_andTheFiringIsAppliedWhole_andTheEngineGoesOn() {
+        Fixture f = twoFrames(Relation.Coordination.SUCCESSION);
+        f.cls("Note", null);
+        f.scripts.define("cmd-a", g -> {
+            Fixture.call(g, "command", "PINO", "walk", "2m");
+            Fixture.call(g, "command", "Scout", "wave");
+            return Fixture.call(g, "create", "Note", Map.of());
+        });
+        InferenceEngine e = withSinkFailingFor(f, "PINO");
+        f.assertFact("go", "Go");
+
+        assertThat(e.runToQuiescence()).as("A and B fire; nothing escapes the run").isEqualTo(2);
+
+        String a = f.instancesOf("A").getFirst();
+        assertThat(e.why(a)).isInstanceOf(Explanation.Derived.class);
+        assertThat(f.instancesOf("Note")).as("the effect after the failed send is applied").hasSize(1);
+        Action walk = e.actions().getFirst();
+        String why = "the action sink failed to send it: PINO is not connected";
+        assertThat(e.actionStatus(walk.id())).contains(Action.Status.FAILED);
+        assertThat(f.traced(TraceEvent.ActionChanged.class)).filteredOn(c -> c.actionId().equals(walk.id()))
+                .extracting(TraceEvent.ActionChanged::status, TraceEvent.ActionChanged::detail)
+                .containsExactly(tuple(Action.Status.SENT, ""), tuple(Action.Status.FAILED, why));
+        assertThat(f.kb.value(InferenceEngine.FEEDBACK_CLASS + "-" + walk.id(), "status")).map(v -> v.text())
+                .contains("failed");
+        assertThat(f.sent).extracting(Action::robot).as("Scout's wave is sent, B's lie_down waits on it")
+                .containsExactly("Scout");
+
+        e.actionEnded(f.sent.getFirst().id(), "waved"); // coordination goes on: B's action follows the wave
+        e.actionEnded(walk.id(), "walked anyway"); // a late report changes nothing
+        e.runToQuiescence();
+        assertThat(f.sent).extracting(Action::robot).containsExactly("Scout", "AIBO");
+        f.assertFact("go2", "Go");
+        assertThat(e.runToQuiescence()).isEqualTo(2);
+        assertThat(e.actionStatus(walk.id())).contains(Action.Status.FAILED);
+        assertThat(f.instancesOf("A")).hasSize(2);
+        assertThat(f.instancesOf("Note")).hasSize(2);
+    }
+
+    @Test
+    void sinkThatThrowsOnCancel_stillFailsTheAction_andTheEngineGoesOn() {
+        Fixture f = twoFrames(null);
+        InferenceEngine e = withSinkFailingFor(f, "nobody");
+        f.assertFact("go", "Go");
+        e.runToQuiescence();
+        String walk = f.sent.getFirst().id();
+
+        assertThat(e.cancelAction(walk, "the user left")).isTrue();
+
+        assertThat(e.actionStatus(walk)).contains(Action.Status.FAILED);
+        f.assertFact("go2", "Go");
+        assertThat(e.runToQuiescence()).isEqualTo(2);
+    }
+
     @Test
     void feedback_forUnknownAction_isRefusedWithItsId() {
         Fixture f = twoFrames(null);

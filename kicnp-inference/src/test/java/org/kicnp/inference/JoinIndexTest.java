@@ -2,6 +2,7 @@ package org.kicnp.inference;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
@@ -132,5 +133,90 @@ class JoinIndexTest {
         assertThat(f.instancesOf("Talk").stream().filter(t -> f.kb.value(t, "mMouth").equals(java.util.Optional.of(
                 Value.ref("m2")))).map(t -> f.kb.value(t, "mUser").orElseThrow())).as("only the user of 18 or more now")
                 .containsExactly(Value.ref("child"));
+    }
+
+    @Test
+    void waitingActivation_whenANonReactiveChangeMakesItsConditionFalse_doesNotFire_andOneStillTrueDoes() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("User").slot(Slot.builder("age", DataType.INTEGER).reactive(false).build()).build());
+        f.cls("Mouth", null);
+        f.kb.add(Frame.classFrame("Talk").slot(Slot.builder("mUser", DataType.INSTANCE).argument("User").required(true)
+                        .condition(org.kicnp.core.ConditionParser.parse(".age >= 18")).build())
+                .slot(Slot.builder("mMouth", DataType.INSTANCE).argument("Mouth").required(true).build()).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("ann", "User", "age", 20L);
+        f.assertFact("bob", "User", "age", 30L);
+        f.assertFact("m1", "Mouth");
+        assertThat(e.agendaSize()).as("both wait on the agenda").isEqualTo(2);
+
+        f.kb.replace(f.kb.require("ann").withSlot(Fixture.num("age", 12)));
+        f.kb.replace(f.kb.require("bob").withSlot(Fixture.num("age", 25)));
+
+        assertThat(e.runToQuiescence()).isEqualTo(1);
+        assertThat(f.instancesOf("Talk")).singleElement()
+                .satisfies(t -> assertThat(f.kb.value(t, "mUser")).contains(Value.ref("bob")));
+        assertThat(f.traced(TraceEvent.Blocked.class)).containsExactly(new TraceEvent.Blocked("Talk",
+                Map.of("mUser", "ann", "mMouth", "m1"), "the condition of slot 'mUser' no longer holds: a bound "
+                        + "instance changed while the binding waited on the agenda"));
+        assertThat(f.traced(TraceEvent.FactChanged.class)).as("not reactive: nothing is matched again").isEmpty();
+    }
+
+    @Test
+    void waitingActivation_whenANonReactiveChangeBreaksItsJoin_doesNotFire() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("User").slot(Slot.builder("name", DataType.STRING).reactive(false).build()).build());
+        f.kb.add(Frame.classFrame("Order").slot(Slot.builder("who", DataType.STRING).build()).build());
+        f.kb.add(Frame.classFrame("Deliver").slot(Fixture.inst("mUser", "User"))
+                .slot(Fixture.inst("mOrder", "Order", ".who == mUser.name")).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("u1", "User", "name", "Ann");
+        f.assertFact("oAnn", "Order", "who", "Ann");
+        assertThat(e.agendaSize()).isEqualTo(1);
+
+        f.kb.replace(f.kb.require("u1").withSlot(Fixture.str("name", "Eve")));
+
+        assertThat(e.runToQuiescence()).isZero();
+        assertThat(f.instancesOf("Deliver")).isEmpty();
+        assertThat(f.traced(TraceEvent.Blocked.class)).singleElement()
+                .satisfies(b -> assertThat(b.reason()).startsWith("the condition of slot 'mOrder' no longer holds"));
+    }
+
+    @Test
+    void waitingActivation_whenANonReactiveChangeMakesItsScriptConditionFalse_doesNotFire() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("User").slot(Slot.builder("age", DataType.INTEGER).reactive(false).build()).build());
+        f.kb.add(Frame.classFrame("Greet").slot(Fixture.inst("mUser", "User", "js: adult")).build());
+        f.scripts.define("adult", g -> ((Number) ((Map<?, ?>) Fixture.view(g).get("mUser")).get("age")).longValue() >= 18);
+        InferenceEngine e = f.engine();
+        f.assertFact("ann", "User", "age", 20L);
+        assertThat(e.agendaSize()).isEqualTo(1);
+
+        f.kb.replace(f.kb.require("ann").withSlot(Fixture.num("age", 12)));
+
+        assertThat(e.runToQuiescence()).isZero();
+        assertThat(f.traced(TraceEvent.Blocked.class)).singleElement().satisfies(b -> assertThat(b.reason())
+                .isEqualTo("the script condition of slot 'mUser' is false: a bound instance changed while the binding "
+                        + "waited on the agenda"));
+    }
+
+    @Test
+    void waitingActivation_whenANonReactiveChangeReachesItThroughAReference_doesNotFire() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("Stim").slot(Slot.builder("key", DataType.INTEGER).reactive(false).build()).build());
+        f.kb.add(Frame.classFrame("Target").slot(Slot.builder("key", DataType.INTEGER).build()).build());
+        f.kb.add(Frame.classFrame("Holder").slot(Slot.builder("mS", DataType.INSTANCE).argument("Stim").build()).build());
+        f.kb.add(Frame.classFrame("Far").slot(Fixture.inst("mH", "Holder"))
+                .slot(Fixture.inst("mT", "Target", ".key == mH.mS.key")).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("s1", "Stim", "key", 1L);
+        f.assertFact("h1", "Holder", "mS", "@s1");
+        f.assertFact("t1", "Target", "key", 1L);
+        assertThat(e.agendaSize()).isEqualTo(1);
+
+        f.kb.replace(f.kb.require("s1").withSlot(Fixture.num("key", 2)));
+
+        assertThat(e.runToQuiescence()).as("Far read s1.key through h1; 2 != 1 now").isZero();
+        assertThat(f.traced(TraceEvent.Blocked.class)).singleElement()
+                .satisfies(b -> assertThat(b.reason()).startsWith("the condition of slot 'mT' no longer holds"));
     }
 }

@@ -11,7 +11,9 @@ import org.kicnp.core.BatchRejectedException;
 import org.kicnp.core.Change;
 import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeException;
 import org.kicnp.core.Slot;
+import org.kicnp.core.UnknownFrameException;
 import org.kicnp.core.Value;
 
 class TruthMaintenanceTest {
@@ -72,6 +74,25 @@ class TruthMaintenanceTest {
                 new TraceEvent.Retracted("s1", "retracted as stale"),
                 new TraceEvent.Retracted(derived.getFirst(), "it rests on 's1', which was retracted as stale"));
         assertThat(destroyed).containsAll(derived);
+    }
+
+    @Test
+    void destroy_ofAClassFrame_isRefusedAsAClassNotAsUnknown_andChangesNothing() {
+        Fixture f = ForwardChainingTest.chain3();
+        InferenceEngine e = f.engine();
+        f.assertFact("s1", "Stimulus");
+        e.runToQuiescence();
+        long version = f.kb.version();
+
+        assertThatThrownBy(() -> e.destroy("Step1")).isInstanceOf(KnowledgeException.class)
+                .isNotInstanceOf(UnknownFrameException.class)
+                .hasMessage("Frame 'Step1' is a class frame; only instances can be destroyed.");
+        assertThatThrownBy(() -> e.destroy("Nothing")).isInstanceOf(UnknownFrameException.class)
+                .hasMessage("There is no frame named 'Nothing'.");
+
+        assertThat(f.kb.version()).isEqualTo(version);
+        assertThat(f.instancesOf("Step3")).hasSize(1);
+        assertThat(f.traced(TraceEvent.Retracted.class)).isEmpty();
     }
 
     @Test
