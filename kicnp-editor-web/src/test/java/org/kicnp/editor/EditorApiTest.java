@@ -213,6 +213,20 @@ class EditorApiTest {
         assertThat(kb.require("AskUserName")).isEqualTo(before);
     }
 
+    @Test void post_withAFloatThatIsNaN_answers422NamingTheFrameAndSlotAndAddsNothing() {
+        http.login(PASSWORD);
+
+        HttpResponse<String> r = http.post("/api/frames", """
+                {"name": "Scale", "kind": "CLASS", "parent": "System",
+                 "slots": [{"name": "ratio", "type": "TYPE_FLOAT", "value": "NaN"}]}""");
+
+        assertThat(r.statusCode()).isEqualTo(422);
+        JsonNode problem = json(r).get("problems").get(0);
+        assertThat(problem.get("frame").asText() + "." + problem.get("slot").asText()).isEqualTo("Scale.ratio");
+        assertThat(problem.get("message").asText()).contains("'NaN' is not a number");
+        assertThat(kb.contains("Scale")).isFalse();
+    }
+
     @Test void post_withAValueOfTheWrongTypeAndAnUnknownParent_listsBothProblemsInOneAnswer() {
         http.login(PASSWORD);
 
