@@ -1,6 +1,6 @@
 // K-ICNP knowledge editor: one frame: its Table 1 items, saving, create, rename and delete.
 // An ES module loaded by index.html; no build step, nothing from the network.
-import { $, ApiError, api, el, enc, notice, show, showErrors, showMain, state } from './base.js';
+import { $, ApiError, api, el, enc, frameAddress, notice, show, showErrors, showMain, state } from './base.js';
 import { loadFrames, renderTree } from './tree.js';
 import { checkScripts, renderSlots, splitList } from './slots.js';
 
@@ -23,7 +23,7 @@ export async function openFrame(name, keepNotice) {
     showErrors('frame-errors', null);
     showMain('frame-panel');
     renderTree();
-    history.replaceState(null, '', '#' + enc(name));
+    history.replaceState(null, '', frameAddress(name));
   } catch (e) {
     showMain('welcome');
     showErrors('frame-errors', e);
