@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.Callable;
 import org.kicnp.core.Change;
 import org.kicnp.core.Frame;
@@ -40,8 +41,19 @@ import picocli.CommandLine.Parameters;
  */
 @Command(name = "infer", mixinStandardHelpOptions = true,
         customSynopsis = {"kicnp infer [-hV] KB... [--assert=FILE_OR_XML...]... [--ask=CLASS]...",
-            "                   [--why-not=FRAME]... [--trace] [--max-firings=N]"},
-        description = "Run the inference engine on a knowledge base with asserted instances and print what it did.")
+            "                   [--why-not=FRAME]... [--expect=CLASS[=N]]... [--expect-none=CLASS]...",
+            "                   [--expect-action=[ROBOT:]ACTION]... [--trace] [--max-firings=N]"},
+        description = "Run the inference engine on a knowledge base with asserted instances and print what it did. "
+                + "With --expect options it is a test of the knowledge base's rules, for scripts and CI: each "
+                + "expectation is checked after the run and printed as pass or FAIL, a failed one on a behavior "
+                + "frame with why it did not fire.",
+        exitCodeListHeading = "%nExit codes:%n",
+        exitCodeList = {
+            "0:done, every expectation met",
+            "1:the knowledge base or an asserted file could not be used, or the run failed",
+            "2:wrong usage",
+            "3:an expectation was not met"
+        })
 public final class InferCommand implements Callable<Integer> {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
@@ -66,6 +78,18 @@ public final class InferCommand implements Callable<Integer> {
             + "not fire: each required slot's candidates, and what stops each binding of them.")
     List<String> whyNots = new ArrayList<>();
 
+    @Option(names = "--expect", paramLabel = "CLASS[=N]", description = "After the run, expect an instance of "
+            + "CLASS (or of a class below it) in the knowledge base; with =N, exactly N of them.")
+    List<String> expects = new ArrayList<>();
+
+    @Option(names = "--expect-none", paramLabel = "CLASS", description = "After the run, expect no instance of "
+            + "CLASS (or of a class below it).")
+    List<String> expectNone = new ArrayList<>();
+
+    @Option(names = "--expect-action", paramLabel = "[ROBOT:]ACTION", description = "Expect the run to have issued "
+            + "the action ACTION (to ROBOT, when given).")
+    List<String> expectActions = new ArrayList<>();
+
     @Option(names = "--max-firings", paramLabel = "N", description = "Firings allowed per run (default: ${DEFAULT-VALUE}).")
     int maxFirings = EngineOptions.defaults().maxFirings();
 
@@ -85,6 +109,7 @@ public final class InferCommand implements Callable<Integer> {
             throw new CommandLine.ParameterException(spec.commandLine(),
                     "--max-firings must be at least 1, not " + maxFirings + ".");
         }
+        List<Expectation> expectations = expectations();
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         try (ScriptRuntime runtime = ScriptRuntime.create(ScriptConfig.defaults())) {
@@ -156,8 +181,9 @@ public final class InferCommand implements Callable<Integer> {
                 }
             });
             diagnoses.forEach(w -> printWhyNot(out, w));
+            boolean met = check(out, kb, engine, sent, expectations);
             out.flush();
-            return 0;
+            return met ? 0 : 3;
         } catch (KnowledgeException | InferenceException | IllegalArgumentException e) {
             err.println("infer: " + e.getMessage());
             err.flush();
@@ -166,6 +192,111 @@ public final class InferCommand implements Callable<Integer> {
             err.println("infer: " + e.getClass().getSimpleName() + ": " + e.getMessage());
             err.flush();
             return 1;
+        }
+    }
+
+    /** One {@code --expect…} option, read. {@code count} is -1 for "at least one". */
+    private record Expectation(String option, String cls, int count, String robot, String action) {
+    }
+
+    private List<Expectation> expectations() {
+        List<Expectation> out = new ArrayList<>();
+        for (String e : expects) {
+            int eq = e.lastIndexOf('=');
+            String cls = eq < 0 ? e : e.substring(0, eq);
+            int count = -1;
+            if (eq >= 0) {
+                try {
+                    count = Integer.parseInt(e.substring(eq + 1));
+                } catch (NumberFormatException x) {
+                    count = -2;
+                }
+            }
+            if (cls.isBlank() || count < -1) {
+                throw new CommandLine.ParameterException(spec.commandLine(), "--expect '" + e + "' is not CLASS or "
+                        + "CLASS=N with N a whole number from 0.");
+            }
+            out.add(new Expectation("--expect", cls, count, null, null));
+        }
+        for (String cls : expectNone) {
+            if (cls.isBlank()) {
+                throw new CommandLine.ParameterException(spec.commandLine(), "--expect-none got an empty class name.");
+            }
+            out.add(new Expectation("--expect-none", cls, 0, null, null));
+        }
+        for (String a : expectActions) {
+            int colon = a.indexOf(':');
+            String robot = colon < 0 ? null : a.substring(0, colon);
+            String action = colon < 0 ? a : a.substring(colon + 1);
+            if (action.isBlank() || robot != null && robot.isBlank()) {
+                throw new CommandLine.ParameterException(spec.commandLine(), "--expect-action '" + a + "' is not "
+                        + "ACTION or ROBOT:ACTION.");
+            }
+            out.add(new Expectation("--expect-action", null, -1, robot, action));
+        }
+        return out;
+    }
+
+    /** Checks and prints every expectation; true when all are met. */
+    private static boolean check(PrintWriter out, KnowledgeBase kb, InferenceEngine engine, List<Action> sent,
+                                 List<Expectation> expectations) {
+        if (expectations.isEmpty()) {
+            return true;
+        }
+        // Every class named must be one, before anything is judged: a misspelt class would pass --expect-none.
+        for (Expectation e : expectations) {
+            if (e.cls() != null) {
+                Frame f = kb.frame(e.cls()).orElseThrow(() -> new IllegalArgumentException(e.option() + " names '"
+                        + e.cls() + "', which is not a frame of the knowledge base."));
+                if (f.isInstance()) {
+                    throw new IllegalArgumentException(e.option() + " takes a class, but '" + e.cls()
+                            + "' is an instance.");
+                }
+            }
+        }
+        out.println("Expectations:");
+        int failed = 0;
+        for (Expectation e : expectations) {
+            boolean ok;
+            String what;
+            if (e.cls() != null) {
+                List<String> found = kb.instancesOf(e.cls()).stream().map(Frame::name).toList();
+                ok = e.count() < 0 ? !found.isEmpty() : found.size() == e.count();
+                String wanted = e.count() < 0 ? "an instance of " + e.cls()
+                        : e.count() == 0 ? "no instance of " + e.cls()
+                        : e.count() + " instance" + (e.count() == 1 ? "" : "s") + " of " + e.cls();
+                what = wanted + ": " + (found.isEmpty() ? "none" : found.size() + " (" + abbreviate(String.join(", ",
+                        found)) + ")");
+                out.println("  " + (ok ? "pass" : "FAIL") + "  " + what);
+                if (!ok && found.isEmpty()) {
+                    whyNotSummary(engine, e.cls()).ifPresent(w -> out.println("        why not: " + w));
+                }
+            } else {
+                List<Action> matching = sent.stream().filter(a -> a.name().equals(e.action())
+                        && (e.robot() == null || a.robot().equals(e.robot()))).toList();
+                ok = !matching.isEmpty();
+                what = "action " + (e.robot() == null ? "" : e.robot() + ":") + e.action() + ": "
+                        + (ok ? matching.size() + " issued (" + matching.getFirst().id() + " by "
+                        + matching.getFirst().instance() + ")" : "not issued (issued: " + (sent.isEmpty() ? "none"
+                        : abbreviate(String.join(", ", sent.stream().map(a -> a.robot() + ":" + a.name())
+                        .toList()))) + ")");
+                out.println("  " + (ok ? "pass" : "FAIL") + "  " + what);
+            }
+            if (!ok) {
+                failed++;
+            }
+        }
+        out.println(failed == 0 ? "All " + expectations.size() + " expectations met."
+                : failed + " of " + expectations.size() + " expectations not met.");
+        return failed == 0;
+    }
+
+    /** Why a behavior frame did not fire, in one sentence; empty for a class that is not a behavior frame. */
+    private static Optional<String> whyNotSummary(InferenceEngine engine, String frame) {
+        try {
+            return Optional.of(engine.whyNot(frame, Map.of()).summary());
+        } catch (IllegalArgumentException notABehaviorFrame) {
+            return Optional.empty();
         }
     }
 

@@ -220,4 +220,49 @@ class InferCommandTest {
         assertThat(r.code()).isEqualTo(1);
         assertThat(r.err()).contains("no-such-dir");
     }
+
+    @Test
+    void infer_withExpectationsAllMet_printsEachAsPass_andExitsZero() {
+        Result r = run("infer", TABLE5, "--assert", NEW_USER, "--expect", "AskUserName=1", "--expect-none",
+                "Greeting", "--expect-action", "Robovie:say", "--expect", "NewUser");
+
+        assertThat(r.code()).as(r.err() + r.out()).isZero();
+        assertThat(r.out()).contains("Expectations:")
+                .containsPattern("  pass  1 instance of AskUserName: 1 \\(AskUserName-\\d+\\)")
+                .contains("  pass  no instance of Greeting: none")
+                .containsPattern("  pass  action Robovie:say: 1 issued \\(\\S+ by AskUserName-\\d+\\)")
+                .contains("  pass  an instance of NewUser: 1 (userA)")
+                .contains("All 4 expectations met.");
+    }
+
+    @Test
+    void infer_withAnExpectationNotMet_printsFail_withWhyTheFrameDidNotFire_andExits3() {
+        Result r = run("infer", TABLE5, "--assert", NEW_USER, "--expect", "Greeting", "--expect", "AskUserName=2",
+                "--expect-action", "Pino:dance", "--expect-none", "AskUserName");
+
+        assertThat(r.code()).as(r.err()).isEqualTo(3);
+        assertThat(r.out()).contains("  FAIL  an instance of Greeting: none")
+                .contains("        why not: 'Greeting' cannot fire: nothing can fill its slot 'mUser' (there is no "
+                        + "instance of 'KnownUser').")
+                .containsPattern("  FAIL  2 instances of AskUserName: 1 \\(AskUserName-\\d+\\)")
+                .contains("  FAIL  action Pino:dance: not issued (issued: Robovie:head, Robovie:say)")
+                .containsPattern("  FAIL  no instance of AskUserName: 1 \\(AskUserName-\\d+\\)")
+                .contains("4 of 4 expectations not met.");
+    }
+
+    @Test
+    void infer_withAnExpectationOnAMisspeltClass_orABadCount_failsInWords_notAsAPass() {
+        Result misspelt = run("infer", TABLE5, "--assert", NEW_USER, "--expect-none", "Greting");
+        Result badCount = run("infer", TABLE5, "--expect", "Greeting=many");
+        Result badAction = run("infer", TABLE5, "--expect-action", "Robovie:");
+
+        assertThat(misspelt.code()).isEqualTo(1);
+        assertThat(misspelt.err()).contains("infer: --expect-none names 'Greting', which is not a frame of the "
+                + "knowledge base.");
+        assertThat(misspelt.out()).doesNotContain("pass");
+        assertThat(badCount.code()).isEqualTo(2);
+        assertThat(badCount.err()).contains("--expect 'Greeting=many' is not CLASS or CLASS=N");
+        assertThat(badAction.code()).isEqualTo(2);
+        assertThat(badAction.err()).contains("--expect-action 'Robovie:' is not ACTION or ROBOT:ACTION.");
+    }
 }
