@@ -1,6 +1,7 @@
 // What every editor-e2e script starts with: the editor's address and password and the artifacts directory, as
 // org.kicnp.editor.EditorBrowserTest passes them (EDITOR_URL, EDITOR_PASSWORD, ARTIFACTS, CHROMIUM), a check that
-// fails the current step, and headless Chromium launched the one way the tests need it.
+// fails the current step, headless Chromium launched the one way the tests need it, and the steps most scripts
+// begin with: a page, logging in, opening a frame.
 import { chromium } from 'playwright-core';
 import { mkdirSync } from 'node:fs';
 
@@ -21,4 +22,26 @@ export function launch() {
     args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
       '--disable-background-networking', '--disable-component-update', '--disable-sync'],
   });
+}
+
+/** A page of 1280×800 in a new browser context, waiting 10 s at most for each step. */
+export async function newPage(browser) {
+  const page = await (await browser.newContext({ viewport: { width: 1280, height: 800 } })).newPage();
+  page.setDefaultTimeout(10000);
+  return page;
+}
+
+/** Opens the editor on `page`, waits for its live connection and logs in with the editor's password. */
+export async function logIn(page) {
+  await page.goto(base);
+  await page.locator('#live:not(.off)').waitFor();
+  await page.fill('#login-password', password);
+  await page.click('#login-button');
+  await page.locator('#session-info').waitFor({ state: 'visible' });
+}
+
+/** Opens frame `name` from the frame tree and waits for its page. */
+export async function openFrame(page, name) {
+  await page.locator(`#tree [data-frame="${name}"]`).click();
+  await page.locator('#frame-title', { hasText: name }).waitFor();
 }

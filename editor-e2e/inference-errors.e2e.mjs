@@ -3,15 +3,14 @@
 // question's answers standing under it. Started by org.kicnp.editor.EditorBrowserTest with EDITOR_URL, ARTIFACTS
 // and CHROMIUM as editor.e2e.mjs. Exits 0 when every step passed; otherwise prints the failed step and exits 1.
 import { join } from 'node:path';
-import { artifacts, base, check, launch } from './browser.mjs';
+import { artifacts, base, check, launch, newPage } from './browser.mjs';
 
 let step = 'launch';
 
 const browser = await launch();
 let failed = false;
 try {
-  const page = await (await browser.newContext({ viewport: { width: 1280, height: 800 } })).newPage();
-  page.setDefaultTimeout(10000);
+  const page = await newPage(browser);
   await page.goto(base);
   await page.locator('#live:not(.off)').waitFor();
   await page.click('#inference-button');

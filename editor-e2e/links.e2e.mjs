@@ -2,7 +2,7 @@
 // scenario's knowledge base. Started by org.kicnp.editor.EditorBrowserTest with EDITOR_URL, ARTIFACTS and CHROMIUM
 // as editor.e2e.mjs. Exits 0 when every step passed; otherwise prints the failed step and exits 1.
 import { join } from 'node:path';
-import { artifacts, base, check, launch } from './browser.mjs';
+import { artifacts, base, check, launch, newPage } from './browser.mjs';
 
 const problems = [];
 let step = 'launch';
@@ -50,8 +50,7 @@ async function arrowBetween(page, from, to, relation) {
 const browser = await launch();
 let failed = false;
 try {
-  const page = await (await browser.newContext({ viewport: { width: 1280, height: 800 } })).newPage();
-  page.setDefaultTimeout(10000);
+  const page = await newPage(browser);
   page.on('console', (m) => { if (m.type() === 'error') problems.push('console: ' + m.text()); });
   page.on('pageerror', (e) => problems.push('page error: ' + e.message));
 

@@ -3,22 +3,17 @@
 // Started by org.kicnp.editor.EditorBrowserTest with EDITOR_URL, EDITOR_PASSWORD, ARTIFACTS and CHROMIUM as
 // editor.e2e.mjs. Exits 0 when every step passed; otherwise prints the failed step and exits 1.
 import { join } from 'node:path';
-import { artifacts, base, launch, password } from './browser.mjs';
+import { artifacts, launch, logIn, newPage } from './browser.mjs';
 
 let step = 'launch';
 
 const browser = await launch();
 let failed = false;
 try {
-  const page = await (await browser.newContext({ viewport: { width: 1280, height: 800 } })).newPage();
-  page.setDefaultTimeout(10000);
+  const page = await newPage(browser);
 
   step = 'log in and open Phrases';
-  await page.goto(base);
-  await page.locator('#live:not(.off)').waitFor();
-  await page.fill('#login-password', password);
-  await page.click('#login-button');
-  await page.locator('#session-info').waitFor({ state: 'visible' });
+  await logIn(page);
   await page.locator('#tree [data-frame="Phrases"]').click();
   await page.locator('#frame-title', { hasText: 'Phrases' }).waitFor();
 

@@ -5,7 +5,7 @@
 // Exits 0 when every step passed; otherwise prints the failed step and exits 1.
 import { existsSync, rmSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { artifacts, base, check, launch, password } from './browser.mjs';
+import { artifacts, check, launch, logIn, newPage, openFrame } from './browser.mjs';
 
 const request = join(artifacts, 'restart.request');
 const done = join(artifacts, 'restart.done');
@@ -22,17 +22,11 @@ async function until(test, seconds, message) {
 const browser = await launch();
 let failed = false;
 try {
-  const page = await (await browser.newContext({ viewport: { width: 1280, height: 800 } })).newPage();
-  page.setDefaultTimeout(10000);
+  const page = await newPage(browser);
 
   step = 'log in and open Robot';
-  await page.goto(base);
-  await page.locator('#live:not(.off)').waitFor();
-  await page.fill('#login-password', password);
-  await page.click('#login-button');
-  await page.locator('#session-info').waitFor({ state: 'visible' });
-  await page.locator('#tree [data-frame="Robot"]').click();
-  await page.locator('#frame-title', { hasText: 'Robot' }).waitFor();
+  await logIn(page);
+  await openFrame(page, 'Robot');
   check(await page.inputValue('input[aria-label="robotName role"]') === 'display name', 'Robot\'s role is not shown');
 
   step = 'the server restarts';

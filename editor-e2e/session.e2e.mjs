@@ -3,7 +3,7 @@
 // the login again, keep the edit, and save it after the login. Started by org.kicnp.editor.EditorBrowserTest with
 // EDITOR_URL, EDITOR_PASSWORD, ARTIFACTS and CHROMIUM as editor.e2e.mjs. Exits 0 when every step passed.
 import { join } from 'node:path';
-import { artifacts, base, check, launch, password } from './browser.mjs';
+import { artifacts, base, check, launch, logIn, openFrame, password } from './browser.mjs';
 
 let step = 'launch';
 
@@ -16,13 +16,8 @@ try {
   a.setDefaultTimeout(10000);
 
   step = 'page A logs in, opens Robot and edits a slot';
-  await a.goto(base);
-  await a.locator('#live:not(.off)').waitFor();
-  await a.fill('#login-password', password);
-  await a.click('#login-button');
-  await a.locator('#session-info').waitFor({ state: 'visible' });
-  await a.locator('#tree [data-frame="Robot"]').click();
-  await a.locator('#frame-title', { hasText: 'Robot' }).waitFor();
+  await logIn(a);
+  await openFrame(a, 'Robot');
   await a.fill(role, 'kept across the login');
 
   step = 'page B logs out';

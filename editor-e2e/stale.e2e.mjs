@@ -3,7 +3,7 @@
 // Started by org.kicnp.editor.EditorBrowserTest with EDITOR_URL, EDITOR_PASSWORD, ARTIFACTS and CHROMIUM as
 // editor.e2e.mjs. Exits 0 when every step passed; otherwise prints the failed step and exits 1.
 import { join } from 'node:path';
-import { artifacts, base, check, launch, password } from './browser.mjs';
+import { artifacts, base, check, launch, logIn, newPage, openFrame, password } from './browser.mjs';
 
 let step = 'launch';
 
@@ -11,17 +11,11 @@ const role = 'input[aria-label="robotName role"]';
 const browser = await launch();
 let failed = false;
 try {
-  const page = await (await browser.newContext({ viewport: { width: 1280, height: 800 } })).newPage();
-  page.setDefaultTimeout(10000);
+  const page = await newPage(browser);
 
   step = 'log in, open Robot and edit a slot without saving';
-  await page.goto(base);
-  await page.locator('#live:not(.off)').waitFor();
-  await page.fill('#login-password', password);
-  await page.click('#login-button');
-  await page.locator('#session-info').waitFor({ state: 'visible' });
-  await page.locator('#tree [data-frame="Robot"]').click();
-  await page.locator('#frame-title', { hasText: 'Robot' }).waitFor();
+  await logIn(page);
+  await openFrame(page, 'Robot');
   await page.fill(role, 'my unsaved role');
 
   step = 'someone else saves Robot';
