@@ -3,28 +3,14 @@
 //   EDITOR_URL (http://127.0.0.1:PORT/), EDITOR_PASSWORD, ARTIFACTS (a directory for screenshots),
 //   CHROMIUM (the browser executable, /usr/bin/chromium by default).
 // Exits 0 when every step passed; otherwise prints the failed step and exits 1.
-import { chromium } from 'playwright-core';
-import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
-
-const base = process.env.EDITOR_URL;
-const password = process.env.EDITOR_PASSWORD;
-const artifacts = process.env.ARTIFACTS || 'target/e2e';
-mkdirSync(artifacts, { recursive: true });
+import { artifacts, base, check, launch, password } from './browser.mjs';
 
 const problems = [];
 const expectedNetworkErrors = /Failed to load resource: the server responded with a status of (401|409|422)/;
 let step = 'launch';
 
-function check(condition, message) {
-  if (!condition) throw new Error(message);
-}
-
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
-  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-    '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-});
+const browser = await launch();
 let failed = false;
 try {
   const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });

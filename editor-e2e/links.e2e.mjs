@@ -1,19 +1,11 @@
 // End-to-end check of the semantic links drawn as arrows over the hierarchy, in headless Chromium, on the Table 5
 // scenario's knowledge base. Started by org.kicnp.editor.EditorBrowserTest with EDITOR_URL, ARTIFACTS and CHROMIUM
 // as editor.e2e.mjs. Exits 0 when every step passed; otherwise prints the failed step and exits 1.
-import { chromium } from 'playwright-core';
-import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
+import { artifacts, base, check, launch } from './browser.mjs';
 
-const base = process.env.EDITOR_URL;
-const artifacts = process.env.ARTIFACTS || 'target/e2e';
-mkdirSync(artifacts, { recursive: true });
 const problems = [];
 let step = 'launch';
-
-function check(condition, message) {
-  if (!condition) throw new Error(message);
-}
 
 // Where an arrow starts and ends on screen, and the boxes of the frame buttons it is drawn between.
 async function geometry(page, from, to, relation) {
@@ -55,10 +47,7 @@ async function arrowBetween(page, from, to, relation) {
   return g;
 }
 
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
-  args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking'],
-});
+const browser = await launch();
 let failed = false;
 try {
   const page = await (await browser.newContext({ viewport: { width: 1280, height: 800 } })).newPage();

@@ -2,20 +2,12 @@
 // ["Hello, Ken", "Bye"]; the table must show it so that adding an item and saving keeps the items as they were.
 // Started by org.kicnp.editor.EditorBrowserTest with EDITOR_URL, EDITOR_PASSWORD, ARTIFACTS and CHROMIUM as
 // editor.e2e.mjs. Exits 0 when every step passed; otherwise prints the failed step and exits 1.
-import { chromium } from 'playwright-core';
-import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
+import { artifacts, base, launch, password } from './browser.mjs';
 
-const base = process.env.EDITOR_URL;
-const password = process.env.EDITOR_PASSWORD;
-const artifacts = process.env.ARTIFACTS || 'target/e2e';
-mkdirSync(artifacts, { recursive: true });
 let step = 'launch';
 
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
-  args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking'],
-});
+const browser = await launch();
 let failed = false;
 try {
   const page = await (await browser.newContext({ viewport: { width: 1280, height: 800 } })).newPage();

@@ -3,21 +3,13 @@
 // editor.e2e.mjs. The page logs in and opens Robot; the script then writes ARTIFACTS/restart.request, the test
 // restarts the server on the same port (sessions gone, Robot changed meanwhile) and writes ARTIFACTS/restart.done.
 // Exits 0 when every step passed; otherwise prints the failed step and exits 1.
-import { chromium } from 'playwright-core';
-import { existsSync, mkdirSync, rmSync, writeFileSync } from 'node:fs';
+import { existsSync, rmSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
+import { artifacts, base, check, launch, password } from './browser.mjs';
 
-const base = process.env.EDITOR_URL;
-const password = process.env.EDITOR_PASSWORD;
-const artifacts = process.env.ARTIFACTS || 'target/e2e';
-mkdirSync(artifacts, { recursive: true });
 const request = join(artifacts, 'restart.request');
 const done = join(artifacts, 'restart.done');
 let step = 'launch';
-
-function check(condition, message) {
-  if (!condition) throw new Error(message);
-}
 
 async function until(test, seconds, message) {
   for (const end = Date.now() + seconds * 1000; Date.now() < end;) {
@@ -27,10 +19,7 @@ async function until(test, seconds, message) {
   throw new Error(message);
 }
 
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
-  args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking'],
-});
+const browser = await launch();
 let failed = false;
 try {
   const page = await (await browser.newContext({ viewport: { width: 1280, height: 800 } })).newPage();

@@ -2,25 +2,13 @@
 // when someone else saves Robot; "Revert" must then show Robot as it now is, not the revision read before.
 // Started by org.kicnp.editor.EditorBrowserTest with EDITOR_URL, EDITOR_PASSWORD, ARTIFACTS and CHROMIUM as
 // editor.e2e.mjs. Exits 0 when every step passed; otherwise prints the failed step and exits 1.
-import { chromium } from 'playwright-core';
-import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
+import { artifacts, base, check, launch, password } from './browser.mjs';
 
-const base = process.env.EDITOR_URL;
-const password = process.env.EDITOR_PASSWORD;
-const artifacts = process.env.ARTIFACTS || 'target/e2e';
-mkdirSync(artifacts, { recursive: true });
 let step = 'launch';
 
-function check(condition, message) {
-  if (!condition) throw new Error(message);
-}
-
 const role = 'input[aria-label="robotName role"]';
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
-  args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking'],
-});
+const browser = await launch();
 let failed = false;
 try {
   const page = await (await browser.newContext({ viewport: { width: 1280, height: 800 } })).newPage();

@@ -1,24 +1,13 @@
 // End-to-end check of the World panel of an editor that is not connected to a platform, in headless Chromium.
 // Started by org.kicnp.editor.EditorBrowserTest with EDITOR_URL, ARTIFACTS and CHROMIUM as editor.e2e.mjs.
 // Exits 0 when every step passed; otherwise prints the failed step and exits 1.
-import { chromium } from 'playwright-core';
-import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
+import { artifacts, base, check, launch } from './browser.mjs';
 
-const base = process.env.EDITOR_URL;
-const artifacts = process.env.ARTIFACTS || 'target/e2e';
-mkdirSync(artifacts, { recursive: true });
 const problems = [];
 let step = 'launch';
 
-function check(condition, message) {
-  if (!condition) throw new Error(message);
-}
-
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
-  args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking'],
-});
+const browser = await launch();
 let failed = false;
 try {
   const page = await (await browser.newContext({ viewport: { width: 1280, height: 800 } })).newPage();

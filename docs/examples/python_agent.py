@@ -1,14 +1,16 @@
 #!/usr/bin/env python3
 """A K-ICNP robot agent in Python, with the standard library only: proof that docs/protocol.md is enough.
 
-Usage: python_agent.py PORT NAME TOKEN
-Connects to 127.0.0.1:PORT, authenticates, registers, reports a sensor signal, carries out ONE command
-(started, progress, ended) and exits 0. If the 'jsonschema' package is installed, every message sent and
+Usage: python_agent.py PORT NAME TOKEN [HOST [TRUSTED_CERT.pem]]
+Connects to HOST:PORT (default 127.0.0.1), authenticates, registers, reports a sensor signal, carries out ONE command
+(started, progress, ended) and exits 0. With TRUSTED_CERT.pem it speaks TLS and trusts exactly that certificate (the
+server's, as `keytool -exportcert -rfc` writes it: a server's `kicnp serve --listen` address, docs/deployment.md). If the 'jsonschema' package is installed, every message sent and
 received is checked against docs/protocol/schemas/TYPE.json, and any mismatch exits with status 3.
 """
 import json
 import pathlib
 import socket
+import ssl
 import struct
 import sys
 
@@ -67,9 +69,20 @@ def next_of(sock, kind):
             raise RuntimeError("gateway error %s: %s" % (message["code"], message["message"]))
 
 
+def connect(host, port, trusted):
+    """A plain TCP connection, or TLS checking the server against the one certificate trusted (and its name)."""
+    sock = socket.create_connection((host, port), timeout=20)
+    if trusted is None:
+        return sock
+    context = ssl.create_default_context(cafile=trusted)
+    return context.wrap_socket(sock, server_hostname=host)
+
+
 def main():
     port, name, token = int(sys.argv[1]), sys.argv[2], sys.argv[3]
-    with socket.create_connection(("127.0.0.1", port), timeout=20) as sock:
+    host = sys.argv[4] if len(sys.argv) > 4 else "127.0.0.1"
+    trusted = sys.argv[5] if len(sys.argv) > 5 else None
+    with connect(host, port, trusted) as sock:
         send(sock, {"type": "hello", "id": "1", "agent": name, "kind": "robot", "token": token})
         if not next_of(sock, "auth_result")["accepted"]:
             sys.exit(2)

@@ -27,6 +27,7 @@ import org.kicnp.protocol.FrameText;
 import org.kicnp.protocol.Message;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
@@ -89,6 +90,9 @@ public final class AgentCommand {
             description = "How long to wait to connect, and for each answer (default ${DEFAULT-VALUE}).")
     double timeoutSeconds;
 
+    @Mixin
+    TlsTrustOptions tls;
+
     @Spec
     CommandSpec spec;
 
@@ -120,6 +124,11 @@ public final class AgentCommand {
         AgentKind kind = kindOf(file.getProperty(as + ".kinds", "user"));
         Duration timeout = timeout();
         AgentOptions options = AgentOptions.of(address.host(), address.port(), as, kind, token);
+        try {
+            options = tls.socketFactory().map(options::withSocketFactory).orElse(options);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(caller.commandLine(), e.getMessage());
+        }
         options = new AgentOptions(options.host(), options.port(), options.name(), options.kind(), options.token(),
                 timeout, options.heartbeatInterval(), options.serverSilence(), options.backoffInitial(),
                 options.backoffMax(), options.maxFrameBytes(), options.socketFactory());

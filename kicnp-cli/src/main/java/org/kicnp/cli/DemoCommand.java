@@ -8,6 +8,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.Callable;
+import java.util.concurrent.atomic.AtomicBoolean;
 import org.kicnp.cli.platform.PlatformConfig;
 import org.kicnp.cli.scenario.ScenarioFiles;
 import org.kicnp.cli.scenario.Table5Checks;
@@ -18,6 +19,7 @@ import picocli.CommandLine.Option;
 /**
  * {@code kicnp demo}: the platform, the simulated room with Robovie, PINO, Scout and AIBO, and you as User A at the
  * terminal. {@code --auto} lets a scripted User A play Table 5 and exits 0 when it went as the paper tells it.
+ * SIGTERM or Ctrl-C stops the simulator and the servers cleanly (a shutdown hook closes the run).
  */
 @Command(name = "demo", mixinStandardHelpOptions = true,
         description = "Play User A of the paper's Table 5 at the terminal (or --auto) with the four simulated robots.")
@@ -46,9 +48,34 @@ public final class DemoCommand implements Callable<Integer> {
         }
         double scale = auto && timeScale == 2 ? 8 : timeScale;
         PlatformConfig config = PlatformConfig.of(dir).withGatewayPort(0).withHttpPort(Optional.of(httpPort));
-        try (Table5Run run = Table5Run.start(config, 2004, scale, Optional.of(System.out))) {
+        Table5Run run = Table5Run.start(config, 2004, scale, Optional.of(System.out));
+        AtomicBoolean said = new AtomicBoolean();
+        Runnable stop = () -> {
+            run.close(); // a second caller waits until the first has closed the run
+            if (said.compareAndSet(false, true)) {
+                System.out.println("Demo stopped: the simulator and the servers are shut down.");
+                System.out.flush();
+            }
+        };
+        // On SIGTERM or Ctrl-C the JVM runs its hooks and then halts, whatever other threads are doing: without this
+        // hook the simulator subprocess and the servers would be cut off (the knowledge store not closed). The signal
+        // may also end the read of the terminal, so this thread closes the run too; the hook then waits for it.
+        Thread hook = new Thread(stop, "kicnp-demo-stop");
+        Runtime.getRuntime().addShutdownHook(hook);
+        try {
             ServeCommand.printBanner(run.platform());
             return auto ? playAuto(run) : playByHand(run);
+        } finally {
+            stop.run(); // before the hook goes, so a shutdown that starts meanwhile still waits for the close
+            removeHook(hook);
+        }
+    }
+
+    private static void removeHook(Thread hook) {
+        try {
+            Runtime.getRuntime().removeShutdownHook(hook);
+        } catch (IllegalStateException e) {
+            // Shutting down already: the hook is running and waits for the close.
         }
     }
 

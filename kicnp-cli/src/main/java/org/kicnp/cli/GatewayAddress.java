@@ -12,6 +12,16 @@ record GatewayAddress(String host, int port) {
      * @throws IllegalArgumentException saying what {@code --gateway} should look like
      */
     static GatewayAddress parse(String text) {
+        return parse(text, "--gateway", 1);
+    }
+
+    /**
+     * Reads {@code HOST:PORT} given to {@code option}, whose port may be {@code lowestPort} (0: any free port) to
+     * 65535.
+     *
+     * @throws IllegalArgumentException saying what {@code option} should look like
+     */
+    static GatewayAddress parse(String text, String option, int lowestPort) {
         int colon = text.lastIndexOf(':');
         String host = colon < 0 ? "" : text.substring(0, colon);
         if (host.startsWith("[") && host.endsWith("]")) {
@@ -23,8 +33,9 @@ record GatewayAddress(String host, int port) {
         } catch (NumberFormatException e) {
             port = -1;
         }
-        if (host.isEmpty() || port < 1 || port > 65535) {
-            throw new IllegalArgumentException("--gateway '" + text + "' is not HOST:PORT with a port from 1 to 65535.");
+        if (host.isEmpty() || port < lowestPort || port > 65535) {
+            throw new IllegalArgumentException(option + " '" + text + "' is not HOST:PORT with a port from "
+                    + lowestPort + " to 65535.");
         }
         return new GatewayAddress(host, port);
     }

@@ -15,6 +15,7 @@ import org.kicnp.robots.SimWorld;
 import org.kicnp.robots.SimulatorException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
@@ -24,11 +25,13 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.Properties;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
+import javax.net.SocketFactory;
 
 /**
  * {@code kicnp robots}: starts the simulated room (the Python simulator) and the agents of Robovie, PINO, Scout and
@@ -68,6 +71,9 @@ public final class RobotsCommand implements Callable<Integer> {
             description = "Stop after this many seconds (default: run until interrupted).")
     Double duration;
 
+    @Mixin
+    TlsTrustOptions tls;
+
     @Spec
     CommandSpec spec;
 
@@ -92,6 +98,13 @@ public final class RobotsCommand implements Callable<Integer> {
         Properties tokenFile;
         try {
             tokenFile = AgentFile.read(tokens);
+        } catch (IllegalArgumentException e) {
+            err.println(e.getMessage());
+            return 2;
+        }
+        Optional<SocketFactory> sockets;
+        try {
+            sockets = tls.socketFactory();
         } catch (IllegalArgumentException e) {
             err.println(e.getMessage());
             return 2;
@@ -127,7 +140,7 @@ public final class RobotsCommand implements Callable<Integer> {
             });
             out.printf("Simulator started (pid %d, seed %d, time scale %s).%n", world.pid(), seed, timeScale);
             try {
-                return runAgents(world, address, tokenFile, agents, stop, stopped, out);
+                return runAgents(world, address, sockets, tokenFile, agents, stop, stopped, out);
             } finally {
                 // The agents go first, so that closing the simulator is not reported to the server as its death.
                 stopping.set(true);
@@ -143,11 +156,13 @@ public final class RobotsCommand implements Callable<Integer> {
         }
     }
 
-    private int runAgents(SimWorld world, GatewayAddress address, Properties tokenFile, List<RobotAgent> agents,
-                          CountDownLatch stop, CountDownLatch stopped, PrintWriter out) throws InterruptedException {
+    private int runAgents(SimWorld world, GatewayAddress address, Optional<SocketFactory> sockets,
+                          Properties tokenFile, List<RobotAgent> agents, CountDownLatch stop, CountDownLatch stopped,
+                          PrintWriter out) throws InterruptedException {
         for (String robot : ROBOTS) {
-            AgentOptions ao = AgentOptions.of(address.host(), address.port(), robot, AgentKind.ROBOT,
+            AgentOptions plain = AgentOptions.of(address.host(), address.port(), robot, AgentKind.ROBOT,
                     tokenFile.getProperty(robot + ".token").strip());
+            AgentOptions ao = sockets.map(plain::withSocketFactory).orElse(plain);
             RobotAgent agent = switch (robot) {
                 case "robovie" -> new RobovieAgent(ao, world);
                 case "pino" -> new PinoAgent(ao, world);

@@ -45,6 +45,26 @@ public final class ServeCommand implements Callable<Integer> {
                     + "epoll, then nio), io_uring, epoll or nio.")
     String transport;
 
+    @Option(names = "--listen", paramLabel = "HOST:PORT",
+            description = "Also let agents on other machines (robots on the lab's network) connect, at HOST:PORT "
+                    + "(e.g. 0.0.0.0:7778; port 0: any free port, printed at start), over TLS with --tls-keystore. The gateway's loopback port stays for this "
+                    + "machine's agents and tools. Default: loopback only.")
+    String listen;
+
+    @Option(names = "--tls-keystore", paramLabel = "FILE",
+            description = "The server's key and certificate for --listen: a PKCS12 or JKS keystore, as keytool "
+                    + "-genkeypair makes (see docs/deployment.md).")
+    Path tlsKeystore;
+
+    @Option(names = "--tls-password-file", paramLabel = "FILE",
+            description = "The keystore's password: the file's first line.")
+    Path tlsPasswordFile;
+
+    @Option(names = "--plaintext-listen",
+            description = "Let --listen use plain TCP, without TLS: the agents' tokens and every message then cross "
+                    + "the network readable by anyone on it. Only on a network you trust entirely.")
+    boolean plaintextListen;
+
     @Spec
     CommandSpec spec;
 
@@ -57,9 +77,13 @@ public final class ServeCommand implements Callable<Integer> {
         }
         PlatformConfig config = PlatformConfig.of(kbDir).withGatewayPort(gatewayPort).withHttpPort(Optional.of(httpPort))
                 .withAgentsFile(Optional.ofNullable(agents)).withEditorPasswordFile(Optional.ofNullable(passwordFile))
-                .withEventLog(Optional.ofNullable(eventLog)).withGatewayTransport(t);
+                .withEventLog(Optional.ofNullable(eventLog)).withGatewayTransport(t).withAgentListener(agentListener());
         Platform platform = Platform.start(config);
-        printBanner(platform);
+        printBanner(platform, plaintextListen);
+        if (plaintextListen) {
+            System.err.println("Warning: agents connecting at " + listen + " use plain TCP (--plaintext-listen): their "
+                    + "tokens and messages cross the network readable by anyone on it.");
+        }
         CountDownLatch stopped = new CountDownLatch(1);
         Thread hook = new Thread(() -> {
             platform.close();
@@ -70,10 +94,52 @@ public final class ServeCommand implements Callable<Integer> {
         return 0;
     }
 
+    /** The further address of {@code --listen}, checked: TLS unless plain TCP is asked for in so many words. */
+    private Optional<PlatformConfig.AgentListener> agentListener() {
+        if (listen == null) {
+            if (tlsKeystore != null || tlsPasswordFile != null || plaintextListen) {
+                throw new ParameterException(spec.commandLine(), "--tls-keystore, --tls-password-file and "
+                        + "--plaintext-listen are options of --listen HOST:PORT, which was not given.");
+            }
+            return Optional.empty();
+        }
+        GatewayAddress address;
+        try {
+            address = GatewayAddress.parse(listen, "--listen", 0);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
+        if (plaintextListen) {
+            if (tlsKeystore != null) {
+                throw new ParameterException(spec.commandLine(), "--plaintext-listen and --tls-keystore exclude each "
+                        + "other: choose TLS or plain TCP for --listen.");
+            }
+            return Optional.of(new PlatformConfig.AgentListener(address.host(), address.port(), Optional.empty()));
+        }
+        if (tlsKeystore == null || tlsPasswordFile == null) {
+            throw new ParameterException(spec.commandLine(), "--listen " + listen + " lets other machines connect, "
+                    + "so it needs TLS: give --tls-keystore FILE and --tls-password-file FILE (docs/deployment.md "
+                    + "says how to make them), or --plaintext-listen on a network you trust entirely.");
+        }
+        try {
+            return Optional.of(new PlatformConfig.AgentListener(address.host(), address.port(),
+                    Optional.of(TlsFiles.server(tlsKeystore, tlsPasswordFile))));
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage());
+        }
+    }
+
     static void printBanner(Platform platform) {
+        printBanner(platform, false);
+    }
+
+    /** @param plain whether the further address for other machines ({@code --listen}) is plain TCP */
+    static void printBanner(Platform platform, boolean plain) {
         System.out.println("K-ICNP serving " + platform.kb().size() + " frames.");
         System.out.println("  gateway:  127.0.0.1:" + platform.gatewayPort() + " ("
                 + platform.gatewayTransport().label() + " transport; agent tokens in " + platform.agentsFile() + ")");
+        platform.agentListenerAddress().ifPresent(a -> System.out.println("  agents:   " + a.getHostString() + ":"
+                + a.getPort() + " for other machines (" + (plain ? "plain TCP" : "TLS") + ")"));
         platform.editorPort().ifPresent(p -> System.out.println("  editor:   http://127.0.0.1:" + p + "/ (password in "
                 + platform.editorPasswordFile().map(Path::toString).orElse("?") + ")"));
         System.out.println("  events:   " + platform.events().file());

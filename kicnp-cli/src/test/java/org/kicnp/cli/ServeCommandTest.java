@@ -27,7 +27,8 @@ class ServeCommandTest {
     @Test
     void serveHelp_namesEveryOption() {
         assertThat(help("serve")).contains("KB_DIR", "--gateway-port", "--http-port", "--agents",
-                "--editor-password-file", "--event-log", "--transport");
+                "--editor-password-file", "--event-log", "--transport", "--listen", "--tls-keystore", "--tls-password-file",
+                "--plaintext-listen");
     }
 
     @Test

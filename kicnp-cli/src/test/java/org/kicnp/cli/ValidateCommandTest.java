@@ -5,8 +5,15 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.kicnp.core.Change;
+import org.kicnp.core.Frame;
+import org.kicnp.core.store.KnowledgeStore;
+import org.kicnp.core.store.StoreOptions;
+import org.kicnp.core.xml.KnowledgeLoader;
+import org.kicnp.core.xml.SourcedFrame;
 
 class ValidateCommandTest {
     private static final String BASE = """
@@ -148,6 +155,65 @@ class ValidateCommandTest {
         assertThat(run.outLines().get(2)).isEqualTo(more + ":3:26: Frame 'Cup' has ISINSTANCE 'perhaps', which is not "
                 + "a boolean; write TRUE or FALSE.");
         assertThat(run.outLines().get(3)).isEqualTo("FAILED: 3 errors in 2 files (of 3 files checked)");
+    }
+
+    /** The directory as {@code serve} would open it: its XML files with the journal's changes replayed on top. */
+    @Test
+    void validate_whenTheStoreHasAJournal_validatesTheFilesWithTheJournalReplayedAndSaysWhatItHeld() throws IOException {
+        Files.writeString(dir.resolve("base.xml"), BASE);
+        journal(GREETING.formatted("Speech"));
+
+        CliRun run = CliRun.of("validate", dir.toString());
+
+        assertThat(run.exitCode()).as(run.out() + run.err()).isZero();
+        assertThat(run.outLines()).containsExactly(
+                "Journal: " + dir.resolve(".kicnp") + " holds 1 record not yet folded into the files; replayed on top "
+                        + "of them, as serve would open the directory (1 frame added, 0 changed, 0 removed).",
+                "OK: 6 frames (5 classes, 1 instance) from 1 file and the journal");
+    }
+
+    @Test
+    void validate_whenAFrameOfTheJournalHasAScriptThatDoesNotParse_namesTheFrameSlotAndJournal() throws IOException {
+        Files.writeString(dir.resolve("base.xml"), BASE);
+        journal(GREETING.formatted("Speech").replace("Sendmsg(s.mMouth, “Hi!", "Sendmsg(s.mMouth, (“Hi!"));
+
+        CliRun run = CliRun.of("validate", dir.toString());
+
+        assertThat(run.exitCode()).as(run.out() + run.err()).isEqualTo(1);
+        assertThat(run.outLines()).hasSize(3);
+        assertThat(run.outLines().get(1)).startsWith(dir.resolve(".kicnp") + ":0:0: The script in slot 'onInstantiate' "
+                + "of frame 'Greeting' has a syntax error at line 1, column ");
+        assertThat(run.outLines().get(2)).isEqualTo("FAILED: 1 error in 1 file (of 1 file checked and the journal)");
+    }
+
+    @Test
+    void validate_whenTheJournalNoLongerReplaysOntoEditedFiles_failsNamingTheFramesAndTheRecord() throws IOException {
+        Files.writeString(dir.resolve("base.xml"), BASE);
+        journal(GREETING.formatted("Speech"));
+        Files.writeString(dir.resolve("base.xml"), BASE.replace(
+                "<FRAME><NAME>Speech</NAME><ISA>System</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>", ""));
+
+        CliRun run = CliRun.of("validate", dir.toString());
+
+        assertThat(run.exitCode()).as(run.out() + run.err()).isEqualTo(1);
+        assertThat(run.out()).contains(dir.resolve(".kicnp") + ":0:0: ").contains("'Greeting' changed by the journal "
+                + "record journal-").contains("'Speech'");
+        assertThat(run.outLines().get(run.outLines().size() - 1)).isEqualTo("FAILED: the journal does not replay onto "
+                + "the knowledge files.");
+        assertThat(Files.readString(dir.resolve("base.xml"))).doesNotContain("Greeting");
+    }
+
+    /** Adds the frames of {@code xml} to the store in {@link #dir} and closes it without folding the journal. */
+    private void journal(String xml) throws IOException {
+        Path source = Files.createTempDirectory(dir.getParent(), "src").resolve("frames.xml");
+        Files.writeString(source, xml);
+        StoreOptions keepJournal = StoreOptions.defaults().withFsync(false).withCompactOnClose(false)
+                .withCompactInBackground(false);
+        try (KnowledgeStore store = KnowledgeStore.open(dir, keepJournal)) {
+            List<Frame> frames = KnowledgeLoader.parse(List.of(source), store.kb()).stream().map(SourcedFrame::frame)
+                    .toList();
+            store.kb().apply(frames.stream().<Change>map(Change.Add::new).toList());
+        }
     }
 
     @Test

@@ -185,6 +185,11 @@ public sealed interface Value permits Value.Str, Value.Int, Value.Real, Value.Bo
                 } catch (NumberFormatException e) {
                     throw new IllegalArgumentException("'" + text + "' is not a number.");
                 }
+                // NaN equals nothing, orders against nothing and has no JSON form (the wire, the editor): refuse it.
+                if (Double.isNaN(d)) {
+                    throw new IllegalArgumentException("'" + text + "' is not a number: TYPE_FLOAT holds numbers (and "
+                            + "Infinity or -Infinity), not NaN.");
+                }
                 // A finite number too large for a double would silently become Infinity; only "Infinity" means that.
                 if (Double.isInfinite(d) && !t.contains("Infinity")) {
                     throw new IllegalArgumentException("'" + text + "' is too large for a float: TYPE_FLOAT holds "

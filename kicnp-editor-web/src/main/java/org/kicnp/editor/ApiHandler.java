@@ -45,7 +45,7 @@ final class ApiHandler extends Handler.Abstract {
         this.platform = platform;
         this.kb = kb;
         this.json = json;
-        this.frames = new FrameResource(kb, features.inference());
+        this.frames = new FrameResource(kb, features.inference(), features.scripts());
         this.login = new LoginResource(sessions, new LoginThrottle(java.time.Clock.systemUTC()));
         this.features = features;
     }

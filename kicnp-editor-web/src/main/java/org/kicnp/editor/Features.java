@@ -1,7 +1,9 @@
 package org.kicnp.editor;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import java.util.List;
 import java.util.Set;
+import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 
 /**
@@ -28,6 +30,12 @@ record Features(Xml xml, Scripts scripts, Inference inference) {
 
         /** Checks {@code body.source}; answers {@code {ok, message, line, column}}. */
         Object check(JsonNode body);
+
+        /**
+         * One problem, naming frame and slot, per script of {@code frame} that does not parse (script slots, demons,
+         * {@code js:} conditions): a frame saved through the API meets the check the page makes before saving.
+         */
+        List<ApiProblem> problems(Frame frame);
     }
 
     /** The live view of an inference engine: working memory, agenda, explanations, questions, runs. */
@@ -134,6 +142,10 @@ record Features(Xml xml, Scripts scripts, Inference inference) {
 
             @Override public Object check(JsonNode body) {
                 throw new ApiException(501, "The script check is not available in this build of the editor.");
+            }
+
+            @Override public List<ApiProblem> problems(Frame frame) {
+                return List.of(); // no runtime to parse with: the scripts are checked when they first run
             }
         };
     }

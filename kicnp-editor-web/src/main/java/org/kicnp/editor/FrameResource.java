@@ -31,10 +31,12 @@ final class FrameResource {
 
     private final KnowledgeBase kb;
     private final Features.Inference inference;
+    private final Features.Scripts scripts;
 
-    FrameResource(KnowledgeBase kb, Features.Inference inference) {
+    FrameResource(KnowledgeBase kb, Features.Inference inference, Features.Scripts scripts) {
         this.kb = kb;
         this.inference = inference;
+        this.scripts = scripts;
     }
 
     /** Every frame as a row, optionally only those whose name contains {@code q} (case-insensitive). */
@@ -71,15 +73,18 @@ final class FrameResource {
     }
 
     /**
-     * The frame read, or 422 with every problem: those found reading it and, for the items read without one, those
-     * the frame model finds (an unknown argument class, an IS-A cycle, ...), so that one answer lists them all.
+     * The frame read, or 422 with every problem: those found reading it, its scripts that do not parse and, for the
+     * items read without a problem, those the frame model finds (an unknown argument class, an IS-A cycle, ...), so
+     * that one answer lists them all.
      */
     private Frame valid(FrameInput.Read read, Function<Frame, Change> change) {
-        if (read.problems().isEmpty()) {
+        List<ApiProblem> scriptProblems = read.frame().map(scripts::problems).orElse(List.of());
+        if (read.problems().isEmpty() && scriptProblems.isEmpty()) {
             return read.frame().orElseThrow();
         }
         List<ApiProblem> all = new ArrayList<>(read.problems());
-        Set<String> slotsWithProblems = read.problems().stream().map(ApiProblem::slot).filter(s -> !s.isEmpty())
+        all.addAll(scriptProblems);
+        Set<String> slotsWithProblems = all.stream().map(ApiProblem::slot).filter(s -> !s.isEmpty())
                 .collect(Collectors.toSet());
         read.frame().ifPresent(f -> kb.problems(List.of(change.apply(f))).stream().map(ApiProblem::of)
                 .filter(p -> !slotsWithProblems.contains(p.slot()) && !all.contains(p)).forEach(all::add));

@@ -213,6 +213,60 @@ class EditorApiTest {
         assertThat(kb.require("AskUserName")).isEqualTo(before);
     }
 
+    @Test void post_withAFloatThatIsNaN_answers422NamingTheFrameAndSlotAndAddsNothing() {
+        http.login(PASSWORD);
+
+        HttpResponse<String> r = http.post("/api/frames", """
+                {"name": "Scale", "kind": "CLASS", "parent": "System",
+                 "slots": [{"name": "ratio", "type": "TYPE_FLOAT", "value": "NaN"}]}""");
+
+        assertThat(r.statusCode()).isEqualTo(422);
+        JsonNode problem = json(r).get("problems").get(0);
+        assertThat(problem.get("frame").asText() + "." + problem.get("slot").asText()).isEqualTo("Scale.ratio");
+        assertThat(problem.get("message").asText()).contains("'NaN' is not a number");
+        assertThat(kb.contains("Scale")).isFalse();
+    }
+
+    /** The page checks scripts before it saves; a client of the API alone must meet the same check. */
+    @Test void put_withAJsConditionOrDemonThatDoesNotParse_answers422NamingFrameAndSlotAndChangesNothing() {
+        http.login(PASSWORD);
+        Frame before = kb.require("AskUserName");
+        long version = kb.version();
+        ObjectNode f = forEditing("AskUserName");
+        ArrayNode slots = (ArrayNode) f.get("slots");
+        ((ObjectNode) slots.get(1)).put("condition", "js: s.mMouth.on &&");
+        ((ObjectNode) slots.get(0)).put("onAdded", "log(");
+
+        HttpResponse<String> r = http.put("/api/frames/AskUserName", f.toString());
+
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(422);
+        List<String> messages = new ArrayList<>();
+        json(r).get("problems").forEach(p -> messages.add(p.get("frame").asText() + "." + p.get("slot").asText() + ": "
+                + p.get("message").asText()));
+        assertThat(messages).hasSize(2)
+                .anySatisfy(m -> assertThat(m).startsWith("AskUserName.mMouth: The js: condition of slot 'mMouth' of "
+                        + "frame 'AskUserName' has a syntax error at line 1, column "))
+                .anySatisfy(m -> assertThat(m).startsWith("AskUserName.mUser: The onAdded demon of slot 'mUser' of "
+                        + "frame 'AskUserName' has a syntax error at line 1, column "));
+        assertThat(kb.require("AskUserName")).isEqualTo(before);
+        assertThat(kb.version()).isEqualTo(version);
+    }
+
+    @Test void post_withAJsConditionThatDoesNotParse_answers422AndAddsNothing() {
+        http.login(PASSWORD);
+
+        HttpResponse<String> r = http.post("/api/frames", """
+                {"name": "Cook", "kind": "CLASS", "parent": "System",
+                 "slots": [{"name": "dishes", "type": "TYPE_INT", "condition": "js: s.dishes >"}]}""");
+
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(422);
+        JsonNode problem = json(r).get("problems").get(0);
+        assertThat(problem.get("frame").asText() + "." + problem.get("slot").asText()).isEqualTo("Cook.dishes");
+        assertThat(problem.get("message").asText()).startsWith("The js: condition of slot 'dishes' of frame 'Cook' has "
+                + "a syntax error");
+        assertThat(kb.contains("Cook")).isFalse();
+    }
+
     @Test void post_withAValueOfTheWrongTypeAndAnUnknownParent_listsBothProblemsInOneAnswer() {
         http.login(PASSWORD);
 

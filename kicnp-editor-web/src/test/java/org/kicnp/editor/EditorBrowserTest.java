@@ -241,6 +241,25 @@ class EditorBrowserTest {
         assertThat(kb.require("Robot").ownSlot("robotName").flatMap(Slot::role)).contains("not saved yet");
     }
 
+    @Test void frameNamedWorld_opensFromItsAddressAndTheWorldPanelKeepsItsOwn() throws Exception {
+        Browser browser = Browser.ready();
+        KnowledgeBase kb = SampleKnowledge.create();
+        kb.add(Frame.classFrame("world").parent("System").build());
+        try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
+            browser.play("address.e2e.mjs", server.port(), false, "browser-address.log", 60);
+        }
+        assertThat(browser.artifacts().resolve("14-frame-named-world.png")).exists();
+    }
+
+    @Test void save_whileItsAnswerIsOnTheWay_keepsTheEditsTypedMeanwhileUnsavedUntilTheNextSave() throws Exception {
+        Browser browser = Browser.ready();
+        KnowledgeBase kb = SampleKnowledge.create();
+        try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
+            browser.play("saving.e2e.mjs", server.port(), true, "browser-saving.log", 60);
+        }
+        assertThat(kb.require("Robot").ownSlot("robotName").flatMap(Slot::role)).contains("second, typed during the save");
+    }
+
     /** Where the browser scripts run; skips the test when Chromium or Node.js is missing, installs Playwright once. */
     private record Browser(Path node, Path e2e, Path artifacts) {
         static Browser ready() throws IOException, InterruptedException {

@@ -103,7 +103,12 @@ public record GatewayConfig(String host, int port, String serverName, int maxFra
     }
 
     public GatewayConfig withTls(SslContext context) {
+        return withTls(Optional.of(context));
+    }
+
+    /** With TLS on {@code context}, or plain TCP when it is empty. */
+    public GatewayConfig withTls(Optional<SslContext> context) {
         return new GatewayConfig(host, port, serverName, maxFrameBytes, heartbeatTimeout, writeLowWaterBytes,
-                writeHighWaterBytes, maxShedBeforeDrop, Optional.of(context), ioThreads, transport);
+                writeHighWaterBytes, maxShedBeforeDrop, requireNonNull(context, "context"), ioThreads, transport);
     }
 }

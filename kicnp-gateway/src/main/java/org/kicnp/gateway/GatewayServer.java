@@ -10,9 +10,12 @@ import io.netty.channel.MultiThreadIoEventLoopGroup;
 import io.netty.channel.WriteBufferWaterMark;
 import io.netty.channel.group.ChannelGroup;
 import io.netty.channel.group.DefaultChannelGroup;
+import io.netty.handler.ssl.SslContext;
 import io.netty.util.concurrent.GlobalEventExecutor;
 import java.net.InetSocketAddress;
 import java.util.List;
+import java.util.Optional;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import org.kicnp.core.KnowledgeBase;
 import org.slf4j.Logger;
@@ -39,9 +42,14 @@ public final class GatewayServer implements AutoCloseable {
     private final GatewayMetrics metrics;
     private final KnowledgeBase kb;
     private final Transport transport;
+    private final GatewayConfig config;
+    /** Further listeners ({@link #listenAlso}), closed with the gateway. */
+    private final List<Channel> moreListeners = new CopyOnWriteArrayList<>();
 
-    private GatewayServer(EventLoopGroup boss, EventLoopGroup workers, Channel listener, ChannelGroup connections,
-                          ServerAgent server, GatewayMetrics metrics, KnowledgeBase kb, Transport transport) {
+    private GatewayServer(GatewayConfig config, EventLoopGroup boss, EventLoopGroup workers, Channel listener,
+                          ChannelGroup connections, ServerAgent server, GatewayMetrics metrics, KnowledgeBase kb,
+                          Transport transport) {
+        this.config = config;
         this.boss = boss;
         this.workers = workers;
         this.listener = listener;
@@ -95,18 +103,11 @@ public final class GatewayServer implements AutoCloseable {
         ChannelGroup connections = new DefaultChannelGroup("kicnp-agents", GlobalEventExecutor.INSTANCE);
         EventLoopGroup boss = new MultiThreadIoEventLoopGroup(1, transport.ioHandlerFactory());
         EventLoopGroup workers = new MultiThreadIoEventLoopGroup(config.ioThreads(), transport.ioHandlerFactory());
-        GatewayInitializer init = new GatewayInitializer(config, server, metrics, connections);
         try {
-            Channel ch = new ServerBootstrap()
-                    .group(boss, workers)
-                    .channel(transport.serverChannel())
-                    .childOption(ChannelOption.TCP_NODELAY, true)
-                    .childOption(ChannelOption.WRITE_BUFFER_WATER_MARK,
-                            new WriteBufferWaterMark(config.writeLowWaterBytes(), config.writeHighWaterBytes()))
-                    .childHandler(init)
-                    .bind(config.host(), config.port()).sync().channel();
+            Channel ch = bind(config, boss, workers, server, metrics, connections);
             kb.addListener(server.knowledge());
-            GatewayServer gw = new GatewayServer(boss, workers, ch, connections, server, metrics, kb, transport);
+            GatewayServer gw = new GatewayServer(config, boss, workers, ch, connections, server, metrics, kb,
+                    transport);
             LOG.info("K-ICNP gateway '{}' listening on {}{} ({} transport).", config.serverName(), ch.localAddress(),
                     config.tls().isPresent() ? " (TLS)" : "", transport.label());
             return gw;
@@ -118,6 +119,49 @@ public final class GatewayServer implements AutoCloseable {
             }
             throw new GatewayException("Cannot listen on " + config.host() + ":" + config.port() + ": " + e.getMessage(), e);
         }
+    }
+
+    private static Channel bind(GatewayConfig config, EventLoopGroup boss, EventLoopGroup workers, ServerAgent server,
+                                GatewayMetrics metrics, ChannelGroup connections) throws InterruptedException {
+        return new ServerBootstrap()
+                .group(boss, workers)
+                .channel(config.transport().serverChannel())
+                .childOption(ChannelOption.TCP_NODELAY, true)
+                .childOption(ChannelOption.WRITE_BUFFER_WATER_MARK,
+                        new WriteBufferWaterMark(config.writeLowWaterBytes(), config.writeHighWaterBytes()))
+                .childHandler(new GatewayInitializer(config, server, metrics, connections))
+                .bind(config.host(), config.port()).sync().channel();
+    }
+
+    /**
+     * Also listens on {@code host:port}, for agents on other machines: the same server agent behind it (the same
+     * agents, tokens, knowledge and relays as the first address), with {@code tls} on this address alone, or in
+     * plain TCP when it is empty. The platform keeps its first address on loopback for its own agents and tools.
+     *
+     * @return the address bound (with the actual port when {@code port} is 0)
+     * @throws GatewayException when the address cannot be bound
+     */
+    public InetSocketAddress listenAlso(String host, int port, Optional<SslContext> tls) {
+        requireNonNull(host, "host");
+        requireNonNull(tls, "tls");
+        GatewayConfig c = config.withHost(host).withPort(port).withTls(tls);
+        try {
+            Channel ch = bind(c, boss, workers, server, metrics, connections);
+            moreListeners.add(ch);
+            LOG.info("K-ICNP gateway '{}' also listening on {}{}.", config.serverName(), ch.localAddress(),
+                    tls.isPresent() ? " (TLS)" : " (plain TCP)");
+            return (InetSocketAddress) ch.localAddress();
+        } catch (Exception e) {
+            if (e instanceof InterruptedException) {
+                Thread.currentThread().interrupt();
+            }
+            throw new GatewayException("Cannot listen on " + host + ":" + port + ": " + e.getMessage(), e);
+        }
+    }
+
+    /** The further addresses the gateway listens on ({@link #listenAlso}), in the order they were bound. */
+    public List<InetSocketAddress> moreAddresses() {
+        return moreListeners.stream().map(ch -> (InetSocketAddress) ch.localAddress()).toList();
     }
 
     /** The address the gateway listens on (with the actual port when it was started on port 0). */
@@ -156,6 +200,9 @@ public final class GatewayServer implements AutoCloseable {
     @Override public void close() {
         kb.removeListener(server.knowledge());
         listener.close().awaitUninterruptibly();
+        for (Channel ch : moreListeners) {
+            ch.close().awaitUninterruptibly();
+        }
         connections.close().awaitUninterruptibly();
         boss.shutdownGracefully(0, 1, TimeUnit.SECONDS).syncUninterruptibly();
         workers.shutdownGracefully(0, 1, TimeUnit.SECONDS).syncUninterruptibly();

@@ -1,5 +1,6 @@
 package org.kicnp.cli.platform;
 
+import java.net.InetSocketAddress;
 import java.nio.file.Path;
 import java.time.Instant;
 import java.time.ZoneOffset;
@@ -124,6 +125,8 @@ public final class Platform implements AutoCloseable {
             gateway = GatewayServer.start(GatewayConfig.defaults().withPort(config.gatewayPort())
                     .withTransport(config.gatewayTransport()), directory, kb, bridge,
                     engineLink, engineLink);
+            GatewayServer opened = gateway;
+            config.agentListener().ifPresent(l -> opened.listenAlso(l.host(), l.port(), l.tls()));
             engine = InferenceEngine.builder(kb).scripts(new GraalScriptHost(scripts)).actionSink(bridge)
                     .runOn(engineThread).build();
             engineLink.attach(engine);
@@ -201,6 +204,11 @@ public final class Platform implements AutoCloseable {
 
     public int gatewayPort() {
         return gateway.port();
+    }
+
+    /** The gateway's further address for agents on other machines ({@link PlatformConfig.AgentListener}), if any. */
+    public Optional<InetSocketAddress> agentListenerAddress() {
+        return gateway.moreAddresses().stream().findFirst();
     }
 
     public Transport gatewayTransport() {

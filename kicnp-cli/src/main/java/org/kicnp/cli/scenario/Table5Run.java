@@ -22,6 +22,8 @@ public final class Table5Run implements AutoCloseable {
     private final RobotWorld world;
     private final UserA user;
     private final RunRecord record = new RunRecord();
+    private final Object closeLock = new Object();
+    private boolean closed;
 
     private Table5Run(Platform platform, RobotWorld world, UserA user) {
         this.platform = platform;
@@ -121,9 +123,20 @@ public final class Table5Run implements AutoCloseable {
         record.awaitFinished("WelcomeBack", STEP);
     }
 
+    /**
+     * Stops User A, the simulator and the platform, once. A second caller waits until the first has finished: on
+     * SIGTERM the command's own thread (whose read of the terminal the signal ends) and the shutdown hook both close
+     * the run, and the JVM halts as soon as the hook returns.
+     */
     @Override public void close() {
-        user.close();
-        world.close();
-        platform.close();
+        synchronized (closeLock) {
+            if (closed) {
+                return;
+            }
+            closed = true;
+            user.close();
+            world.close();
+            platform.close();
+        }
     }
 }

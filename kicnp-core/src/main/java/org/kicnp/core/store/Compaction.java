@@ -21,7 +21,8 @@ import org.kicnp.core.xml.KnowledgeXmlWriter;
  * Writes new contents of XML files crash-safely: every new file goes to a temporary file beside its target and is
  * forced to disk; then the {@link Manifest} is written; then the temporary files are renamed over their targets.
  * A crash before the manifest leaves the old files and stray temporary files (deleted at open); a crash after it
- * leaves a manifest that open finishes. Either way every XML file is complete, old or new.
+ * leaves a manifest that open finishes. Either way every XML file is complete, old or new. A new file takes the
+ * permissions of the one it replaces, and a knowledge file that is a symbolic link is rewritten where it points.
  */
 final class Compaction {
     static final String TEMP_SUFFIX = ".kicnp-tmp";
@@ -43,12 +44,14 @@ final class Compaction {
                 entries.add(new Manifest.Delete(target));
                 continue;
             }
-            Path temp = target.resolveSibling(target.getFileName() + TEMP_SUFFIX);
+            Path real = inPlace(dir, target);
+            Path temp = real.resolveSibling(real.getFileName() + TEMP_SUFFIX);
             Path absolute = dir.resolve(temp);
             Files.createDirectories(absolute.getParent());
             writeForced(absolute, e.getValue(), disk);
+            keepPermissions(dir.resolve(real), absolute);
             tempDirs.add(absolute.getParent());
-            entries.add(new Manifest.Rename(temp, target));
+            entries.add(new Manifest.Rename(temp, real));
         }
         for (Path d : tempDirs) {
             disk.syncDirectory(d);
@@ -56,6 +59,33 @@ final class Compaction {
         Manifest manifest = new Manifest(entries);
         manifest.write(kicnpDir, disk);
         manifest.complete(dir, disk);
+    }
+
+    /**
+     * Where {@code target} (relative to {@code dir}) is really written: a knowledge file that is a symbolic link is
+     * rewritten at the file it points to (its temporary file beside that one, so the rename stays in one directory),
+     * and the link stays a link. The path is relative to {@code dir} when the file lies inside it, else absolute.
+     */
+    private static Path inPlace(Path dir, Path target) throws IOException {
+        Path absolute = dir.resolve(target);
+        if (!Files.isSymbolicLink(absolute) || !Files.exists(absolute)) {
+            return target; // a dangling link is replaced like a missing file
+        }
+        Path real = absolute.toRealPath();
+        Path realDir = dir.toRealPath();
+        return real.startsWith(realDir) ? realDir.relativize(real) : real;
+    }
+
+    /** Gives the new file the permissions of the one it replaces, rather than the process's defaults. */
+    private static void keepPermissions(Path replaced, Path temp) throws IOException {
+        if (!Files.exists(replaced)) {
+            return;
+        }
+        try {
+            Files.setPosixFilePermissions(temp, Files.getPosixFilePermissions(replaced));
+        } catch (UnsupportedOperationException notPosix) {
+            // A file system without POSIX permissions (Windows): nothing to keep.
+        }
     }
 
     private static void writeForced(Path file, List<Frame> frames, Disk disk) throws IOException {

@@ -43,7 +43,8 @@ public final class KnowledgeLoader {
 
     /**
      * The knowledge files named by the arguments: a file stands for itself, a directory for every {@code *.xml}
-     * file below it (recursively, sorted by path, skipping hidden files and directories such as {@code .kicnp}).
+     * file below it (recursively, sorted by path, skipping hidden files and directories such as {@code .kicnp};
+     * a symbolic link to a file counts as that file, a link to a directory is not followed).
      *
      * @throws KnowledgeXmlException naming every path that does not exist, and any empty path
      */
@@ -266,7 +267,10 @@ public final class KnowledgeLoader {
 
                 @Override public FileVisitResult visitFile(Path f, BasicFileAttributes attrs) {
                     String name = f.getFileName().toString();
-                    if (attrs.isRegularFile() && name.endsWith(".xml") && !hidden(f)) {
+                    // A file linked in (a symbolic link to a regular file) is a knowledge file too; linked directories
+                    // are not followed, so a link cannot make the walk loop.
+                    boolean file = attrs.isRegularFile() || attrs.isSymbolicLink() && Files.isRegularFile(f);
+                    if (file && name.endsWith(".xml") && !hidden(f)) {
                         files.add(f);
                     }
                     return FileVisitResult.CONTINUE;

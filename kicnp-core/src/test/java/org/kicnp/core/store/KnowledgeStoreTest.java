@@ -14,7 +14,10 @@ import static org.kicnp.core.store.StoreFixtures.xmlOnly;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.nio.file.attribute.PosixFilePermission;
+import java.nio.file.attribute.PosixFilePermissions;
 import java.util.Map;
+import java.util.Set;
 import org.kicnp.core.Change;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
@@ -71,6 +74,41 @@ class KnowledgeStoreTest {
             assertThat(store.kb().require("ann")).as("after compaction").isEqualTo(empty);
             assertThat(store.kb().require("cid")).isEqualTo(nullName);
         }
+    }
+
+    /** A knowledge file kept elsewhere and linked into the directory stays linked: its target is rewritten. */
+    @Test
+    void compact_whenAKnowledgeFileIsASymlink_rewritesItsTargetInPlaceAndKeepsTheLink() throws Exception {
+        Path dir = Files.createDirectories(tmp.resolve("kb"));
+        Path shared = Files.createDirectories(tmp.resolve("shared"));
+        Path target = baseDir(shared).resolve("base.xml");
+        Path link = Files.createSymbolicLink(dir.resolve("base.xml"), target);
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET)) {
+            store.kb().replace(robot("robot1", 7));
+            store.compact();
+        }
+
+        assertThat(link).isSymbolicLink();
+        assertThat(Files.readSymbolicLink(link)).isEqualTo(target);
+        assertThat(xmlOnly(shared.resolve("kb")).get("robot1")).isEqualTo(robot("robot1", 7));
+        try (var leftovers = Files.list(target.getParent())) {
+            assertThat(leftovers.map(p -> p.getFileName().toString())).containsExactly("base.xml");
+        }
+    }
+
+    @Test
+    void compact_keepsTheReplacedFilesPermissions() throws Exception {
+        Path dir = baseDir(tmp);
+        Path base = dir.resolve("base.xml");
+        Set<PosixFilePermission> groupReadable = PosixFilePermissions.fromString("rw-r-----");
+        Files.setPosixFilePermissions(base, groupReadable);
+        try (KnowledgeStore store = KnowledgeStore.open(dir, QUIET)) {
+            store.kb().replace(robot("robot1", 7));
+            store.compact();
+        }
+
+        assertThat(xmlOnly(dir).get("robot1")).as("the file was rewritten").isEqualTo(robot("robot1", 7));
+        assertThat(Files.getPosixFilePermissions(base)).isEqualTo(groupReadable);
     }
 
     @Test

@@ -409,6 +409,31 @@ class KnowledgeLoaderErrorsTest {
                         + "that is what you mean).");
     }
 
+    /** NaN is no number: it equals nothing, orders against nothing and has no JSON form for the wire or the editor. */
+    @Test
+    void load_whenAFloatIsNaN_rejectsItNamingTheFrameAndSlotWhereverItIsWritten() throws IOException {
+        Path a = file("a.xml", """
+                <FRAME>
+                  <NAME>X</NAME>
+                  <SLOTLIST>
+                    <SLOT><NAME>ratio</NAME><TYPE>TYPE_FLOAT</TYPE><VALUE>NaN</VALUE></SLOT>
+                    <SLOT><NAME>gain</NAME><TYPE>TYPE_FLOAT</TYPE><DEFAULT> -NaN </DEFAULT></SLOT>
+                    <SLOT><NAME>face</NAME><TYPE>TYPE_LIST</TYPE><ARGUMENT>TYPE_FLOAT</ARGUMENT>
+                      <VALUE><ITEM>1.5</ITEM><ITEM>NaN</ITEM></VALUE></SLOT>
+                    <SLOT><NAME>limit</NAME><TYPE>TYPE_FLOAT</TYPE><VALUE>Infinity</VALUE></SLOT>
+                  </SLOTLIST>
+                </FRAME>
+                """);
+
+        assertThat(errors(List.of(a))).containsExactly(
+                a + ":4:52: Slot 'ratio' of frame 'X' has a VALUE that does not fit its type TYPE_FLOAT: 'NaN' is not "
+                        + "a number: TYPE_FLOAT holds numbers (and Infinity or -Infinity), not NaN.",
+                a + ":5:51: Slot 'gain' of frame 'X' has a DEFAULT that does not fit its type TYPE_FLOAT: '-NaN' is "
+                        + "not a number: TYPE_FLOAT holds numbers (and Infinity or -Infinity), not NaN.",
+                a + ":7:7: Slot 'face' of frame 'X' has a VALUE that does not fit its type TYPE_LIST: 'NaN' is not a "
+                        + "number: TYPE_FLOAT holds numbers (and Infinity or -Infinity), not NaN.");
+    }
+
     @Test
     void load_whenTypeUnknown_reportsTheTypeElement() throws IOException {
         Path a = file("a.xml", """

@@ -48,6 +48,22 @@ export async function api(method, path, body) {
 
 export const enc = (name) => encodeURIComponent(name);
 
+// ---- addresses ----
+// A frame's address is #frame/NAME, the World panel's #world. A frame name cannot hold '/', so the two never clash,
+// even for a frame named "world". An old address #NAME still opens the frame NAME (unless NAME is "world").
+
+/** The address (location hash) of frame `name`. */
+export const frameAddress = (name) => '#frame/' + enc(name);
+export const WORLD_ADDRESS = '#world';
+
+/** What an address opens: {frame: NAME}, {world: true} or {} for none. */
+export function readAddress(hash) {
+  const h = hash.startsWith('#') ? hash.slice(1) : hash;
+  if (h === 'world') return { world: true };
+  const name = decodeURIComponent(h.startsWith('frame/') ? h.slice('frame/'.length) : h);
+  return name ? { frame: name } : {};
+}
+
 // ---- small DOM helpers ----
 
 export function el(tag, props, ...children) {

@@ -1,6 +1,6 @@
 // K-ICNP knowledge editor: start-up, session, import/export, live updates and wiring.
 // An ES module loaded by index.html; no build step, nothing from the network.
-import { $, RELATIONS, api, el, show, showErrors, showMain, state } from './base.js';
+import { $, RELATIONS, api, el, readAddress, show, showErrors, showMain, state } from './base.js';
 import { loadFrames, renderNameLists, renderTree } from './tree.js';
 import { drawLinks, scheduleDrawLinks, swatch } from './links.js';
 import { create, markDirty, mayDiscardEdits, openFrame, remove, rename, renderFrame, save, setFrame, startCreate } from './frame.js';
@@ -264,9 +264,9 @@ async function init() {
   try {
     await loadSession();
     await loadFrames();
-    const wanted = decodeURIComponent(location.hash.slice(1));
-    if (wanted === 'world') await openWorld();
-    else if (wanted && state.byName.has(wanted)) await openFrame(wanted);
+    const wanted = readAddress(location.hash);
+    if (wanted.world) await openWorld();
+    else if (wanted.frame && state.byName.has(wanted.frame)) await openFrame(wanted.frame);
   } catch (e) {
     $('login-error').textContent = e.message;
     $('login-error').hidden = false;

@@ -1,6 +1,6 @@
 // K-ICNP knowledge editor: one frame: its Table 1 items, saving, create, rename and delete.
 // An ES module loaded by index.html; no build step, nothing from the network.
-import { $, ApiError, api, el, enc, notice, show, showErrors, showMain, state } from './base.js';
+import { $, ApiError, api, el, enc, frameAddress, notice, show, showErrors, showMain, state } from './base.js';
 import { loadFrames, renderTree } from './tree.js';
 import { checkScripts, renderSlots, splitList } from './slots.js';
 
@@ -23,7 +23,7 @@ export async function openFrame(name, keepNotice) {
     showErrors('frame-errors', null);
     showMain('frame-panel');
     renderTree();
-    history.replaceState(null, '', '#' + enc(name));
+    history.replaceState(null, '', frameAddress(name));
   } catch (e) {
     showMain('welcome');
     showErrors('frame-errors', e);
@@ -168,11 +168,19 @@ export async function save() {
       return;
     }
     const body = Object.assign({ name: f.name, expectedRevision: f.revision }, d);
+    const sent = JSON.stringify(d); // what this save holds: edits typed after it are not in it
     const saved = await api('PUT', '/api/frames/' + enc(f.name), body);
     state.details.clear();
-    setFrame(saved.frame);
-    showErrors('frame-errors', null);
-    notice('Saved ' + f.name + ' (revision ' + saved.frame.revision + ').');
+    if (state.frame !== f) {
+      notice('Saved ' + f.name + ' (revision ' + saved.frame.revision + ').'); // another frame is open now
+    } else if (state.draft === d && JSON.stringify(d) !== sent) {
+      keepLaterEdits(saved.frame);
+      notice('Saved ' + f.name + ' (revision ' + saved.frame.revision + '); the edits made since are not saved yet.');
+    } else {
+      setFrame(saved.frame);
+      showErrors('frame-errors', null);
+      notice('Saved ' + f.name + ' (revision ' + saved.frame.revision + ').');
+    }
   } catch (e) {
     if (e.status === 409) {
       const stale = $('stale-note');
@@ -187,6 +195,24 @@ export async function save() {
     showErrors('frame-errors', e);
     notice('');
   }
+}
+
+/**
+ * The answer to a save came back after more edits were typed: the frame moves to the saved revision (so the next save
+ * is not refused as stale) and the draft, which holds the later edits, stays as it is, unsaved. The form is not
+ * rebuilt, so the field being typed in keeps its focus.
+ */
+function keepLaterEdits(saved) {
+  state.frame = saved;
+  state.problems = [];
+  state.dirty = true;
+  const row = state.byName.get(saved.name);
+  // The change event of this very save may have arrived first and been taken for someone else's change.
+  if (!(row && row.revision > saved.revision)) show('stale-note', false);
+  $('frame-meta').lastElementChild.textContent = saved.provenance.toLowerCase() + ' · revision ' + saved.revision;
+  $('save-button').disabled = !state.session.loggedIn;
+  $('revert-button').disabled = false;
+  showErrors('frame-errors', null);
 }
 
 // ---- create, rename, delete ----

@@ -1,7 +1,7 @@
 // K-ICNP knowledge editor: the World panel's room view: the simulated room drawn live on a canvas, and the
 // robot list (each robot's state and current actions). Snapshots come from GET /api/world and `world` events.
 // An ES module loaded by index.html; no build step, nothing from the network.
-import { $, api, el, showErrors, showMain, state } from './base.js';
+import { $, WORLD_ADDRESS, api, el, showErrors, showMain, state } from './base.js';
 import { loadCommands, loadChat, loadRobots, startWrong, stopCommand } from './operate.js';
 
 const COLORS = { humanoid: '#1f5fbf', mobile: '#0e9384', quadruped: '#b54708' };
@@ -17,6 +17,7 @@ export async function openWorld() {
   if (state.dirty && !window.confirm('Discard the unsaved changes to ' + state.selected + '?')) return;
   state.dirty = false;
   showMain('world-panel');
+  history.replaceState(null, '', WORLD_ADDRESS);
   renderWorldSession();
   const s = state.session;
   try {
