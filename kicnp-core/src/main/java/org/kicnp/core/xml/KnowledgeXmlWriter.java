@@ -46,8 +46,8 @@ public final class KnowledgeXmlWriter {
     /**
      * Writes a KNOWLEDGEBASE document holding the frames in the given order; flushes but does not close.
      *
-     * @throws KnowledgeException when the writer fails, or a frame holds what XML cannot (a list inside a list, a
-     *     character such as U+0007)
+     * @throws KnowledgeException when the writer fails, or a frame holds what XML cannot (lists nested more than
+     *     {@value #MAX_NESTED_LISTS} deep, a character such as U+0007)
      */
     public static void write(List<Frame> frames, Writer out) {
         requireNonNull(frames, "frames");
