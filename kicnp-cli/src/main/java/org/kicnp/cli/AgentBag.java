@@ -90,8 +90,7 @@ final class AgentBag {
             BlockingQueue<Heard> heard = new LinkedBlockingQueue<>();
             PrintWriter err = spec.commandLine().getErr();
             long deadline = seconds == null ? Long.MAX_VALUE : System.nanoTime() + Math.round(seconds * 1e9);
-            try (BufferedWriter file = open(out);
-                 CliAgent a = connect(new Hooks(c -> heard.add(new Heard(System.nanoTime(), c)), r -> { }))) {
+            try (CliAgent a = connect(new Hooks(c -> heard.add(new Heard(System.nanoTime(), c)), r -> { }))) {
                 Signals signals = new Signals(err);
                 for (String c : recorded) {
                     known(a, c).forEach(signals::known); // to name the agent and sensor of a signal that goes
@@ -102,38 +101,51 @@ final class AgentBag {
                     try {
                         a.subscribe(c);
                     } catch (NotConnectedException e) {
-                        return stopped(a, e);
-                    }
-                }
-                write(file, new Bag.Header(started, agent.gateway, recorded));
-                err.println("Recording " + String.join(", ", recorded) + " to " + out + " as '" + a.name() + "'.");
-                err.flush();
-                int written = 0;
-                Message.Changed last = null;
-                while (count == null || written < count) {
-                    long left = deadline - System.nanoTime();
-                    if (left <= 0) {
-                        break;
-                    }
-                    Heard h = heard.poll(Math.min(left, TimeUnit.SECONDS.toNanos(1)), TimeUnit.NANOSECONDS);
-                    if (h == null) {
-                        if (a.stopped().isPresent()) {
-                            return stopped(a, a.stopped().get());
+                        if (a.stopped().isEmpty()) {
+                            throw e;
                         }
-                        continue;
+                        return stopped(a.stopped().get()); // replaced while it subscribed
                     }
-                    // One change of a frame in two recorded classes (a class and one above it) comes once per class.
-                    Message.Changed same = new Message.Changed("", h.change().change(), h.change().name(),
-                            h.change().frame(), h.change().values());
-                    if (same.equals(last)) {
-                        continue;
-                    }
-                    last = same;
-                    write(file, signals.line(Math.max(0, (h.at() - start) / 1_000_000), h.change()));
-                    written++;
                 }
-                err.println("Recorded " + written + " line" + (written == 1 ? "" : "s") + " to " + out + ".");
+                // Opened only now, so that a server that cannot be reached or refuses leaves an earlier file as it was.
+                try (BufferedWriter file = open(out)) {
+                    write(file, new Bag.Header(started, agent.gateway, recorded));
+                    err.println("Recording " + String.join(", ", recorded) + " to " + out + " as '" + a.name() + "'.");
+                    err.flush();
+                    return record(a, heard, file, signals, start, deadline);
+                }
             }
+        }
+
+        /** Writes each change heard as a line until --count, --for, or the connection is lost for good. */
+        private int record(CliAgent a, BlockingQueue<Heard> heard, BufferedWriter file, Signals signals, long start,
+                           long deadline) throws InterruptedException {
+            int written = 0;
+            Message.Changed last = null;
+            while (count == null || written < count) {
+                long left = deadline - System.nanoTime();
+                if (left <= 0) {
+                    break;
+                }
+                Heard h = heard.poll(Math.min(left, TimeUnit.SECONDS.toNanos(1)), TimeUnit.NANOSECONDS);
+                if (h == null) {
+                    if (a.stopped().isPresent()) {
+                        return stopped(a.stopped().get());
+                    }
+                    continue;
+                }
+                // One change of a frame in two recorded classes (a class and one above it) comes once per class.
+                Message.Changed same = new Message.Changed("", h.change().change(), h.change().name(),
+                        h.change().frame(), h.change().values());
+                if (same.equals(last)) {
+                    continue;
+                }
+                last = same;
+                write(file, signals.line(Math.max(0, (h.at() - start) / 1_000_000), h.change()));
+                written++;
+            }
+            spec.commandLine().getErr().println("Recorded " + written + " line" + (written == 1 ? "" : "s") + " to "
+                    + out + ".");
             return 0;
         }
 
@@ -170,16 +182,20 @@ final class AgentBag {
             }
         }
 
-        private int stopped(CliAgent a, Exception why) {
+        private int stopped(Exception why) {
             spec.commandLine().getErr().println("kicnp agent record: " + why.getMessage() + " To record while other "
                     + "commands run, record as another agent of the agent file (--as).");
             return 1;
         }
     }
 
+    /** The agent and sensor a signal's instance is of. */
+    private record Source(String agent, String sensor) {
+    }
+
     /** What the recorder knows of the signals it has seen: whose each one is, to name it when it goes. */
     private static final class Signals {
-        private final Map<String, Bag.Removal> byName = new HashMap<>();
+        private final Map<String, Source> byName = new HashMap<>();
         private final PrintWriter err;
         private boolean warned;
 
@@ -188,25 +204,25 @@ final class AgentBag {
         }
 
         void known(Frame f) {
-            signal(f).ifPresent(s -> byName.put(f.name(), new Bag.Removal(0, s[0], s[1])));
+            signal(f).ifPresent(s -> byName.put(f.name(), s));
         }
 
         Bag.Line line(long t, Message.Changed c) {
             if (c.change() == ChangeKind.REMOVED) {
-                Bag.Removal r = byName.remove(c.name());
+                Source r = byName.remove(c.name());
                 return r == null ? new Bag.FrameChange(t, c.change(), c.name(), Optional.empty(), Optional.empty())
                         : new Bag.Removal(t, r.agent(), r.sensor());
             }
             Frame f = FrameText.parse(c.frame().orElseThrow(), "change of '" + c.name() + "'", KnowledgeBase.create())
                     .getFirst();
-            Optional<String[]> signal = signal(f);
+            Optional<Source> signal = signal(f);
             if (signal.isEmpty() || (c.values().isEmpty() && f.ownSlot("values").isEmpty())) {
                 byName.remove(c.name());
                 return new Bag.FrameChange(t, c.change(), c.name(), f.parent(), c.frame());
             }
-            byName.put(c.name(), new Bag.Removal(0, signal.get()[0], signal.get()[1]));
+            byName.put(c.name(), signal.get());
             Optional<Long> ttl = integer(f, "expires").flatMap(e -> integer(f, "time").map(at -> e - at));
-            return new Bag.Signal(t, c.change(), signal.get()[0], signal.get()[1], values(f, c), ttl);
+            return new Bag.Signal(t, c.change(), signal.get().agent(), signal.get().sensor(), values(f, c), ttl);
         }
 
         /** The values as the server sent them typed; from an older server, as the frame's text. */
@@ -225,14 +241,14 @@ final class AgentBag {
         }
 
         /** The agent and sensor of a sensor signal's frame (its slots 'source' and 'sensor'). */
-        private static Optional<String[]> signal(Frame f) {
+        private static Optional<Source> signal(Frame f) {
             Optional<String> source = text(f, "source");
             Optional<String> sensor = text(f, "sensor");
             if (source.isEmpty() || sensor.isEmpty() || !Message.NAME.matcher(source.get()).matches()
                     || !Message.NAME.matcher(sensor.get()).matches()) {
                 return Optional.empty();
             }
-            return Optional.of(new String[] {source.get(), sensor.get()});
+            return Optional.of(new Source(source.get(), sensor.get()));
         }
 
         private static Optional<String> text(Frame f, String slot) {
