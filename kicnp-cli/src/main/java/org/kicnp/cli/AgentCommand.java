@@ -44,7 +44,8 @@ import picocli.CommandLine.Spec;
  */
 @Command(name = "agent", mixinStandardHelpOptions = true,
         description = "Talk to a running server as an agent: query and change its knowledge, ask it to prove and "
-                + "explain, watch changes, relay messages, send sensor signals, command robots and cancel commands. "
+                + "explain, watch changes, relay messages, send sensor signals, record and play them back, command "
+                + "robots and cancel commands. "
                 + "Connects with a token "
                 + "of the agent file (serve writes it to KB_DIR/.kicnp/agents.properties), as 'director' unless --as "
                 + "says otherwise.",
@@ -59,6 +60,8 @@ import picocli.CommandLine.Spec;
             AgentCommand.Watch.class,
             AgentCommand.Send.class,
             AgentSensor.Sensor.class,
+            AgentBag.Record.class,
+            AgentBag.Play.class,
             AgentActions.Order.class,
             AgentActions.Cancel.class,
         },
@@ -98,6 +101,11 @@ public final class AgentCommand {
 
     /** Connects as the chosen agent, with {@code hooks} for what the server pushes. */
     CliAgent connect(CommandSpec caller, Hooks hooks) {
+        return connect(caller, as, hooks);
+    }
+
+    /** Connects as the agent {@code name} of the agent file, with {@code hooks} for what the server pushes. */
+    CliAgent connect(CommandSpec caller, String name, Hooks hooks) {
         // The SDK logs its connection's life (registered, reconnecting, refused) for a long-running agent; here
         // the command line says what happened itself.
         if (System.getProperty(QUIET_SDK) == null) {
@@ -110,20 +118,15 @@ public final class AgentCommand {
             throw new ParameterException(caller.commandLine(), e.getMessage());
         }
         requirePositive(caller, "--timeout", timeoutSeconds);
-        Properties file;
-        try {
-            file = AgentFile.read(tokens);
-        } catch (IllegalArgumentException e) {
-            throw new ParameterException(caller.commandLine(), e.getMessage());
-        }
-        String token = file.getProperty(as + ".token", "").strip();
+        Properties file = agentFile(caller);
+        String token = file.getProperty(name + ".token", "").strip();
         if (token.isEmpty()) {
-            throw new ParameterException(caller.commandLine(), "The agent file '" + tokens + "' has no '" + as
+            throw new ParameterException(caller.commandLine(), "The agent file '" + tokens + "' has no '" + name
                     + ".token'.");
         }
-        AgentKind kind = kindOf(file.getProperty(as + ".kinds", "user"));
+        AgentKind kind = kindOf(file.getProperty(name + ".kinds", "user"));
         Duration timeout = timeout();
-        AgentOptions options = AgentOptions.of(address.host(), address.port(), as, kind, token);
+        AgentOptions options = AgentOptions.of(address.host(), address.port(), name, kind, token);
         try {
             options = tls.socketFactory().map(options::withSocketFactory).orElse(options);
         } catch (IllegalArgumentException e) {
@@ -140,6 +143,35 @@ public final class AgentCommand {
             throw e;
         }
         return agent;
+    }
+
+    /** The agent file's entries; a usage error when it is missing or unreadable. */
+    Properties agentFile(CommandSpec caller) {
+        try {
+            return AgentFile.read(tokens);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(caller.commandLine(), e.getMessage());
+        }
+    }
+
+    /** True when {@code --as} was given on the command line (not its default). */
+    boolean asGiven() {
+        for (picocli.CommandLine c = spec.commandLine(); c != null; c = c.getParent()) {
+            // Set on the agent command or, inherited, on any subcommand below it.
+            if (c.getParseResult() != null && hasAs(c.getParseResult())) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private static boolean hasAs(picocli.CommandLine.ParseResult r) {
+        for (picocli.CommandLine.ParseResult p = r; p != null; p = p.subcommand()) {
+            if (p.hasMatchedOption("--as")) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** A usage error unless {@code seconds} is a number above 0 (not NaN, not infinite). */

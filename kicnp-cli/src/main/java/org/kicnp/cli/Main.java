@@ -33,8 +33,13 @@ public final class Main implements Runnable {
 
     /** Runs the command line and returns its exit code, without exiting: tests call this. */
     public static int run(String... args) {
+        return commandLine().execute(args);
+    }
+
+    /** The command line as {@link #run} executes it; tests give it writers of their own to run verbs side by side. */
+    static CommandLine commandLine() {
         return new CommandLine(new Main()).setCaseInsensitiveEnumValuesAllowed(true)
-                .setExecutionExceptionHandler(new CommandFailure()).execute(args);
+                .setExecutionExceptionHandler(new CommandFailure());
     }
 
     @Override public void run() {

@@ -21,6 +21,7 @@ import org.kicnp.core.KnowledgeListener;
 import org.kicnp.core.Provenance;
 import org.kicnp.core.Slot;
 import org.kicnp.core.UnknownFrameException;
+import org.kicnp.core.Value;
 import org.kicnp.protocol.AgentKind;
 import org.kicnp.protocol.ChangeKind;
 import org.kicnp.protocol.ErrorCode;
@@ -331,6 +332,7 @@ final class KnowledgeAccess implements KnowledgeListener {
             for (FrameEvent e : changes.events()) {
                 Set<String> classes = classesOf(e.frame());
                 Optional<String> xml = null; // the frame as agents read it: written once per event, when needed
+                Optional<List<Value>> values = signalValues(e, classes);
                 for (Session s : subscribers) {
                     for (String c : s.subscriptions()) {
                         if (classes.contains(c)) {
@@ -338,7 +340,7 @@ final class KnowledgeAccess implements KnowledgeListener {
                                 xml = e instanceof FrameEvent.Removed ? Optional.empty()
                                         : Optional.of(FrameText.toXml(selfDescribed(e.frame())));
                             }
-                            out.send(s, notification(c, e, xml));
+                            out.send(s, notification(c, e, xml, values));
                         }
                     }
                 }
@@ -380,13 +382,26 @@ final class KnowledgeAccess implements KnowledgeListener {
         return out;
     }
 
-    private static Message.Changed notification(String ofClass, FrameEvent e, Optional<String> xml) {
+    /**
+     * A sensor signal's values, typed: the XML of its {@code values} list has no item type (its items may be of any
+     * type), so an agent reading the frame alone would get them as text.
+     */
+    private static Optional<List<Value>> signalValues(FrameEvent e, Set<String> classes) {
+        if (e instanceof FrameEvent.Removed || !classes.contains(RuntimeFrames.SENSOR_SIGNAL)) {
+            return Optional.empty();
+        }
+        return e.frame().ownSlot("values").flatMap(Slot::value)
+                .map(v -> v instanceof Value.Lst l ? l.items() : List.of(v));
+    }
+
+    private static Message.Changed notification(String ofClass, FrameEvent e, Optional<String> xml,
+                                                Optional<List<Value>> values) {
         ChangeKind kind = switch (e) {
             case FrameEvent.Added a -> ChangeKind.ADDED;
             case FrameEvent.Replaced r -> ChangeKind.REPLACED;
             case FrameEvent.Removed r -> ChangeKind.REMOVED;
         };
-        return new Message.Changed(ofClass, kind, e.name(), xml);
+        return new Message.Changed(ofClass, kind, e.name(), xml, values);
     }
 
     private Message apply(String id, List<Change> changes) {

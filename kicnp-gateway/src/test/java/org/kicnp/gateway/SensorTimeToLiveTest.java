@@ -84,7 +84,7 @@ class SensorTimeToLiveTest {
     }
 
     @Test
-    void aSignalHoldingAList_reachesSubscribersAndQueries_asTheXmlOfItsFrame() {
+    void aSignalHoldingAList_reachesSubscribersAndQueries_asTheXmlOfItsFrame_andSubscribersWithItsValuesTyped() {
         try (UserAgent alice = new UserAgent(AgentOptions.of("127.0.0.1", server.port(), "alice", AgentKind.USER,
                 "alice-token"))) {
             alice.startAndAwait(WAIT);
@@ -98,6 +98,9 @@ class SensorTimeToLiveTest {
             assertThat(alice.changes().getFirst().name()).isEqualTo("signal_scout_face_seen");
             assertThat(alice.changes().getFirst().frame()).hasValueSatisfying(xml -> assertThat(xml)
                     .contains("<ITEM>unknown</ITEM>").contains("<ITEM>0.1</ITEM>"));
+            // The XML's list has no item type, so its items read back as text; the notification carries them typed.
+            assertThat(alice.changes().getFirst().values()).contains(java.util.List.of(Value.of("unknown"), face,
+                    Value.of(1.2)));
             assertThat(alice.query("SensorSignal")).singleElement().satisfies(f -> assertThat(f.ownSlot("values")
                     .flatMap(org.kicnp.core.Slot::value)).contains(new Value.Lst(java.util.List.of(Value.of("unknown"),
                     new Value.Lst(java.util.List.of(Value.of("0.1"), Value.of("0.2"))), Value.of("1.2")))));

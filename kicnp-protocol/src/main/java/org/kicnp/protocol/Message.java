@@ -243,13 +243,24 @@ public sealed interface Message {
         }
     }
 
-    /** A change to a frame of a subscribed class; {@code frame} is the XML after the change, absent on removal. */
-    record Changed(String ofClass, ChangeKind change, String name, Optional<String> frame) implements Message {
+    /**
+     * A change to a frame of a subscribed class; {@code frame} is the XML after the change, absent on removal. For a
+     * sensor signal (an instance of {@code SensorSignal}) {@code values} carries its values typed as the {@code sensor}
+     * message carried them: the XML's {@code values} list has no item type, so its items read back as text.
+     */
+    record Changed(String ofClass, ChangeKind change, String name, Optional<String> frame, Optional<List<Value>> values)
+            implements Message {
         public Changed {
             requireNonNull(ofClass, "ofClass");
             requireNonNull(change, "change");
             requireNonNull(name, "name");
             requireNonNull(frame, "frame");
+            values = requireNonNull(values, "values").map(List::copyOf);
+        }
+
+        /** A change of a frame that is not a sensor signal. */
+        public Changed(String ofClass, ChangeKind change, String name, Optional<String> frame) {
+            this(ofClass, change, name, frame, Optional.empty());
         }
     }
 
