@@ -385,6 +385,10 @@ final class Validator {
             return true;
         }
         String p = f.parentOrNull();
+        ClassInfo known = p == null ? null : knownClass(p);
+        if (known != null) {
+            return known.isA(ancestor); // the common case: an instance of a class checked before
+        }
         Frame parent = p == null ? null : view(p);
         if (parent == null) {
             return false;
@@ -406,6 +410,9 @@ final class Validator {
     }
 
     private void requireClass(String frame, String slot, String cls) {
+        if (knownClass(cls) != null) {
+            return;
+        }
         Frame c = view(cls);
         if (c == null) {
             problems.add(Problem.of(frame, slot, where(slot, frame) + " names class '" + cls
@@ -421,6 +428,17 @@ final class Validator {
             problems.add(Problem.of(frame, "Frame '" + frame + "' " + relation + " '" + target
                     + "', which is not defined."));
         }
+    }
+
+    /**
+     * What is known already of the class named {@code name} in the view, without looking it up there: an entry of
+     * {@link #classes} is made only for a class of the view whose IS-A chain ends at a root, and stays true while the
+     * map is in use (the knowledge base's own map is cleared by a batch that changes a class). Null when nothing is
+     * known yet; then the caller reads the view.
+     */
+    private ClassInfo knownClass(String name) {
+        ClassInfo c = classes.get(name);
+        return c != null && c.frame.isClass() ? c : null;
     }
 
     /**
