@@ -196,8 +196,24 @@ public final class MessageCodec {
             return mapper.treeToValue(body, type.recordClass());
         } catch (JacksonException | IllegalArgumentException e) {
             throw new ProtocolException(ErrorCode.BAD_MESSAGE,
-                    "Bad '" + typeName + "' message: " + rootMessage(e), e);
+                    "Bad '" + typeName + "' message: " + member(e) + rootMessage(e), e);
         }
+    }
+
+    /** "the member 'args.speed': " for a member data binding refused, so the agent learns which; else nothing. */
+    private static String member(Exception e) {
+        if (!(e instanceof com.fasterxml.jackson.databind.JsonMappingException m) || m.getPath().isEmpty()) {
+            return "";
+        }
+        StringBuilder path = new StringBuilder();
+        for (com.fasterxml.jackson.databind.JsonMappingException.Reference r : m.getPath()) {
+            if (r.getFieldName() != null) {
+                path.append(path.isEmpty() ? "" : ".").append(r.getFieldName());
+            } else if (r.getIndex() >= 0) {
+                path.append('[').append(r.getIndex()).append(']');
+            }
+        }
+        return path.isEmpty() ? "" : "the member '" + path + "': ";
     }
 
     private JsonNode readTree(byte[] payload) {
@@ -303,11 +319,17 @@ public final class MessageCodec {
     private static Message.Relay relay(ObjectNode b) {
         try {
             return new Message.Relay(text(b, "id"), text(b, "from"), optionalText(b, "toAgent"),
-                    optionalText(b, "toKind").map(k -> AgentKind.valueOf(k.toUpperCase(java.util.Locale.ROOT))),
+                    optionalText(b, "toKind").map(MessageCodec::kind),
                     text(b, "subject"), text(b, "body"));
         } catch (IllegalArgumentException e) {
             throw new ProtocolException(ErrorCode.BAD_MESSAGE, "Bad 'relay' message: " + e.getMessage(), e);
         }
+    }
+
+    private static AgentKind kind(String k) {
+        return java.util.Arrays.stream(AgentKind.values()).filter(a -> a.name().equalsIgnoreCase(k)).findFirst()
+                .orElseThrow(() -> new ProtocolException(ErrorCode.BAD_MESSAGE, "Bad 'relay' message: the member "
+                        + "'toKind' must be robot, user, service or peer, not '" + k + "'."));
     }
 
     private static String text(ObjectNode b, String name) {

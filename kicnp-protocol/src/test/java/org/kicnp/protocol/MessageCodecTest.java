@@ -152,6 +152,22 @@ class MessageCodecTest {
                 ErrorCode.BAD_JSON, "not valid JSON");
     }
 
+    /** An agent learns which member was wrong, not a Java type name alone. */
+    @Test
+    void decode_whenAMemberHasTheWrongJsonType_namesTheMember() {
+        assertCode("{\"v\":1,\"type\":\"query\",\"id\":{\"a\":1},\"ofClass\":\"Cup\"}", ErrorCode.BAD_MESSAGE,
+                "Bad 'query' message: the member 'id': ");
+        assertCode("{\"v\":1,\"type\":\"register\",\"id\":\"1\",\"capabilities\":\"<FRAME/>\"}",
+                ErrorCode.BAD_MESSAGE, "Bad 'register' message: the member 'capabilities': ");
+        assertCode("{\"v\":1,\"type\":\"sensor\",\"source\":\"a\",\"sensor\":\"sonar\",\"values\":[1],\"ttlMs\":\"250\"}",
+                ErrorCode.BAD_MESSAGE, "Bad 'sensor' message: the member 'ttlMs': ");
+        assertCode("{\"v\":1,\"type\":\"command\",\"id\":\"1\",\"robot\":\"scout\",\"action\":\"go\","
+                + "\"args\":{\"speed\":2}}", ErrorCode.BAD_MESSAGE, "Bad 'command' message: the member 'args.speed': ");
+        assertCode("{\"v\":1,\"type\":\"relay\",\"id\":\"1\",\"from\":\"a\",\"toKind\":\"toaster\",\"subject\":\"s\","
+                + "\"body\":\"b\"}", ErrorCode.BAD_MESSAGE,
+                "Bad 'relay' message: the member 'toKind' must be robot, user, service or peer, not 'toaster'.");
+    }
+
     private Message decode(String json) {
         return codec.decode(json.getBytes(UTF_8));
     }
