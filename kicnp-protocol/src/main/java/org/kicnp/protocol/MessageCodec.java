@@ -32,6 +32,9 @@ public final class MessageCodec {
             .configure(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES, false)
             .configure(DeserializationFeature.FAIL_ON_NULL_FOR_PRIMITIVES, true)
             .configure(DeserializationFeature.FAIL_ON_TRAILING_TOKENS, true)
+            // An enumerated member is one of its lower-case names; a number would be read as an index ("stage": 3 as
+            // failed), a member of the wrong JSON type taken silently.
+            .configure(DeserializationFeature.FAIL_ON_NUMBERS_FOR_ENUMS, true)
             // A number or boolean where the protocol wants a string (an id, a name, a frame) is a member of the wrong
             // JSON type, as the relay's own reader says; data binding would otherwise take 9 for "9".
             .withCoercionConfig(com.fasterxml.jackson.databind.type.LogicalType.Textual, c -> c

@@ -168,6 +168,17 @@ class MessageCodecTest {
                 "Bad 'relay' message: the member 'toKind' must be robot, user, service or peer, not 'toaster'.");
     }
 
+    /** A number is not one of the lower-case names of an enumerated member; Jackson would take it as an index. */
+    @Test
+    void decode_whenAnEnumeratedMemberIsANumber_reportsBadMessageNamingIt() {
+        assertCode("{\"v\":1,\"type\":\"hello\",\"id\":\"1\",\"agent\":\"a\",\"kind\":0,\"token\":\"t\"}",
+                ErrorCode.BAD_MESSAGE, "Bad 'hello' message: the member 'kind': ");
+        assertCode("{\"v\":1,\"type\":\"feedback\",\"id\":\"c1\",\"robot\":\"a\",\"stage\":3,\"detail\":\"\"}",
+                ErrorCode.BAD_MESSAGE, "Bad 'feedback' message: the member 'stage': ");
+        assertCode("{\"v\":1,\"type\":\"error\",\"code\":5,\"message\":\"m\"}", ErrorCode.BAD_MESSAGE,
+                "Bad 'error' message: the member 'code': ");
+    }
+
     private Message decode(String json) {
         return codec.decode(json.getBytes(UTF_8));
     }
