@@ -179,7 +179,7 @@ public final class MessageCodec {
         }
         JsonNode root = readTree(payload);
         JsonNode v = root.get("v");
-        if (v == null || !v.isIntegralNumber() || v.asLong() != VERSION) {
+        if (v == null || !v.isIntegralNumber() || !v.canConvertToLong() || v.asLong() != VERSION) {
             throw new ProtocolException(ErrorCode.UNSUPPORTED_VERSION,
                     "Protocol version " + (v == null ? "(missing)" : v.toString()) + " is not supported; this server speaks "
                             + VERSION + ".");

@@ -179,6 +179,13 @@ class MessageCodecTest {
                 "Bad 'error' message: the member 'code': ");
     }
 
+    /** A version too large for a long is not version 1 (its low 64 bits would be). */
+    @Test
+    void decode_whenVersionIsAHugeNumber_reportsUnsupportedVersion() {
+        assertCode("{\"v\":18446744073709551617,\"type\":\"ack\",\"id\":\"7\"}", ErrorCode.UNSUPPORTED_VERSION,
+                "Protocol version 18446744073709551617 is not supported");
+    }
+
     private Message decode(String json) {
         return codec.decode(json.getBytes(UTF_8));
     }
