@@ -135,6 +135,12 @@ public sealed interface Message {
             requireNonNull(stage, "stage");
             requireNonNull(progress, "progress");
             requireNonNull(detail, "detail");
+            progress.ifPresent(p -> {
+                if (!(p >= 0.0 && p <= 1.0)) { // NaN too
+                    throw new IllegalArgumentException("The progress of command '" + id
+                            + "' must be a fraction from 0.0 to 1.0, not " + p + ".");
+                }
+            });
         }
 
         /** The same feedback stamped with the robot the server authenticated. */

@@ -186,6 +186,23 @@ class MessageCodecTest {
                 "Protocol version 18446744073709551617 is not supported");
     }
 
+    /** Progress is the fraction done: "NaN" (which Jackson reads for a number), 1e400 (Infinity) or 7 are not one. */
+    @Test
+    void feedback_progress_isAFractionFromZeroToOne() {
+        String head = "{\"v\":1,\"type\":\"feedback\",\"id\":\"c1\",\"robot\":\"scout\",\"stage\":\"progress\",\"detail\":\"\"";
+        assertThat(decode(head + ",\"progress\":0.5}")).isEqualTo(new Message.Feedback("c1", "scout",
+                FeedbackStage.PROGRESS, Optional.of(0.5), ""));
+        assertThat(decode(head + ",\"progress\":1}")).isEqualTo(new Message.Feedback("c1", "scout",
+                FeedbackStage.PROGRESS, Optional.of(1.0), ""));
+        assertCode(head + ",\"progress\":\"NaN\"}", ErrorCode.BAD_MESSAGE,
+                "The progress of command 'c1' must be a fraction from 0.0 to 1.0, not NaN.");
+        assertCode(head + ",\"progress\":1e400}", ErrorCode.BAD_MESSAGE, "not Infinity.");
+        assertCode(head + ",\"progress\":7}", ErrorCode.BAD_MESSAGE, "not 7.0.");
+        assertCode(head + ",\"progress\":-0.5}", ErrorCode.BAD_MESSAGE, "not -0.5.");
+        assertThatThrownBy(() -> new Message.Feedback("c1", "scout", FeedbackStage.PROGRESS, Optional.of(50.0), ""))
+                .isInstanceOf(IllegalArgumentException.class).hasMessageContaining("not 50.0.");
+    }
+
     private Message decode(String json) {
         return codec.decode(json.getBytes(UTF_8));
     }
