@@ -226,7 +226,11 @@ public abstract class AgentBase implements AutoCloseable {
 
     // ---- what an agent can do ----
 
-    /** Reports a sensor signal; the server keeps the latest one as a {@code SensorSignal} frame. */
+    /**
+     * Reports a sensor signal; the server keeps the latest one as a {@code SensorSignal} frame.
+     *
+     * @throws IllegalArgumentException when a value is (or holds) NaN or an infinite number, which JSON cannot carry
+     */
     public final void sensor(String sensor, Value... values) {
         send(new Message.SensorSignal(name(), sensor, List.of(values)));
     }

@@ -203,6 +203,21 @@ class MessageCodecTest {
                 .isInstanceOf(IllegalArgumentException.class).hasMessageContaining("not 50.0.");
     }
 
+    /**
+     * JSON has no NaN or Infinity: 1e400 would become a float Infinity in the knowledge base, and a robot's NaN or
+     * Infinity reading (a range sensor with no return) would be written as the string "NaN", a TYPE_STR.
+     */
+    @Test
+    void sensor_valuesThatAreNotFiniteNumbers_areRefused() {
+        String head = "{\"v\":1,\"type\":\"sensor\",\"source\":\"a\",\"sensor\":\"range\",\"values\":";
+        assertCode(head + "[0.5,1e400]}", ErrorCode.BAD_MESSAGE, "Sensor 'range' value #2 is Infinity");
+        assertCode(head + "[[1.0,-1e400]]}", ErrorCode.BAD_MESSAGE, "Sensor 'range' value #1 is -Infinity");
+        assertThat(decode(head + "[\"NaN\",1e300]}")).isEqualTo(new Message.SensorSignal("a", "range",
+                List.of(Value.of("NaN"), Value.of(1e300))));
+        assertThatThrownBy(() -> new Message.SensorSignal("a", "range", List.of(Value.of(Double.NaN))))
+                .isInstanceOf(IllegalArgumentException.class).hasMessageContaining("Sensor 'range' value #1 is NaN");
+    }
+
     private Message decode(String json) {
         return codec.decode(json.getBytes(UTF_8));
     }
