@@ -235,6 +235,40 @@ class GatewayHandlerTest {
         assertThat(kb.require("signal_scout_sonar").provenance()).isEqualTo(org.kicnp.core.Provenance.RUNTIME);
     }
 
+    /**
+     * Robot 'arm' sensor 'left_grip' and robot 'arm_left' sensor 'grip' both map to 'signal_arm_left_grip': one
+     * agent's reading may not replace another's (and be retracted when the wrong agent leaves).
+     */
+    @Test
+    void sensorSignal_whoseFrameNameIsAnotherAgentsSignal_isRejectedAndKeepsThatSignal() {
+        ServerAgent[] two = new ServerAgent[1];
+        KnowledgeBase shared = KnowledgeBase.create();
+        EmbeddedChannel armLeft = Wire.channel(GatewayConfig.defaults(), AgentDirectory.empty().with("arm", "s")
+                .with("arm_left", "t"), shared, FeedbackListener.NONE, new GatewayMetrics(), two);
+        EmbeddedChannel arm = Wire.channel(GatewayConfig.defaults(), two[0], new GatewayMetrics());
+        try {
+            armLeft.writeInbound(Wire.frame(new Message.Hello("1", "arm_left", AgentKind.ROBOT, "t")));
+            arm.writeInbound(Wire.frame(new Message.Hello("1", "arm", AgentKind.ROBOT, "s")));
+            Wire.written(armLeft);
+            Wire.written(arm);
+            armLeft.writeInbound(Wire.frame(new Message.SensorSignal("arm_left", "grip", List.of(Value.of(true)))));
+
+            arm.writeInbound(Wire.frame(new Message.SensorSignal("arm", "left_grip", List.of(Value.of(false)))));
+
+            assertThat(Wire.written(arm)).singleElement().isInstanceOfSatisfying(Message.ErrorReply.class, e -> {
+                assertThat(e.code()).isEqualTo(ErrorCode.REJECTED);
+                assertThat(e.message()).isEqualTo("Sensor signal 'left_grip' from 'arm' was refused: its frame "
+                        + "'signal_arm_left_grip' holds sensor 'grip' of agent 'arm_left'; rename the sensor.");
+            });
+            assertThat(shared.value("signal_arm_left_grip", "value")).contains(Value.of(true));
+            arm.close();
+            assertThat(shared.value("signal_arm_left_grip", "source")).contains(Value.of("arm_left"));
+        } finally {
+            armLeft.finishAndReleaseAll();
+            arm.finishAndReleaseAll();
+        }
+    }
+
     @Test
     void sensorSignalsWithATimeToLive_keepOneExpiryPerSensor_howeverManyReadingsCome() {
         authenticate();
