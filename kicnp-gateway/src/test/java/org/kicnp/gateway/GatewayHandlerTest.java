@@ -66,6 +66,15 @@ class GatewayHandlerTest {
         assertThat(metrics.protocolErrors()).isEqualTo(1);
     }
 
+    /** The refusal answers that request: it echoes its id, as docs/protocol.md's Correlation says answers do. */
+    @Test
+    void request_beforeHello_getsNotAuthenticatedEchoingItsId() {
+        ch.writeInbound(Wire.frame(new Message.Ask("a-7", "Robot", "speed")));
+        assertThat(Wire.written(ch)).containsExactly(Message.ErrorReply.to("a-7", ErrorCode.NOT_AUTHENTICATED,
+                "Send 'hello' first: 'ask' before authentication."));
+        assertThat(ch.isOpen()).isFalse();
+    }
+
     @Test
     void garbageBytes_getFrameTooLargeAndClose() {
         ch.writeInbound(Unpooled.copiedBuffer("GET / HTTP/1.1\r\nHost: x\r\n\r\n", StandardCharsets.US_ASCII));
