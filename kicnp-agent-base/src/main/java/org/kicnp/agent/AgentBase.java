@@ -587,7 +587,7 @@ public abstract class AgentBase implements AutoCloseable {
             return m;
         } catch (TimeoutException e) {
             throw new AgentTimeoutException("The server did not answer " + r.getClass().getSimpleName() + " '" + r.id()
-                    + "' within " + options.requestTimeout() + ".");
+                    + "' within " + words(options.requestTimeout()) + ".");
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new AgentException("Interrupted while waiting for the answer to '" + r.id() + "'.", e);
