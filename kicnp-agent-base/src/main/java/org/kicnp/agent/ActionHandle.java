@@ -44,7 +44,11 @@ public final class ActionHandle {
         report(FeedbackStage.STARTED, Optional.empty(), "");
     }
 
-    /** Reports progress: the fraction done (0.0 to 1.0) and a note. */
+    /**
+     * Reports progress: the fraction done (0.0 to 1.0) and a note.
+     *
+     * @throws IllegalArgumentException when {@code fraction} is not from 0.0 to 1.0 (NaN included); nothing is sent
+     */
     public void progress(double fraction, String note) {
         report(FeedbackStage.PROGRESS, Optional.of(fraction), note);
     }

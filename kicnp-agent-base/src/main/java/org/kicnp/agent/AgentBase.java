@@ -226,7 +226,11 @@ public abstract class AgentBase implements AutoCloseable {
 
     // ---- what an agent can do ----
 
-    /** Reports a sensor signal; the server keeps the latest one as a {@code SensorSignal} frame. */
+    /**
+     * Reports a sensor signal; the server keeps the latest one as a {@code SensorSignal} frame.
+     *
+     * @throws IllegalArgumentException when a value is (or holds) NaN or an infinite number, which JSON cannot carry
+     */
     public final void sensor(String sensor, Value... values) {
         send(new Message.SensorSignal(name(), sensor, List.of(values)));
     }
@@ -583,7 +587,7 @@ public abstract class AgentBase implements AutoCloseable {
             return m;
         } catch (TimeoutException e) {
             throw new AgentTimeoutException("The server did not answer " + r.getClass().getSimpleName() + " '" + r.id()
-                    + "' within " + options.requestTimeout() + ".");
+                    + "' within " + words(options.requestTimeout()) + ".");
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new AgentException("Interrupted while waiting for the answer to '" + r.id() + "'.", e);

@@ -85,4 +85,36 @@ class AgentBaseTest {
                     .hasMessage("Server refused agent 'alice': Wrong token.");
         }
     }
+
+    /** A request the server never answers times out with a sentence people read ("300 ms", not "PT0.3S"). */
+    @Test
+    void request_thatTheServerNeverAnswers_timesOutSayingWhichAndHowLong() throws Exception {
+        try (ServerSocket server = new ServerSocket(0, 5, InetAddress.getLoopbackAddress())) {
+            AgentOptions o = AgentOptions.of("127.0.0.1", server.getLocalPort(), "alice", AgentKind.USER, "t");
+            o = new AgentOptions(o.host(), o.port(), o.name(), o.kind(), o.token(), Duration.ofMillis(300),
+                    o.heartbeatInterval(), o.serverSilence(), o.backoffInitial(), o.backoffMax(), o.maxFrameBytes(),
+                    o.socketFactory());
+            Thread.ofVirtual().start(() -> {
+                try (Socket s = server.accept()) {
+                    DataInputStream in = new DataInputStream(s.getInputStream());
+                    DataOutputStream out = new DataOutputStream(s.getOutputStream());
+                    Message.Hello hello = (Message.Hello) CODEC.decode(Framing.read(in, 1 << 20));
+                    Framing.write(out, CODEC.encode(new Message.AuthResult(hello.id(), true, "fake", Optional.empty())));
+                    Message.Register reg = (Message.Register) CODEC.decode(Framing.read(in, 1 << 20));
+                    Framing.write(out, CODEC.encode(new Message.Ack(reg.id())));
+                    while (true) {
+                        Framing.read(in, 1 << 20); // reads everything, answers nothing
+                    }
+                } catch (Exception ignored) {
+                    // the test ends by closing the agent
+                }
+            });
+            try (UserAgent a = new UserAgent(o)) {
+                a.startAndAwait(Duration.ofSeconds(10));
+                assertThatThrownBy(() -> a.query("Cup")).isInstanceOf(AgentTimeoutException.class)
+                        .hasMessageMatching("The server did not answer Query '\\d+' within 300 ms\\.");
+                assertThat(a.isConnected()).isTrue();
+            }
+        }
+    }
 }

@@ -47,8 +47,8 @@ public final class AgentDirectory {
     /**
      * Builds a directory from agent-file properties.
      *
-     * @throws GatewayException when a key is not {@code NAME.token} or {@code NAME.kinds}, a kind is unknown, or an
-     *     agent has kinds but no token
+     * @throws GatewayException when a key is not {@code NAME.token} or {@code NAME.kinds}, a kind is unknown, a
+     *     token is empty, or an agent has kinds but no token
      */
     public static AgentDirectory of(Properties p, String source) {
         Map<String, byte[]> tokens = new HashMap<>();
@@ -58,7 +58,13 @@ public final class AgentDirectory {
             int dot = key.lastIndexOf('.');
             String name = dot < 0 ? "" : key.substring(0, dot);
             switch (dot < 0 ? "" : key.substring(dot + 1)) {
-                case "token" -> tokens.put(name, value.getBytes(UTF_8));
+                case "token" -> {
+                    if (value.isEmpty()) { // MessageDigest.isEqual of two empty arrays is true: anyone could connect
+                        throw new GatewayException("Agent '" + name + "' in '" + source
+                                + "' has an empty token; give it a secret, or remove it.");
+                    }
+                    tokens.put(name, value.getBytes(UTF_8));
+                }
                 case "kinds" -> kinds.put(name, parseKinds(value, key, source));
                 default -> throw new GatewayException("Key '" + key + "' in the agent file '" + source
                         + "' is neither NAME.token nor NAME.kinds.");
@@ -82,6 +88,9 @@ public final class AgentDirectory {
 
     /** A copy that also admits {@code name} with {@code token} as any of {@code kinds}. */
     public AgentDirectory with(String name, String token, AgentKind... kinds) {
+        if (token.isEmpty()) {
+            throw new GatewayException("Agent '" + name + "' has an empty token; give it a secret.");
+        }
         Map<String, Entry> copy = new HashMap<>(entries);
         Set<AgentKind> allowed = kinds.length == 0 ? EnumSet.allOf(AgentKind.class) : EnumSet.of(kinds[0], kinds);
         copy.put(requireNonNull(name, "name"), new Entry(token.getBytes(UTF_8), allowed));

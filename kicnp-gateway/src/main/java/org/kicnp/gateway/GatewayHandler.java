@@ -126,8 +126,12 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter {
                 if (message instanceof Message.Hello hello) {
                     server.authenticate(session, hello);
                 } else {
-                    refuse(ErrorReply.of(ErrorCode.NOT_AUTHENTICATED, "Send 'hello' first: '"
-                            + org.kicnp.protocol.MessageType.of(message).wireName() + "' before authentication."));
+                    String text = "Send 'hello' first: '" + org.kicnp.protocol.MessageType.of(message).wireName()
+                            + "' before authentication.";
+                    // The answer to a request echoes its id (none for a fire-and-forget relay's empty one).
+                    refuse(message instanceof Message.Request r && !r.id().isEmpty()
+                            ? ErrorReply.to(r.id(), ErrorCode.NOT_AUTHENTICATED, text)
+                            : ErrorReply.of(ErrorCode.NOT_AUTHENTICATED, text));
                 }
             }
             case AUTHENTICATED, REGISTERED -> dispatch(message);

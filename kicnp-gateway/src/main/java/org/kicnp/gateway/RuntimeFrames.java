@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Future;
@@ -82,6 +83,7 @@ final class RuntimeFrames {
         ensureClass(SENSOR_SIGNAL);
         long now = System.currentTimeMillis();
         String name = "signal_" + s.source() + "_" + s.sensor();
+        refuseOthers(name, s.source());
         Frame.Builder b = Frame.instance(name, SENSOR_SIGNAL)
                 .provenance(Provenance.RUNTIME)
                 .slot(Slot.ofValue("source", DataType.STRING, Value.of(s.source())))
@@ -107,6 +109,27 @@ final class RuntimeFrames {
         if (before != null) {
             before.task().cancel(false);
         }
+    }
+
+    /**
+     * Refuses to put a signal over a frame that is not this agent's: robot 'arm' sensor 'left_grip' and robot
+     * 'arm_left' sensor 'grip' share the name 'signal_arm_left_grip', and one must not replace the other's reading
+     * (nor retract it when it leaves).
+     */
+    private void refuseOthers(String name, String source) {
+        if (!kb.contains(name)) {
+            return;
+        }
+        Optional<Value> owner = kb.value(name, "source");
+        if (!owner.equals(Optional.of(Value.of(source)))) {
+            throw new IllegalArgumentException("its frame '" + name + "' " + owner.map(o -> "holds sensor "
+                    + kb.value(name, "sensor").map(RuntimeFrames::quoted).orElse("''") + " of agent " + quoted(o))
+                    .orElse("is another frame of the knowledge base") + "; rename the sensor.");
+        }
+    }
+
+    private static String quoted(Value v) {
+        return "'" + (v instanceof Value.Str str ? str.value() : v.toString()) + "'";
     }
 
     /** Expiries waiting, one at most per sensor frame. */

@@ -50,4 +50,15 @@ class AgentDirectoryTest {
         assertThatThrownBy(() -> AgentDirectory.of(p, "a.properties"))
                 .hasMessage("Agent 'scout' in 'a.properties' has kinds but no token.");
     }
+
+    /** A blank token (a placeholder left in the file) would admit anyone who sends the empty token under that name. */
+    @Test
+    void of_whenATokenIsBlank_refusesIt() throws Exception {
+        Properties p = new Properties();
+        p.load(new StringReader("scout.token =   \nscout.kinds = robot\n"));
+        assertThatThrownBy(() -> AgentDirectory.of(p, "a.properties")).isInstanceOf(GatewayException.class)
+                .hasMessage("Agent 'scout' in 'a.properties' has an empty token; give it a secret, or remove it.");
+        assertThatThrownBy(() -> AgentDirectory.empty().with("scout", "")).isInstanceOf(GatewayException.class)
+                .hasMessage("Agent 'scout' has an empty token; give it a secret.");
+    }
 }

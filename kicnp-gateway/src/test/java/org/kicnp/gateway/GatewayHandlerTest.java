@@ -66,6 +66,15 @@ class GatewayHandlerTest {
         assertThat(metrics.protocolErrors()).isEqualTo(1);
     }
 
+    /** The refusal answers that request: it echoes its id, as docs/protocol.md's Correlation says answers do. */
+    @Test
+    void request_beforeHello_getsNotAuthenticatedEchoingItsId() {
+        ch.writeInbound(Wire.frame(new Message.Ask("a-7", "Robot", "speed")));
+        assertThat(Wire.written(ch)).containsExactly(Message.ErrorReply.to("a-7", ErrorCode.NOT_AUTHENTICATED,
+                "Send 'hello' first: 'ask' before authentication."));
+        assertThat(ch.isOpen()).isFalse();
+    }
+
     @Test
     void garbageBytes_getFrameTooLargeAndClose() {
         ch.writeInbound(Unpooled.copiedBuffer("GET / HTTP/1.1\r\nHost: x\r\n\r\n", StandardCharsets.US_ASCII));
@@ -233,6 +242,40 @@ class GatewayHandlerTest {
         assertThat(kb.value("signal_scout_sonar", "value")).contains(Value.of(0.75));
         assertThat(kb.value("signal_scout_sonar", "source")).contains(Value.of("scout"));
         assertThat(kb.require("signal_scout_sonar").provenance()).isEqualTo(org.kicnp.core.Provenance.RUNTIME);
+    }
+
+    /**
+     * Robot 'arm' sensor 'left_grip' and robot 'arm_left' sensor 'grip' both map to 'signal_arm_left_grip': one
+     * agent's reading may not replace another's (and be retracted when the wrong agent leaves).
+     */
+    @Test
+    void sensorSignal_whoseFrameNameIsAnotherAgentsSignal_isRejectedAndKeepsThatSignal() {
+        ServerAgent[] two = new ServerAgent[1];
+        KnowledgeBase shared = KnowledgeBase.create();
+        EmbeddedChannel armLeft = Wire.channel(GatewayConfig.defaults(), AgentDirectory.empty().with("arm", "s")
+                .with("arm_left", "t"), shared, FeedbackListener.NONE, new GatewayMetrics(), two);
+        EmbeddedChannel arm = Wire.channel(GatewayConfig.defaults(), two[0], new GatewayMetrics());
+        try {
+            armLeft.writeInbound(Wire.frame(new Message.Hello("1", "arm_left", AgentKind.ROBOT, "t")));
+            arm.writeInbound(Wire.frame(new Message.Hello("1", "arm", AgentKind.ROBOT, "s")));
+            Wire.written(armLeft);
+            Wire.written(arm);
+            armLeft.writeInbound(Wire.frame(new Message.SensorSignal("arm_left", "grip", List.of(Value.of(true)))));
+
+            arm.writeInbound(Wire.frame(new Message.SensorSignal("arm", "left_grip", List.of(Value.of(false)))));
+
+            assertThat(Wire.written(arm)).singleElement().isInstanceOfSatisfying(Message.ErrorReply.class, e -> {
+                assertThat(e.code()).isEqualTo(ErrorCode.REJECTED);
+                assertThat(e.message()).isEqualTo("Sensor signal 'left_grip' from 'arm' was refused: its frame "
+                        + "'signal_arm_left_grip' holds sensor 'grip' of agent 'arm_left'; rename the sensor.");
+            });
+            assertThat(shared.value("signal_arm_left_grip", "value")).contains(Value.of(true));
+            arm.close();
+            assertThat(shared.value("signal_arm_left_grip", "source")).contains(Value.of("arm_left"));
+        } finally {
+            armLeft.finishAndReleaseAll();
+            arm.finishAndReleaseAll();
+        }
     }
 
     @Test

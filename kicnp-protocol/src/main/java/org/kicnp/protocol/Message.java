@@ -135,6 +135,12 @@ public sealed interface Message {
             requireNonNull(stage, "stage");
             requireNonNull(progress, "progress");
             requireNonNull(detail, "detail");
+            progress.ifPresent(p -> {
+                if (!(p >= 0.0 && p <= 1.0)) { // NaN too
+                    throw new IllegalArgumentException("The progress of command '" + id
+                            + "' must be a fraction from 0.0 to 1.0, not " + p + ".");
+                }
+            });
         }
 
         /** The same feedback stamped with the robot the server authenticated. */
@@ -158,6 +164,14 @@ public sealed interface Message {
             requireNonNull(source, "source");
             checkName(sensor, "sensor");
             values = List.copyOf(values);
+            for (int i = 0; i < values.size(); i++) {
+                Optional<Double> bad = nonFinite(values.get(i));
+                if (bad.isPresent()) {
+                    throw new IllegalArgumentException("Sensor '" + sensor + "' value #" + (i + 1) + " is " + bad.get()
+                            + ", which JSON cannot carry as a number: send a finite number, or a string or boolean "
+                            + "that says what the reading means.");
+                }
+            }
             requireNonNull(ttlMs, "ttlMs");
             ttlMs.ifPresent(ttl -> {
                 if (ttl < 1 || ttl > MAX_TTL_MS) {
@@ -165,6 +179,15 @@ public sealed interface Message {
                             + MAX_TTL_MS + " ms, not " + ttl + ".");
                 }
             });
+        }
+
+        /** The first NaN or infinite number in a value, at any depth of lists. */
+        private static Optional<Double> nonFinite(Value v) {
+            return switch (v) {
+                case Value.Real r when !Double.isFinite(r.value()) -> Optional.of(r.value());
+                case Value.Lst l -> l.items().stream().map(SensorSignal::nonFinite).flatMap(Optional::stream).findFirst();
+                default -> Optional.empty();
+            };
         }
 
         /** A signal that holds until the next one of the same sensor (no time to live). */

@@ -32,6 +32,9 @@ public final class MessageCodec {
             .configure(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES, false)
             .configure(DeserializationFeature.FAIL_ON_NULL_FOR_PRIMITIVES, true)
             .configure(DeserializationFeature.FAIL_ON_TRAILING_TOKENS, true)
+            // An enumerated member is one of its lower-case names; a number would be read as an index ("stage": 3 as
+            // failed), a member of the wrong JSON type taken silently.
+            .configure(DeserializationFeature.FAIL_ON_NUMBERS_FOR_ENUMS, true)
             // A number or boolean where the protocol wants a string (an id, a name, a frame) is a member of the wrong
             // JSON type, as the relay's own reader says; data binding would otherwise take 9 for "9".
             .withCoercionConfig(com.fasterxml.jackson.databind.type.LogicalType.Textual, c -> c
@@ -176,7 +179,7 @@ public final class MessageCodec {
         }
         JsonNode root = readTree(payload);
         JsonNode v = root.get("v");
-        if (v == null || !v.isIntegralNumber() || v.asLong() != VERSION) {
+        if (v == null || !v.isIntegralNumber() || !v.canConvertToLong() || v.asLong() != VERSION) {
             throw new ProtocolException(ErrorCode.UNSUPPORTED_VERSION,
                     "Protocol version " + (v == null ? "(missing)" : v.toString()) + " is not supported; this server speaks "
                             + VERSION + ".");
@@ -196,8 +199,24 @@ public final class MessageCodec {
             return mapper.treeToValue(body, type.recordClass());
         } catch (JacksonException | IllegalArgumentException e) {
             throw new ProtocolException(ErrorCode.BAD_MESSAGE,
-                    "Bad '" + typeName + "' message: " + rootMessage(e), e);
+                    "Bad '" + typeName + "' message: " + member(e) + rootMessage(e), e);
         }
+    }
+
+    /** "the member 'args.speed': " for a member data binding refused, so the agent learns which; else nothing. */
+    private static String member(Exception e) {
+        if (!(e instanceof com.fasterxml.jackson.databind.JsonMappingException m) || m.getPath().isEmpty()) {
+            return "";
+        }
+        StringBuilder path = new StringBuilder();
+        for (com.fasterxml.jackson.databind.JsonMappingException.Reference r : m.getPath()) {
+            if (r.getFieldName() != null) {
+                path.append(path.isEmpty() ? "" : ".").append(r.getFieldName());
+            } else if (r.getIndex() >= 0) {
+                path.append('[').append(r.getIndex()).append(']');
+            }
+        }
+        return path.isEmpty() ? "" : "the member '" + path + "': ";
     }
 
     private JsonNode readTree(byte[] payload) {
@@ -303,11 +322,17 @@ public final class MessageCodec {
     private static Message.Relay relay(ObjectNode b) {
         try {
             return new Message.Relay(text(b, "id"), text(b, "from"), optionalText(b, "toAgent"),
-                    optionalText(b, "toKind").map(k -> AgentKind.valueOf(k.toUpperCase(java.util.Locale.ROOT))),
+                    optionalText(b, "toKind").map(MessageCodec::kind),
                     text(b, "subject"), text(b, "body"));
         } catch (IllegalArgumentException e) {
             throw new ProtocolException(ErrorCode.BAD_MESSAGE, "Bad 'relay' message: " + e.getMessage(), e);
         }
+    }
+
+    private static AgentKind kind(String k) {
+        return java.util.Arrays.stream(AgentKind.values()).filter(a -> a.name().equalsIgnoreCase(k)).findFirst()
+                .orElseThrow(() -> new ProtocolException(ErrorCode.BAD_MESSAGE, "Bad 'relay' message: the member "
+                        + "'toKind' must be robot, user, service or peer, not '" + k + "'."));
     }
 
     private static String text(ObjectNode b, String name) {

@@ -152,6 +152,72 @@ class MessageCodecTest {
                 ErrorCode.BAD_JSON, "not valid JSON");
     }
 
+    /** An agent learns which member was wrong, not a Java type name alone. */
+    @Test
+    void decode_whenAMemberHasTheWrongJsonType_namesTheMember() {
+        assertCode("{\"v\":1,\"type\":\"query\",\"id\":{\"a\":1},\"ofClass\":\"Cup\"}", ErrorCode.BAD_MESSAGE,
+                "Bad 'query' message: the member 'id': ");
+        assertCode("{\"v\":1,\"type\":\"register\",\"id\":\"1\",\"capabilities\":\"<FRAME/>\"}",
+                ErrorCode.BAD_MESSAGE, "Bad 'register' message: the member 'capabilities': ");
+        assertCode("{\"v\":1,\"type\":\"sensor\",\"source\":\"a\",\"sensor\":\"sonar\",\"values\":[1],\"ttlMs\":\"250\"}",
+                ErrorCode.BAD_MESSAGE, "Bad 'sensor' message: the member 'ttlMs': ");
+        assertCode("{\"v\":1,\"type\":\"command\",\"id\":\"1\",\"robot\":\"scout\",\"action\":\"go\","
+                + "\"args\":{\"speed\":2}}", ErrorCode.BAD_MESSAGE, "Bad 'command' message: the member 'args.speed': ");
+        assertCode("{\"v\":1,\"type\":\"relay\",\"id\":\"1\",\"from\":\"a\",\"toKind\":\"toaster\",\"subject\":\"s\","
+                + "\"body\":\"b\"}", ErrorCode.BAD_MESSAGE,
+                "Bad 'relay' message: the member 'toKind' must be robot, user, service or peer, not 'toaster'.");
+    }
+
+    /** A number is not one of the lower-case names of an enumerated member; Jackson would take it as an index. */
+    @Test
+    void decode_whenAnEnumeratedMemberIsANumber_reportsBadMessageNamingIt() {
+        assertCode("{\"v\":1,\"type\":\"hello\",\"id\":\"1\",\"agent\":\"a\",\"kind\":0,\"token\":\"t\"}",
+                ErrorCode.BAD_MESSAGE, "Bad 'hello' message: the member 'kind': ");
+        assertCode("{\"v\":1,\"type\":\"feedback\",\"id\":\"c1\",\"robot\":\"a\",\"stage\":3,\"detail\":\"\"}",
+                ErrorCode.BAD_MESSAGE, "Bad 'feedback' message: the member 'stage': ");
+        assertCode("{\"v\":1,\"type\":\"error\",\"code\":5,\"message\":\"m\"}", ErrorCode.BAD_MESSAGE,
+                "Bad 'error' message: the member 'code': ");
+    }
+
+    /** A version too large for a long is not version 1 (its low 64 bits would be). */
+    @Test
+    void decode_whenVersionIsAHugeNumber_reportsUnsupportedVersion() {
+        assertCode("{\"v\":18446744073709551617,\"type\":\"ack\",\"id\":\"7\"}", ErrorCode.UNSUPPORTED_VERSION,
+                "Protocol version 18446744073709551617 is not supported");
+    }
+
+    /** Progress is the fraction done: "NaN" (which Jackson reads for a number), 1e400 (Infinity) or 7 are not one. */
+    @Test
+    void feedback_progress_isAFractionFromZeroToOne() {
+        String head = "{\"v\":1,\"type\":\"feedback\",\"id\":\"c1\",\"robot\":\"scout\",\"stage\":\"progress\",\"detail\":\"\"";
+        assertThat(decode(head + ",\"progress\":0.5}")).isEqualTo(new Message.Feedback("c1", "scout",
+                FeedbackStage.PROGRESS, Optional.of(0.5), ""));
+        assertThat(decode(head + ",\"progress\":1}")).isEqualTo(new Message.Feedback("c1", "scout",
+                FeedbackStage.PROGRESS, Optional.of(1.0), ""));
+        assertCode(head + ",\"progress\":\"NaN\"}", ErrorCode.BAD_MESSAGE,
+                "The progress of command 'c1' must be a fraction from 0.0 to 1.0, not NaN.");
+        assertCode(head + ",\"progress\":1e400}", ErrorCode.BAD_MESSAGE, "not Infinity.");
+        assertCode(head + ",\"progress\":7}", ErrorCode.BAD_MESSAGE, "not 7.0.");
+        assertCode(head + ",\"progress\":-0.5}", ErrorCode.BAD_MESSAGE, "not -0.5.");
+        assertThatThrownBy(() -> new Message.Feedback("c1", "scout", FeedbackStage.PROGRESS, Optional.of(50.0), ""))
+                .isInstanceOf(IllegalArgumentException.class).hasMessageContaining("not 50.0.");
+    }
+
+    /**
+     * JSON has no NaN or Infinity: 1e400 would become a float Infinity in the knowledge base, and a robot's NaN or
+     * Infinity reading (a range sensor with no return) would be written as the string "NaN", a TYPE_STR.
+     */
+    @Test
+    void sensor_valuesThatAreNotFiniteNumbers_areRefused() {
+        String head = "{\"v\":1,\"type\":\"sensor\",\"source\":\"a\",\"sensor\":\"range\",\"values\":";
+        assertCode(head + "[0.5,1e400]}", ErrorCode.BAD_MESSAGE, "Sensor 'range' value #2 is Infinity");
+        assertCode(head + "[[1.0,-1e400]]}", ErrorCode.BAD_MESSAGE, "Sensor 'range' value #1 is -Infinity");
+        assertThat(decode(head + "[\"NaN\",1e300]}")).isEqualTo(new Message.SensorSignal("a", "range",
+                List.of(Value.of("NaN"), Value.of(1e300))));
+        assertThatThrownBy(() -> new Message.SensorSignal("a", "range", List.of(Value.of(Double.NaN))))
+                .isInstanceOf(IllegalArgumentException.class).hasMessageContaining("Sensor 'range' value #1 is NaN");
+    }
+
     private Message decode(String json) {
         return codec.decode(json.getBytes(UTF_8));
     }
