@@ -3,10 +3,7 @@ package org.kicnp.cli;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
-import org.kicnp.core.Condition;
-import org.kicnp.core.DataType;
-import org.kicnp.core.Slot;
-import org.kicnp.core.Value;
+import org.kicnp.core.FrameScripts;
 import org.kicnp.core.xml.LoadError;
 import org.kicnp.core.xml.SourceLocation;
 import org.kicnp.core.xml.SourcedFrame;
@@ -22,8 +19,6 @@ import org.kicnp.script.ScriptSyntaxException;
  * ({@code onNeeded}, {@code onAdded}, {@code onRemoved}) and {@code js:} conditions.
  */
 final class ScriptSyntaxCheck {
-    private static final List<String> PROCEDURAL = List.of("onInstantiate", "onDestroy");
-
     /** A script's text, the phrase naming it in a message, and the frame it came with. */
     private record Source(String frame, String slot, String what, String text, SourcedFrame where) {
     }
@@ -35,19 +30,8 @@ final class ScriptSyntaxCheck {
     static List<LoadError> errors(List<SourcedFrame> frames) {
         List<Source> sources = new ArrayList<>();
         for (SourcedFrame sf : frames) {
-            String f = sf.frame().name();
-            for (Slot s : sf.frame().slots()) {
-                String of = " of slot '" + s.name() + "' of frame '" + f + "'";
-                if (PROCEDURAL.contains(s.name()) && s.type() == DataType.STRING) {
-                    add(sources, s, "The script in slot '" + s.name() + "' of frame '" + f + "'",
-                            s.effectiveValue().map(Value::text), sf);
-                }
-                add(sources, s, "The onNeeded demon" + of, s.onNeeded(), sf);
-                add(sources, s, "The onAdded demon" + of, s.onAdded(), sf);
-                add(sources, s, "The onRemoved demon" + of, s.onRemoved(), sf);
-                if (s.condition() instanceof Condition.Script c) {
-                    add(sources, s, "The js: condition" + of, Optional.of(c.source()), sf);
-                }
+            for (FrameScripts.Script script : FrameScripts.of(sf.frame())) {
+                sources.add(new Source(sf.frame().name(), script.slot().name(), script.what(), script.source(), sf));
             }
         }
         List<LoadError> errors = new ArrayList<>();
@@ -67,10 +51,5 @@ final class ScriptSyntaxCheck {
             }
         }
         return errors;
-    }
-
-    private static void add(List<Source> sources, Slot slot, String what, Optional<String> text, SourcedFrame where) {
-        text.filter(t -> !t.isBlank()).ifPresent(t -> sources.add(new Source(where.frame().name(), slot.name(), what, t,
-                where)));
     }
 }

@@ -5,12 +5,8 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
-import org.kicnp.core.Condition;
-import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
-import org.kicnp.core.Slot;
-import org.kicnp.core.Value;
+import org.kicnp.core.FrameScripts;
 import org.kicnp.script.ScriptConfig;
 import org.kicnp.script.ScriptId;
 import org.kicnp.script.ScriptRuntime;
@@ -23,9 +19,6 @@ import org.kicnp.script.ScriptSyntaxException;
  */
 final class ScriptCheck implements Features.Scripts, AutoCloseable {
     static final int MAX_SOURCE = 256 * 1024;
-    /** The paper's procedural slots: string slots whose value is a script. */
-    private static final List<String> PROCEDURAL = List.of("onInstantiate", "onDestroy");
-
     private ScriptRuntime runtime;
 
     @Override public boolean available() {
@@ -58,32 +51,15 @@ final class ScriptCheck implements Features.Scripts, AutoCloseable {
 
     @Override public List<ApiProblem> problems(Frame frame) {
         List<ApiProblem> problems = new ArrayList<>();
-        for (Slot s : frame.slots()) {
-            String of = " of slot '" + s.name() + "' of frame '" + frame.name() + "'";
-            if (PROCEDURAL.contains(s.name()) && s.type() == DataType.STRING) {
-                parse(frame, s, "The script in slot '" + s.name() + "' of frame '" + frame.name() + "'",
-                        s.effectiveValue().map(Value::text), problems);
-            }
-            parse(frame, s, "The onNeeded demon" + of, s.onNeeded(), problems);
-            parse(frame, s, "The onAdded demon" + of, s.onAdded(), problems);
-            parse(frame, s, "The onRemoved demon" + of, s.onRemoved(), problems);
-            if (s.condition() instanceof Condition.Script c) {
-                parse(frame, s, "The js: condition" + of, Optional.of(c.source()), problems);
+        for (FrameScripts.Script script : FrameScripts.of(frame)) {
+            try {
+                runtime().compile(new ScriptId(frame.name(), script.slot().name()), script.source());
+            } catch (ScriptSyntaxException e) {
+                problems.add(ApiProblem.of(frame.name(), script.slot().name(), script.what() + " has a syntax error "
+                        + "at line " + e.line() + ", column " + e.column() + ": " + e.parserMessage() + "."));
             }
         }
         return problems;
-    }
-
-    private void parse(Frame frame, Slot slot, String what, Optional<String> source, List<ApiProblem> problems) {
-        if (source.isEmpty() || source.get().isBlank()) {
-            return;
-        }
-        try {
-            runtime().compile(new ScriptId(frame.name(), slot.name()), source.get());
-        } catch (ScriptSyntaxException e) {
-            problems.add(ApiProblem.of(frame.name(), slot.name(), what + " has a syntax error at line " + e.line()
-                    + ", column " + e.column() + ": " + e.parserMessage() + "."));
-        }
     }
 
     private synchronized ScriptRuntime runtime() {
