@@ -230,6 +230,9 @@ public abstract class AgentBase implements AutoCloseable {
      * Reports a sensor signal; the server keeps the latest one as a {@code SensorSignal} frame.
      *
      * @throws IllegalArgumentException when a value is (or holds) NaN or an infinite number, which JSON cannot carry
+     * @throws NotConnectedException when the agent is not connected (after a lost connection, until it has registered
+     *     again; see {@link #isConnected()}): the reading is not sent, and a robot's sensing loop should catch this
+     *     and go on with its next reading
      */
     public final void sensor(String sensor, Value... values) {
         send(new Message.SensorSignal(name(), sensor, List.of(values)));
@@ -242,6 +245,7 @@ public abstract class AgentBase implements AutoCloseable {
      * knowledge base stops believing it.
      *
      * @throws IllegalArgumentException when {@code ttl} is out of that range
+     * @throws NotConnectedException when the agent is not connected, as {@link #sensor(String, Value...)}
      */
     public final void sensor(String sensor, Duration ttl, Value... values) {
         if (ttl.isNegative() || ttl.isZero() || ttl.compareTo(Duration.ofMillis(Message.SensorSignal.MAX_TTL_MS)) > 0
@@ -327,6 +331,8 @@ public abstract class AgentBase implements AutoCloseable {
      * Relays a message to one agent by name without waiting for the hub's {@code ack} (fire and forget: the relay
      * carries an empty id, so none is sent). A refusal, such as an unknown agent, arrives later as an error without
      * id and is logged. For a stream of messages where one round trip per message would be too slow.
+     *
+     * @throws NotConnectedException when the agent is not connected: the message is not sent
      */
     public final void tellTo(String agent, String subject, String body) {
         send(Message.Relay.toAgent("", name(), agent, subject, body));
@@ -560,7 +566,12 @@ public abstract class AgentBase implements AutoCloseable {
         pending.clear();
     }
 
-    /** Sends a message that expects no answer; dropped with a log line if the agent is not connected. */
+    /**
+     * Sends a message that expects no answer.
+     *
+     * @throws NotConnectedException when the agent is not connected, or the connection fails while sending (it is
+     *     then closed, and the agent reconnects)
+     */
     private void send(Message m) {
         Connection c = connection;
         if (c == null) {
