@@ -50,6 +50,28 @@ public record AgentOptions(String host, int port, String name, AgentKind kind, S
                 initial, max, maxFrameBytes, socketFactory);
     }
 
+    /** How long a request (query, assert, prove, …) waits for its answer. */
+    public AgentOptions withRequestTimeout(Duration timeout) {
+        return new AgentOptions(host, port, name, kind, token, timeout, heartbeatInterval, serverSilence,
+                backoffInitial, backoffMax, maxFrameBytes, socketFactory);
+    }
+
+    /**
+     * How often the agent sends a heartbeat when it has sent nothing else, and how long it tolerates hearing nothing
+     * from the server before it takes the connection for lost and reconnects: keep the silence above the server's
+     * heartbeat timeout's third (the server's heartbeat interval) with room to spare.
+     */
+    public AgentOptions withHeartbeat(Duration interval, Duration silence) {
+        return new AgentOptions(host, port, name, kind, token, requestTimeout, interval, silence, backoffInitial,
+                backoffMax, maxFrameBytes, socketFactory);
+    }
+
+    /** The largest frame the agent sends or accepts, in bytes (the server's limit is 1 MiB by default). */
+    public AgentOptions withMaxFrameBytes(int bytes) {
+        return new AgentOptions(host, port, name, kind, token, requestTimeout, heartbeatInterval, serverSilence,
+                backoffInitial, backoffMax, bytes, socketFactory);
+    }
+
     public AgentOptions withSocketFactory(SocketFactory factory) {
         return new AgentOptions(host, port, name, kind, token, requestTimeout, heartbeatInterval, serverSilence,
                 backoffInitial, backoffMax, maxFrameBytes, factory);

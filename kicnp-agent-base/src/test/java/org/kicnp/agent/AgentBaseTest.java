@@ -90,10 +90,8 @@ class AgentBaseTest {
     @Test
     void request_thatTheServerNeverAnswers_timesOutSayingWhichAndHowLong() throws Exception {
         try (ServerSocket server = new ServerSocket(0, 5, InetAddress.getLoopbackAddress())) {
-            AgentOptions o = AgentOptions.of("127.0.0.1", server.getLocalPort(), "alice", AgentKind.USER, "t");
-            o = new AgentOptions(o.host(), o.port(), o.name(), o.kind(), o.token(), Duration.ofMillis(300),
-                    o.heartbeatInterval(), o.serverSilence(), o.backoffInitial(), o.backoffMax(), o.maxFrameBytes(),
-                    o.socketFactory());
+            AgentOptions o = AgentOptions.of("127.0.0.1", server.getLocalPort(), "alice", AgentKind.USER, "t")
+                    .withRequestTimeout(Duration.ofMillis(300));
             Thread.ofVirtual().start(() -> {
                 try (Socket s = server.accept()) {
                     DataInputStream in = new DataInputStream(s.getInputStream());

@@ -132,9 +132,7 @@ public final class AgentCommand {
         } catch (IllegalArgumentException e) {
             throw new ParameterException(caller.commandLine(), e.getMessage());
         }
-        options = new AgentOptions(options.host(), options.port(), options.name(), options.kind(), options.token(),
-                timeout, options.heartbeatInterval(), options.serverSilence(), options.backoffInitial(),
-                options.backoffMax(), options.maxFrameBytes(), options.socketFactory());
+        options = options.withRequestTimeout(timeout);
         CliAgent agent = new CliAgent(options, hooks);
         try {
             agent.startAndAwait(timeout);

@@ -169,10 +169,8 @@ class PlatformLinkTest {
                     .slot(Slot.ofValue("text", DataType.STRING, Value.of("x".repeat(400)))).build()));
         }
         here.apply(many);
-        AgentOptions generous = AgentOptions.of("127.0.0.1", remote.port(), "lab-c", AgentKind.PEER, "c-token");
-        generous = new AgentOptions(generous.host(), generous.port(), generous.name(), generous.kind(),
-                generous.token(), generous.requestTimeout(), generous.heartbeatInterval(), generous.serverSilence(),
-                generous.backoffInitial(), generous.backoffMax(), 64 << 20, generous.socketFactory());
+        AgentOptions generous = AgentOptions.of("127.0.0.1", remote.port(), "lab-c", AgentKind.PEER, "c-token")
+                .withMaxFrameBytes(64 << 20);
 
         try (PlatformLink big = PlatformLink.connect(generous, Duration.ofSeconds(10))) {
             assertThatThrownBy(() -> big.push(here, Optional.of("Note")))
@@ -197,10 +195,8 @@ class PlatformLinkTest {
                     .slot(Slot.ofValue("text", DataType.STRING, Value.of("x".repeat(400)))).build()));
         }
         here.apply(many);
-        AgentOptions small = AgentOptions.of("127.0.0.1", remote.port(), "lab-c", AgentKind.PEER, "c-token");
-        small = new AgentOptions(small.host(), small.port(), small.name(), small.kind(), small.token(),
-                small.requestTimeout(), small.heartbeatInterval(), small.serverSilence(), small.backoffInitial(),
-                small.backoffMax(), 64 << 10, small.socketFactory());
+        AgentOptions small = AgentOptions.of("127.0.0.1", remote.port(), "lab-c", AgentKind.PEER, "c-token")
+                .withMaxFrameBytes(64 << 10);
 
         try (PlatformLink tight = PlatformLink.connect(small, Duration.ofSeconds(10))) {
             assertThatThrownBy(() -> tight.push(here, Optional.of("Note")))
