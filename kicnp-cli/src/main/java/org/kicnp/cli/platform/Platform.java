@@ -137,7 +137,7 @@ public final class Platform implements AutoCloseable {
             InferenceEngine e = engine;
             ticker.scheduleAtFixedRate(e::tick, 250, 250, TimeUnit.MILLISECONDS);
             GatewayServer g = gateway;
-            chat = new PlatformChat(gateway.port(), name -> tokenIn(agents, name), kb, log);
+            chat = new PlatformChat(gateway.port(), name -> tokenIn(agents, name), g::registeredAgents, kb, log);
             teleOperation = new PlatformTeleOperation(kb, log, g::registeredAgents, g::actionSink, e::cancelAction);
             LiveWorldView world = new LiveWorldView();
             Optional<EditorServer> editor = Optional.empty();

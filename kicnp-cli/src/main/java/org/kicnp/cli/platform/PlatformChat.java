@@ -2,12 +2,14 @@ package org.kicnp.cli.platform;
 
 import java.time.Duration;
 import java.time.Instant;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Consumer;
 import java.util.function.Function;
+import java.util.function.Supplier;
 import org.kicnp.agent.AgentBase;
 import org.kicnp.agent.AgentException;
 import org.kicnp.agent.AgentOptions;
@@ -36,6 +38,8 @@ final class PlatformChat implements ChatPort, AutoCloseable {
 
     private final int gatewayPort;
     private final Function<String, Optional<String>> tokens;
+    /** The agents registered with the gateway now, so a speaker already connected elsewhere is not taken over. */
+    private final Supplier<List<String>> registered;
     private final KnowledgeBase kb;
     private final EventLog log;
     private final Listeners<ChatLine> listeners = new Listeners<>();
@@ -44,9 +48,11 @@ final class PlatformChat implements ChatPort, AutoCloseable {
     /** What the robots' last line asked for, the same for every speaker in the room. */
     private volatile Expectation asked = Expectation.NONE;
 
-    PlatformChat(int gatewayPort, Function<String, Optional<String>> tokens, KnowledgeBase kb, EventLog log) {
+    PlatformChat(int gatewayPort, Function<String, Optional<String>> tokens, Supplier<List<String>> registered,
+                 KnowledgeBase kb, EventLog log) {
         this.gatewayPort = gatewayPort;
         this.tokens = tokens;
+        this.registered = registered;
         this.kb = kb;
         this.log = log;
         log.subscribe(robotSpeech);
@@ -65,6 +71,11 @@ final class PlatformChat implements ChatPort, AutoCloseable {
         String agent = agentName(speaker == null ? "" : speaker);
         String token = tokens.apply(agent).orElseThrow(() -> new IllegalArgumentException("The speaker '" + speaker
                 + "' is not known to the platform: the agent file has no token for '" + agent + "'."));
+        if (!microphones.containsKey(agent) && registered.get().contains(agent)) {
+            // Connecting under that name would replace the agent already there (the demo's User A at its terminal).
+            throw new IllegalArgumentException("'" + speaker + "' is connected already as agent '" + agent
+                    + "' (in the demo, at its terminal): speak there, or here as another person.");
+        }
         Microphone mic = microphones.computeIfAbsent(agent, a -> connect(a, speaker, token));
         log.record("user_said", Map.of("user", agent, "text", text));
         try {

@@ -135,6 +135,23 @@ class PlatformPortsTest {
     }
 
     @Test
+    void chat_asASpeakerWhoseAgentIsConnectedElsewhere_refusesTheLine_andLeavesThatConnectionAlone() throws Exception {
+        try (Platform platform = start();
+             UserAgent terminal = new UserAgent(options(platform, "userA", AgentKind.USER))) {
+            terminal.startAndAwait(Duration.ofSeconds(10));
+
+            assertThatThrownBy(() -> platform.chat().say("User A", "Tea, please."))
+                    .isInstanceOf(IllegalArgumentException.class)
+                    .hasMessage("'User A' is connected already as agent 'userA' (in the demo, at its terminal): "
+                            + "speak there, or here as another person.");
+            // Not superseded: the terminal's agent still talks to the server.
+            assertThat(terminal.isConnected()).isTrue();
+            assertThat(terminal.query("Robot")).isNotEmpty();
+            assertThat(platform.gateway().registeredAgents()).contains("userA");
+        }
+    }
+
+    @Test
     void teleOperation_whenACommandIsSent_theRobotReceivesItAndItsFeedbackAndJudgementFollow() throws Exception {
         try (Platform platform = start();
              PlatformTest.RecordingRobot scout = new PlatformTest.RecordingRobot(options(platform, "scout", AgentKind.ROBOT))) {
