@@ -54,6 +54,12 @@ final class Commands implements ActionSink {
 
     /** A command from a user agent: the answer for the user, an ack or why it could not be sent. */
     Message fromAgent(Session issuer, Command command) {
+        // As for cancel: robots act on commands and peers exchange knowledge; neither sends a robot orders.
+        if (issuer.kind() == AgentKind.ROBOT || issuer.kind() == AgentKind.PEER) {
+            return ErrorReply.to(command.id(), ErrorCode.FORBIDDEN, "Only user and service agents may send "
+                    + "commands; " + issuer + " is a " + issuer.kind().name().toLowerCase(java.util.Locale.ROOT)
+                    + " agent, so command '" + command.id() + "' to '" + command.robot() + "' was not sent.");
+        }
         return dispatch(command, Optional.of(issuer)).<Message>map(e -> e).orElseGet(() -> new Message.Ack(command.id()));
     }
 

@@ -362,6 +362,19 @@ class GatewayCancelTest {
         assertThatThrownBy(() -> walk.result(WAIT)).isInstanceOf(ActionFailedException.class);
     }
 
+    @Test
+    void aCommandFromARobot_isRefused_andNothingIsSent() throws Exception {
+        SlowRobot scout = connect(new SlowRobot(options("scout", AgentKind.ROBOT), false));
+
+        assertThatThrownBy(() -> scout.command("scout", "walk", Map.of()))
+                .isInstanceOfSatisfying(RequestRefusedException.class,
+                        e -> assertThat(e.code()).isEqualTo(ErrorCode.FORBIDDEN))
+                .hasMessageContaining("Only user and service agents may send commands;")
+                .hasMessageContaining("is a robot agent, so command '");
+        assertThat(scout.running.await(300, TimeUnit.MILLISECONDS)).as("no command reached a robot").isFalse();
+        assertThat(server.commandsInFlight()).isZero();
+    }
+
     /** Waits a little without holding a core: the agents' own threads are virtual and share two carriers here. */
     private static void pause() {
         try {
