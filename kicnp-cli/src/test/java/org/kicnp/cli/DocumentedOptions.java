@@ -18,12 +18,12 @@ import picocli.CommandLine;
  * README's table of verbs (written without {@code kicnp}). {@code docs/benchmarks.md} is left out: it records past
  * runs, with the options they had then.
  *
- * <p>Kept in step with the copy in kicnp-bench, which checks the {@code bench} verb against that module's model.
+ * <p>Public, and in kicnp-cli's test jar, for kicnp-bench's test of the {@code bench} verb against that module's model.
  */
-final class DocumentedOptions {
+public final class DocumentedOptions {
 
     /** One option named in a doc: where, the command line as written, the command it was read against. */
-    record Use(String place, String line, String command, String option, boolean known) {
+    public record Use(String place, String line, String command, String option, boolean known) {
         @Override public String toString() {
             return place + ": '" + option + "' is not an option of '" + command + "' in: " + line;
         }
@@ -37,7 +37,7 @@ final class DocumentedOptions {
     }
 
     /** README.md and every docs/*.md but benchmarks.md, from the repository root. */
-    static List<Path> docs(Path root) {
+    public static List<Path> docs(Path root) {
         List<Path> out = new ArrayList<>(List.of(root.resolve("README.md")));
         try (Stream<Path> s = Files.list(root.resolve("docs"))) {
             s.filter(p -> p.getFileName().toString().endsWith(".md"))
@@ -57,7 +57,7 @@ final class DocumentedOptions {
      * @param skipWords how many words of the command line to skip before matching sub-commands of {@code root}
      *                  (1 when {@code root} is the verb itself, as {@code kicnp bench}'s own command line is)
      */
-    static List<Use> uses(List<Path> docs, Path root, List<String> verbs, CommandLine rootCommand, int skipWords) {
+    public static List<Use> uses(List<Path> docs, Path root, List<String> verbs, CommandLine rootCommand, int skipWords) {
         List<Use> out = new ArrayList<>();
         for (Path doc : docs) {
             List<String> lines;
