@@ -205,18 +205,14 @@ class EditorBrowserTest {
     @Test void revert_afterSomeoneElseSavedTheFrame_showsTheFrameAsItNowIsAndTheNextSaveWorks() throws Exception {
         Browser browser = Browser.ready();
         KnowledgeBase kb = SampleKnowledge.create();
-        try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
-            browser.play("stale.e2e.mjs", server.port(), true, "browser-stale.log", 60);
-        }
+        browser.playOn(kb, "stale.e2e.mjs", true, "browser-stale.log");
         assertThat(kb.require("Robot").ownSlot("robotName").flatMap(Slot::role)).contains("my role after theirs");
     }
 
     @Test void save_afterTheLoginEndedInAnotherTab_offersTheLoginAgainAndKeepsTheEdit() throws Exception {
         Browser browser = Browser.ready();
         KnowledgeBase kb = SampleKnowledge.create();
-        try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
-            browser.play("session.e2e.mjs", server.port(), true, "browser-session.log", 60);
-        }
+        browser.playOn(kb, "session.e2e.mjs", true, "browser-session.log");
         assertThat(kb.require("Robot").ownSlot("robotName").flatMap(Slot::role)).contains("kept across the login");
     }
 
@@ -225,9 +221,7 @@ class EditorBrowserTest {
         KnowledgeBase kb = SampleKnowledge.create();
         kb.add(Frame.classFrame("Phrases").parent("System").slot(Slot.ofValue("lines", DataType.LIST,
                 new Value.Lst(List.of(Value.of("Hello, Ken"), Value.of("Bye"))))).build());
-        try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
-            browser.play("lists.e2e.mjs", server.port(), true, "browser-lists.log", 60);
-        }
+        browser.playOn(kb, "lists.e2e.mjs", true, "browser-lists.log");
         assertThat(kb.value("Phrases", "lines")).contains(new Value.Lst(List.of(Value.of("Hello, Ken"), Value.of("Bye"),
                 Value.of("See you"))));
     }
@@ -235,9 +229,7 @@ class EditorBrowserTest {
     @Test void newFrameAndRename_withUnsavedEdits_askFirstAndKeepTheEditsWhenDeclined() throws Exception {
         Browser browser = Browser.ready();
         KnowledgeBase kb = SampleKnowledge.create();
-        try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
-            browser.play("edits.e2e.mjs", server.port(), true, "browser-edits.log", 60);
-        }
+        browser.playOn(kb, "edits.e2e.mjs", true, "browser-edits.log");
         assertThat(kb.require("Robot").ownSlot("robotName").flatMap(Slot::role)).contains("not saved yet");
     }
 
@@ -245,18 +237,14 @@ class EditorBrowserTest {
         Browser browser = Browser.ready();
         KnowledgeBase kb = SampleKnowledge.create();
         kb.add(Frame.classFrame("world").parent("System").build());
-        try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
-            browser.play("address.e2e.mjs", server.port(), false, "browser-address.log", 60);
-        }
+        browser.playOn(kb, "address.e2e.mjs", false, "browser-address.log");
         assertThat(browser.artifacts().resolve("14-frame-named-world.png")).exists();
     }
 
     @Test void save_whileItsAnswerIsOnTheWay_keepsTheEditsTypedMeanwhileUnsavedUntilTheNextSave() throws Exception {
         Browser browser = Browser.ready();
         KnowledgeBase kb = SampleKnowledge.create();
-        try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD), kb)) {
-            browser.play("saving.e2e.mjs", server.port(), true, "browser-saving.log", 60);
-        }
+        browser.playOn(kb, "saving.e2e.mjs", true, "browser-saving.log");
         assertThat(kb.require("Robot").ownSlot("robotName").flatMap(Slot::role)).contains("second, typed during the save");
     }
 
@@ -289,6 +277,15 @@ class EditorBrowserTest {
             Path output = artifacts.resolve(log);
             int exit = run(e2e, List.of(node.toString(), script), env, output, seconds);
             assertThat(exit).as(Files.readString(output)).isZero();
+        }
+
+        /** As {@link #play}, for 60 s at most, against an editor over {@code kb} started for the run. */
+        void playOn(KnowledgeBase kb, String script, boolean withPassword, String log)
+                throws IOException, InterruptedException {
+            try (EditorServer server = EditorServer.start(EditorConfig.defaults().withPort(0).withPassword(PASSWORD),
+                    kb)) {
+                play(script, server.port(), withPassword, log, 60);
+            }
         }
     }
 

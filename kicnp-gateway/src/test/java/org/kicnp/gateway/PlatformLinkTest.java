@@ -161,14 +161,7 @@ class PlatformLinkTest {
     /** A push larger than the receiver's frame limit cannot be stored; the pusher must hear why, and nothing changes. */
     @Test
     void push_largerThanTheReceiversFrameLimit_failsSayingSoAndChangesNothing() {
-        java.util.List<org.kicnp.core.Change> many = new java.util.ArrayList<>();
-        many.add(new org.kicnp.core.Change.Add(Frame.classFrame("Note").slot(Slot.builder("text", DataType.STRING)
-                .build()).build()));
-        for (int i = 0; i < 3_000; i++) {
-            many.add(new org.kicnp.core.Change.Add(Frame.instance("note" + i, "Note")
-                    .slot(Slot.ofValue("text", DataType.STRING, Value.of("x".repeat(400)))).build()));
-        }
-        here.apply(many);
+        addNotes(here, 3_000);
         AgentOptions generous = AgentOptions.of("127.0.0.1", remote.port(), "lab-c", AgentKind.PEER, "c-token")
                 .withMaxFrameBytes(64 << 20);
 
@@ -187,14 +180,7 @@ class PlatformLinkTest {
      */
     @Test
     void push_largerThanThePushersFrameLimit_isNotSentAndTheLinkStaysUp() {
-        java.util.List<org.kicnp.core.Change> many = new java.util.ArrayList<>();
-        many.add(new org.kicnp.core.Change.Add(Frame.classFrame("Note").slot(Slot.builder("text", DataType.STRING)
-                .build()).build()));
-        for (int i = 0; i < 300; i++) {
-            many.add(new org.kicnp.core.Change.Add(Frame.instance("note" + i, "Note")
-                    .slot(Slot.ofValue("text", DataType.STRING, Value.of("x".repeat(400)))).build()));
-        }
-        here.apply(many);
+        addNotes(here, 300);
         AgentOptions small = AgentOptions.of("127.0.0.1", remote.port(), "lab-c", AgentKind.PEER, "c-token")
                 .withMaxFrameBytes(64 << 10);
 
@@ -212,14 +198,7 @@ class PlatformLinkTest {
     /** An answer longer than one message may carry is refused as such; the link stays up for smaller pulls. */
     @Test
     void pull_ofMoreThanOneMessageCarries_isRefusedSayingSoAndTheLinkStaysUp() {
-        java.util.List<org.kicnp.core.Change> many = new java.util.ArrayList<>();
-        many.add(new org.kicnp.core.Change.Add(Frame.classFrame("Note").slot(Slot.builder("text", DataType.STRING)
-                .build()).build()));
-        for (int i = 0; i < 3_000; i++) {
-            many.add(new org.kicnp.core.Change.Add(Frame.instance("note" + i, "Note")
-                    .slot(Slot.ofValue("text", DataType.STRING, Value.of("x".repeat(400)))).build()));
-        }
-        there.apply(many);
+        addNotes(there, 3_000);
         there.add(Frame.classFrame("Small").build());
 
         assertThatThrownBy(() -> link.pull(Optional.of("Note")))
@@ -238,5 +217,17 @@ class PlatformLinkTest {
 
         assertThat(link.pull(Optional.of("Vehicle"))).extracting(Frame::name)
                 .containsExactly("Vehicle", "Machine", "car1");
+    }
+
+    /** Adds class Note and {@code count} instances of it, 400 characters of text each, to {@code kb} in one batch. */
+    private static void addNotes(KnowledgeBase kb, int count) {
+        java.util.List<org.kicnp.core.Change> many = new java.util.ArrayList<>();
+        many.add(new org.kicnp.core.Change.Add(Frame.classFrame("Note").slot(Slot.builder("text", DataType.STRING)
+                .build()).build()));
+        for (int i = 0; i < count; i++) {
+            many.add(new org.kicnp.core.Change.Add(Frame.instance("note" + i, "Note")
+                    .slot(Slot.ofValue("text", DataType.STRING, Value.of("x".repeat(400)))).build()));
+        }
+        kb.apply(many);
     }
 }

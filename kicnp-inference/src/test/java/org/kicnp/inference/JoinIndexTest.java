@@ -111,11 +111,7 @@ class JoinIndexTest {
     @Test
     void constantCondition_afterANonReactiveSlotChanged_newPartnersMeetTheInstanceAsItIsNow() {
         Fixture f = new Fixture();
-        f.kb.add(Frame.classFrame("User").slot(Slot.builder("age", DataType.INTEGER).reactive(false).build()).build());
-        f.cls("Mouth", null);
-        f.kb.add(Frame.classFrame("Talk").slot(Slot.builder("mUser", DataType.INSTANCE).argument("User").required(true)
-                        .condition(org.kicnp.core.ConditionParser.parse(".age >= 18")).build())
-                .slot(Slot.builder("mMouth", DataType.INSTANCE).argument("Mouth").required(true).build()).build());
+        adultTalk(f);
         InferenceEngine e = f.engine();
         f.assertFact("adult", "User", "age", 20L);
         f.assertFact("child", "User", "age", 10L);
@@ -138,11 +134,7 @@ class JoinIndexTest {
     @Test
     void waitingActivation_whenANonReactiveChangeMakesItsConditionFalse_doesNotFire_andOneStillTrueDoes() {
         Fixture f = new Fixture();
-        f.kb.add(Frame.classFrame("User").slot(Slot.builder("age", DataType.INTEGER).reactive(false).build()).build());
-        f.cls("Mouth", null);
-        f.kb.add(Frame.classFrame("Talk").slot(Slot.builder("mUser", DataType.INSTANCE).argument("User").required(true)
-                        .condition(org.kicnp.core.ConditionParser.parse(".age >= 18")).build())
-                .slot(Slot.builder("mMouth", DataType.INSTANCE).argument("Mouth").required(true).build()).build());
+        adultTalk(f);
         InferenceEngine e = f.engine();
         f.assertFact("ann", "User", "age", 20L);
         f.assertFact("bob", "User", "age", 30L);
@@ -218,5 +210,14 @@ class JoinIndexTest {
         assertThat(e.runToQuiescence()).as("Far read s1.key through h1; 2 != 1 now").isZero();
         assertThat(f.traced(TraceEvent.Blocked.class)).singleElement()
                 .satisfies(b -> assertThat(b.reason()).startsWith("the condition of slot 'mT' no longer holds"));
+    }
+
+    /** User (a non-reactive age), Mouth, and Talk binding a User of 18 or more to a Mouth. */
+    private static void adultTalk(Fixture f) {
+        f.kb.add(Frame.classFrame("User").slot(Slot.builder("age", DataType.INTEGER).reactive(false).build()).build());
+        f.cls("Mouth", null);
+        f.kb.add(Frame.classFrame("Talk").slot(Slot.builder("mUser", DataType.INSTANCE).argument("User").required(true)
+                        .condition(org.kicnp.core.ConditionParser.parse(".age >= 18")).build())
+                .slot(Slot.builder("mMouth", DataType.INSTANCE).argument("Mouth").required(true).build()).build());
     }
 }
