@@ -4,7 +4,6 @@ import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -78,7 +77,7 @@ final class Bag {
                 o.put("agent", s.agent());
                 o.put("sensor", s.sensor());
                 ArrayNode values = o.putArray("values");
-                s.values().forEach(v -> values.add(json(v)));
+                s.values().forEach(v -> values.add(ValueJson.toJson(v)));
                 s.ttlMs().ifPresent(ttl -> o.put("ttlMs", ttl));
             }
             case Removal r -> {
@@ -96,23 +95,6 @@ final class Bag {
             }
         }
         return o.toString();
-    }
-
-    /** A slot value as the protocol writes it: text, number, boolean, array, or {"ref": "frame"}. */
-    static JsonNode json(Value v) {
-        JsonNodeFactory n = JsonNodeFactory.instance;
-        return switch (v) {
-            case Value.Str s -> n.textNode(s.value());
-            case Value.Int i -> n.numberNode(i.value());
-            case Value.Real r -> n.numberNode(r.value());
-            case Value.Bool b -> n.booleanNode(b.value());
-            case Value.Ref r -> n.objectNode().put("ref", r.frame());
-            case Value.Lst l -> {
-                ArrayNode a = n.arrayNode();
-                l.items().forEach(item -> a.add(json(item)));
-                yield a;
-            }
-        };
     }
 
     private static String event(ChangeKind c) {

@@ -6,6 +6,7 @@ import com.fasterxml.jackson.databind.DeserializationContext;
 import com.fasterxml.jackson.databind.JsonDeserializer;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.JsonSerializer;
+import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializerProvider;
 import com.fasterxml.jackson.databind.module.SimpleModule;
 import java.io.IOException;
@@ -51,6 +52,14 @@ public final class ValueJson {
         }
         throw refuse.apply(node);
     }
+
+    /** A slot value in its JSON form, as the protocol writes it (the inverse of {@link #fromJson}). */
+    public static JsonNode toJson(Value v) {
+        return TREES.valueToTree(v);
+    }
+
+    /** Only for {@link #toJson}: the same writer as the protocol's messages use. */
+    private static final ObjectMapper TREES = new ObjectMapper().registerModule(module());
 
     static SimpleModule module() {
         SimpleModule m = new SimpleModule("kicnp-values");
