@@ -1,8 +1,5 @@
 package org.kicnp.cli;
 
-import java.io.IOException;
-import java.io.UncheckedIOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -10,7 +7,6 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.function.Function;
 import java.util.stream.Collectors;
-import java.util.stream.Stream;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeException;
 import org.kicnp.core.store.KnowledgeStore;
@@ -35,26 +31,6 @@ final class JournalCheck {
     }
 
     private JournalCheck() {
-    }
-
-    /** Whether {@code dir} has a journal that still holds something (or an interrupted compaction to finish). */
-    static boolean hasJournal(Path dir) {
-        Path meta = dir.resolve(KnowledgeStore.META_DIR);
-        if (!Files.isDirectory(meta)) {
-            return false;
-        }
-        try (Stream<Path> files = Files.list(meta)) {
-            return files.anyMatch(p -> {
-                String name = p.getFileName().toString();
-                try {
-                    return name.equals("compaction") || name.startsWith("journal-") && Files.size(p) > 0;
-                } catch (IOException e) {
-                    return true; // unreadable: let the open say what is wrong
-                }
-            });
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
     }
 
     /** Opens {@code dir} as the platform would and compares its frames with {@code fromFiles}, the XML files alone. */

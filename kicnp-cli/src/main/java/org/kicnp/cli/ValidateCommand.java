@@ -93,7 +93,7 @@ public final class ValidateCommand implements Callable<Integer> {
             if (!scriptErrors.isEmpty()) {
                 return failed(out, scriptErrors, files, "");
             }
-            List<Path> journaled = paths.stream().filter(Files::isDirectory).filter(JournalCheck::hasJournal).toList();
+            List<Path> journaled = paths.stream().filter(Files::isDirectory).filter(KnowledgeStore::hasPendingChanges).toList();
             if (paths.size() == 1 && journaled.size() == 1) {
                 return withJournal(out, journaled.get(0), loaded, files);
             }

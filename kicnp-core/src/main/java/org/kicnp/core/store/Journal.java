@@ -56,6 +56,11 @@ final class Journal implements AutoCloseable {
      * end of the newest segment was never acknowledged (its append did not return), so it is cut off with a warning.
      * Damage anywhere else is not what a crash leaves and is reported rather than guessed around.
      */
+    /** Whether {@code name} is the file name of a journal segment. */
+    static boolean isSegment(String name) {
+        return SEGMENT.matcher(name).matches();
+    }
+
     static Journal open(Path dir, Disk disk, List<Entry> entries) throws IOException {
         TreeMap<Long, Path> segments = new TreeMap<>();
         try (Stream<Path> files = Files.list(dir)) {

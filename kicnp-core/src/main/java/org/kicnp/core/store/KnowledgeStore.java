@@ -3,6 +3,8 @@ package org.kicnp.core.store;
 import static java.util.Objects.requireNonNull;
 
 import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
@@ -13,6 +15,7 @@ import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.locks.ReentrantLock;
+import java.util.stream.Stream;
 import org.kicnp.core.Frame;
 import org.kicnp.core.FrameEvent;
 import org.kicnp.core.KnowledgeBase;
@@ -61,6 +64,30 @@ public final class KnowledgeStore implements AutoCloseable {
             t.setDaemon(true);
             return t;
         }) : null;
+    }
+
+    /**
+     * Whether opening {@code dir} would find more than its XML files: a journal segment that holds something, or an
+     * interrupted compaction to finish (an unreadable segment counts, so that the open says what is wrong with it).
+     * Reads the directory only; opens nothing.
+     */
+    public static boolean hasPendingChanges(Path dir) {
+        Path meta = dir.resolve(META_DIR);
+        if (!Files.isDirectory(meta)) {
+            return false;
+        }
+        try (Stream<Path> files = Files.list(meta)) {
+            return files.anyMatch(p -> {
+                String name = p.getFileName().toString();
+                try {
+                    return name.equals(Manifest.FILE) || Journal.isSegment(name) && Files.size(p) > 0;
+                } catch (IOException e) {
+                    return true;
+                }
+            });
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
     }
 
     /** Opens (creating if needed) the knowledge directory with the {@link StoreOptions#defaults() default options}. */
