@@ -45,6 +45,8 @@ public final class KnowledgeBase {
     private final ConcurrentLinkedQueue<ChangeSet> undelivered = new ConcurrentLinkedQueue<>();
     private final ReentrantLock delivery = new ReentrantLock();
     private long version;
+    /** Adds made by {@link PlainInstanceAdd}, for tests that must know the short cut was taken. */
+    private long plainAdds;
 
     private KnowledgeBase(CommitLog commitLog) {
         this.commitLog = requireNonNull(commitLog, "commitLog");
@@ -234,6 +236,11 @@ public final class KnowledgeBase {
         return read(() -> node(name).revision);
     }
 
+    /** How many adds {@link PlainInstanceAdd} made (a test's view of which path an add took). */
+    long plainAdds() {
+        return read(() -> plainAdds);
+    }
+
     /** The number of batches committed so far. */
     public long version() {
         return read(() -> version);
@@ -256,8 +263,26 @@ public final class KnowledgeBase {
      * @param referred frames {@code frame} may refer to; nulls are skipped
      */
     public ChangeSet add(Frame frame, Frame... referred) {
+        requireNonNull(frame, "frame");
         requireNonNull(referred, "referred");
-        return apply(List.of(new Change.Add(frame)), referred);
+        ChangeSet committed;
+        lock.writeLock().lock();
+        try {
+            // The engine's usual add, a plain derived instance, is checked and indexed without staging a batch.
+            FrameEvent.Added quick = PlainInstanceAdd.tryAdd(frame, nodes, classes, referred, version + 1);
+            if (quick != null) {
+                plainAdds++;
+                version++;
+                committed = new ChangeSet(version, List.of(quick));
+                undelivered.add(committed);
+            } else {
+                committed = commit(List.of(new Change.Add(frame)), referred);
+            }
+        } finally {
+            lock.writeLock().unlock();
+        }
+        deliver();
+        return committed;
     }
 
     public ChangeSet replace(Frame frame) {

@@ -1,0 +1,201 @@
+package org.kicnp.core;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+
+/**
+ * {@link KnowledgeBase#add(Frame, Frame...)} takes a short cut ({@link PlainInstanceAdd}) for the plain instances an
+ * engine derives; whatever it is given, it must end exactly as the general path, {@code apply} of the same add, does:
+ * the same refusal, the same frames, indexes and revisions. Checked on random frames of every shape near the plain
+ * one (wrong classes, missing or removed targets, undeclared or mistyped slots, durable frames, parts, links, own
+ * arguments, taken names), with random removals and class edits between them.
+ */
+class PlainInstanceAddTest {
+    private static final List<String> NAMES = List.of("P1", "P2", "P3", "P4", "P5", "P6", "s1", "Pair");
+    private static final List<String> PARENTS = List.of("Pair", "Pair", "Pair", "Triple", "Triple", "Derived", "StimA",
+            "Thing", "inst", "Ghost");
+    private static final List<String> SLOTS = List.of("mA", "mB", "mC", "key", "extra");
+
+    /** Thing; Stim (key) below it with StimA, StimB; Derived; Pair (mA: StimA, mB: StimB); Triple, a Pair (mC). */
+    private static KnowledgeBase kb() {
+        KnowledgeBase kb = KnowledgeBase.create();
+        kb.apply(List.of(
+                new Change.Add(Frames.root("Thing")),
+                new Change.Add(Frame.classFrame("Stim").parent("Thing")
+                        .slot(Slot.builder("key", DataType.INTEGER).build()).build()),
+                new Change.Add(Frames.cls("StimA", "Stim")),
+                new Change.Add(Frames.cls("StimB", "Stim")),
+                new Change.Add(Frames.root("Derived")),
+                new Change.Add(Frame.classFrame("Pair").parent("Derived")
+                        .slot(Frames.instanceSlot("mA", "StimA")).slot(Frames.instanceSlot("mB", "StimB")).build()),
+                new Change.Add(Frame.classFrame("Triple").parent("Pair")
+                        .slot(Frames.instanceSlot("mC", "Stim")).build()),
+                new Change.Add(Frame.instance("inst", "Thing").build())));
+        for (int i = 1; i <= 6; i++) {
+            kb.add(stimulus("s" + i, i % 2 == 0 ? "StimB" : "StimA"));
+        }
+        return kb;
+    }
+
+    private static Frame stimulus(String name, String cls) {
+        return Frame.instance(name, cls).provenance(Provenance.RUNTIME)
+                .slot(Slot.ofValue("key", DataType.INTEGER, Value.of(1))).build();
+    }
+
+    @Test
+    void add_ofRandomFramesNearThePlainShape_endsAsTheGeneralPath() {
+        long plain = 0;
+        for (long seed = 1; seed <= 40; seed++) {
+            plain += run(new Random(seed));
+        }
+        // Most candidates are plain and valid; the short cut must have served a good share of them.
+        assertThat(plain).as("adds the short cut made").isGreaterThan(150);
+    }
+
+    @Test
+    void add_ofAPlainDerivedInstance_takesTheShortCutOnceItsClassIsChecked() {
+        KnowledgeBase kb = kb();
+        kb.add(pair("P1", "s1", "s2")); // the general path: checks Pair and remembers it
+        long before = kb.plainAdds();
+        kb.add(pair("P2", "s3", "s4"), kb.require("s3"), kb.require("s4"));
+        assertThat(kb.plainAdds()).isEqualTo(before + 1);
+        assertThat(kb.instancesOf("Derived")).extracting(Frame::name).containsExactly("P1", "P2");
+        assertThat(kb.children("Pair")).extracting(Frame::name).containsExactly("Triple", "P1", "P2");
+        assertThat(kb.referrers("s3")).containsExactly("P2");
+        assertThat(kb.revision("P2")).isEqualTo(kb.version());
+    }
+
+    private static Frame pair(String name, String a, String b) {
+        return Frame.instance(name, "Pair").provenance(Provenance.RUNTIME)
+                .slot(Slot.builder("mA", DataType.INSTANCE).value(Value.ref(a)).build())
+                .slot(Slot.builder("mB", DataType.INSTANCE).value(Value.ref(b)).build()).build();
+    }
+
+    /** One random sequence of 80 steps on twin knowledge bases; returns how many adds took the short cut. */
+    private static long run(Random r) {
+        KnowledgeBase quick = kb();
+        KnowledgeBase general = kb();
+        List<Frame> removed = new ArrayList<>();
+        for (int step = 0; step < 80; step++) {
+            int what = r.nextInt(20);
+            if (what == 0) {
+                // a class edit: the knowledge base forgets what it knew of its classes
+                Frame note = Frame.classFrame("Note").parent("Thing")
+                        .slot(Frames.str("text", "step " + step)).build();
+                for (KnowledgeBase kb : List.of(quick, general)) {
+                    kb.put(note);
+                }
+            } else if (what <= 2 && !quick.instancesOf("Thing").isEmpty()) {
+                List<Frame> live = quick.instancesOf("Thing");
+                Frame victim = live.get(r.nextInt(live.size()));
+                String a = outcome(() -> quick.remove(victim.name()));
+                String b = outcome(() -> general.remove(victim.name()));
+                assertThat(a).isEqualTo(b);
+                if (a.equals("done")) {
+                    removed.add(victim);
+                }
+            } else {
+                Frame f = candidate(r, quick);
+                Frame[] referred = referred(r, quick, removed);
+                String expected = outcome(() -> general.apply(List.of(new Change.Add(f))));
+                String actual = outcome(() -> quick.add(f, referred));
+                assertThat(actual).as("add of %s", f).isEqualTo(expected);
+            }
+            assertSameState(quick, general);
+        }
+        return quick.plainAdds();
+    }
+
+    private static Frame candidate(Random r, KnowledgeBase kb) {
+        String parent = pick(r, PARENTS);
+        String name = pick(r, NAMES) + (r.nextInt(4) == 0 ? "" : "_" + r.nextInt(1000));
+        Frame.Builder b = Frame.instance(name.equals(parent) ? name + "_0" : name, parent)
+                .provenance(r.nextInt(12) == 0 ? Provenance.DECLARED : Provenance.RUNTIME);
+        List<String> slots = new ArrayList<>(parent.equals("Triple") ? List.of("mA", "mB", "mC") : List.of("mA", "mB"));
+        if (r.nextInt(6) == 0) {
+            slots.add(pick(r, SLOTS));
+        }
+        if (r.nextInt(8) == 0) {
+            slots.remove(r.nextInt(slots.size()));
+        }
+        List<String> targets = new ArrayList<>(kb.instancesOf("Thing").stream().map(Frame::name).toList());
+        targets.addAll(List.of("Ghost", "Pair", "StimA", "inst"));
+        for (String s : slots.stream().distinct().toList()) {
+            int shape = r.nextInt(24);
+            Slot.Builder sb = switch (shape) {
+                case 0 -> Slot.builder(s, DataType.INTEGER).value(Value.of(7));
+                case 1 -> Slot.builder(s, DataType.INSTANCE).value(Value.ref(pick(r, targets))).argument("Stim");
+                case 2 -> Slot.builder(s, DataType.INSTANCE).defaultValue(Value.ref(pick(r, targets)));
+                case 3 -> Slot.builder(s, DataType.LIST).value(new Value.Lst(List.of(Value.ref(pick(r, targets)))));
+                case 4 -> Slot.builder(s, DataType.INSTANCE).value(Value.ref(pick(r, targets)))
+                        .condition(ConditionParser.parse(".key == 1"));
+                default -> Slot.builder(s, DataType.INSTANCE).value(Value.ref(
+                        r.nextInt(3) == 0 ? pick(r, targets) : plausible(r, kb, s)));
+            };
+            b.slot(sb.build());
+        }
+        if (r.nextInt(15) == 0) {
+            b.part("s1");
+        }
+        if (r.nextInt(15) == 0) {
+            b.linkTo(Relation.Coordination.SUCCESSION, "Pair");
+        }
+        return b.build();
+    }
+
+    /** A live instance of the class slot {@code s} asks for, where there is one. */
+    private static String plausible(Random r, KnowledgeBase kb, String s) {
+        String cls = switch (s) {
+            case "mA" -> "StimA";
+            case "mB" -> "StimB";
+            default -> "Stim";
+        };
+        List<Frame> fits = kb.instancesOf(cls);
+        return fits.isEmpty() ? "Ghost" : fits.get(r.nextInt(fits.size())).name();
+    }
+
+    /** Frames at hand: some live, some removed since, some from another knowledge base; nulls too. */
+    private static Frame[] referred(Random r, KnowledgeBase kb, List<Frame> removed) {
+        List<Frame> live = kb.frames();
+        Frame[] out = new Frame[r.nextInt(4)];
+        for (int i = 0; i < out.length; i++) {
+            int from = r.nextInt(10);
+            out[i] = from == 0 || removed.isEmpty() && from < 3 ? null
+                    : from < 3 ? removed.get(r.nextInt(removed.size()))
+                    : from == 3 ? kb().require("s" + (1 + r.nextInt(6)))
+                    : live.get(r.nextInt(live.size()));
+        }
+        return out;
+    }
+
+    private static String pick(Random r, List<String> from) {
+        return from.get(r.nextInt(from.size()));
+    }
+
+    private static String outcome(Runnable change) {
+        try {
+            change.run();
+            return "done";
+        } catch (KnowledgeException e) {
+            return e.getClass().getSimpleName() + ": " + e.getMessage();
+        }
+    }
+
+    private static void assertSameState(KnowledgeBase quick, KnowledgeBase general) {
+        assertThat(quick.frames()).isEqualTo(general.frames());
+        assertThat(quick.version()).isEqualTo(general.version());
+        for (Frame f : general.frames()) {
+            String n = f.name();
+            assertThat(quick.revision(n)).as("revision of %s", n).isEqualTo(general.revision(n));
+            assertThat(quick.referrers(n)).as("referrers of %s", n).isEqualTo(general.referrers(n));
+            assertThat(quick.children(n)).as("children of %s", n).isEqualTo(general.children(n));
+            if (f.isClass()) {
+                assertThat(quick.instancesOf(n)).as("instances of %s", n).isEqualTo(general.instancesOf(n));
+            }
+        }
+    }
+}
