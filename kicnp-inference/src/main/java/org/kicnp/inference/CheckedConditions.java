@@ -1,6 +1,6 @@
 package org.kicnp.inference;
 
-import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -22,32 +22,28 @@ final class CheckedConditions {
      */
     static List<Derivation.CheckedCondition> of(Rule r, Map<String, String> binding, FactView.Fact[] refs,
             FactView facts, Conditions conditions) {
-        List<Derivation.CheckedCondition> out = new ArrayList<>(r.patterns().size());
-        List<SlotPattern> required = r.required();
-        for (SlotPattern p : r.patterns()) {
-            String fact = binding.get(p.slot());
+        List<SlotPattern> patterns = r.patterns(); // the required slots in order, then the optional ones
+        Derivation.CheckedCondition[] out = new Derivation.CheckedCondition[patterns.size()];
+        int count = 0;
+        for (int i = 0, n = patterns.size(); i < n; i++) {
+            SlotPattern p = patterns.get(i);
+            FactView.Fact record = i < refs.length ? refs[i] : null; // refs follow the required slots' order
+            String fact = record != null ? record.name : binding.get(p.slot());
             if (fact == null) {
                 continue;
             }
             List<String> path = p.condition().testedPath().orElse(null);
             String value = fact;
             if (path != null) {
-                int at = positionOf(required, p);
-                Optional<Value> v = at >= 0 && at < refs.length && refs[at].name.equals(fact)
-                        ? facts.follow(refs[at], path, conditions) : conditions.follow(Value.ref(fact), path);
-                value = v.map(Value::text).orElse(fact);
+                Optional<Value> v = record != null ? facts.follow(record, path, conditions)
+                        : conditions.follow(Value.ref(fact), path);
+                if (v.isPresent()) {
+                    value = v.get().text();
+                }
             }
-            out.add(new Derivation.CheckedCondition(p.slot(), p.conditionText(), value));
+            out[count++] = new Derivation.CheckedCondition(p.slot(), p.conditionText(), value);
         }
-        return out;
+        return count == out.length ? List.of(out) : List.of(Arrays.copyOf(out, count));
     }
 
-    private static int positionOf(List<SlotPattern> required, SlotPattern p) {
-        for (int i = 0; i < required.size(); i++) {
-            if (required.get(i) == p) {
-                return i;
-            }
-        }
-        return -1;
-    }
 }

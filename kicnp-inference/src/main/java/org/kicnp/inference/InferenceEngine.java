@@ -58,6 +58,14 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
     private final KnowledgeListener listener = this::changed;
     private final Optional<Executor> runner;
     private final AtomicBoolean scheduled = new AtomicBoolean();
+    /** Whether {@link #runToQuiescence()} is running on the thread that holds {@link #lock}; read under it only. */
+    private boolean running;
+    /**
+     * A change set of the engine's own commit during a run (a firing's instance), held for the run's next drain
+     * instead of going through {@link #inbox}: nothing was queued before it, and the run drains it before anything
+     * queued after it. Null: none. Read and written under {@link #lock} only.
+     */
+    private ChangeSet own;
     private long actionIds;
 
     private InferenceEngine(KnowledgeBase kb, EngineOptions options, ScriptHost host, ActionSink sink, Clock clock,
@@ -190,6 +198,8 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
      */
     public int runToQuiescence() {
         lock.lock();
+        boolean outer = !running;
+        running = true;
         try {
             int count = 0;
             // Firings per frame, for the limit's message: a counter each, not an Integer boxed per firing.
@@ -201,7 +211,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
                 Optional<Activation> next = forward.next();
                 if (next.isEmpty()) {
                     actions.releaseSynchronized();
-                    if (inbox.isEmpty()) {
+                    if (own == null && inbox.isEmpty()) {
                         return count;
                     }
                     continue;
@@ -222,6 +232,14 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
                 forward.fire(next.get());
             }
         } finally {
+            if (outer) {
+                running = false;
+                if (own != null) { // a run that ended by an exception: the change set waits in the queue as any other
+                    ChangeSet cs = own;
+                    own = null;
+                    submit(() -> forward.process(cs));
+                }
+            }
             lock.unlock();
         }
     }
@@ -260,6 +278,10 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
     }
 
     private void changed(ChangeSet cs) {
+        if (lock.isHeldByCurrentThread() && running && own == null && inbox.isEmpty()) {
+            own = cs; // the run's own commit: its next drain takes it first, with no queue between
+            return;
+        }
         submit(() -> forward.process(cs));
     }
 
@@ -280,8 +302,17 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
     }
 
     private void drain() {
-        Runnable r;
-        while ((r = inbox.poll()) != null) {
+        while (true) {
+            if (own != null) { // nothing is queued before it (see changed)
+                ChangeSet cs = own;
+                own = null;
+                forward.process(cs);
+                continue;
+            }
+            Runnable r = inbox.poll();
+            if (r == null) {
+                return;
+            }
             r.run();
         }
     }

@@ -67,8 +67,12 @@ final class Supports {
     FactView.Fact record(Derivation d, Optional<Rule> rule, FactView.Fact[] known) {
         FactView.Fact self = facts.touch(d.instance());
         self.derivation = d;
-        for (String support : d.binding().values()) { // d.supports() without making its list
-            recordOf(support, known).dependent(d.instance());
+        Binding b = (Binding) d.binding(); // always one (Derivation makes it); d.supports() without its list
+        for (int i = 0, n = b.width(); i < n; i++) {
+            String support = b.factAt(i);
+            // A firing's known records are its required slots' facts, in the binding's order: usually no search.
+            FactView.Fact r = i < known.length && known[i].name == support ? known[i] : recordOf(support, known);
+            r.dependent(d.instance());
         }
         d.createdBy().ifPresent(c -> recordOf(c, known).dependent(d.instance()));
         rule.filter(r -> r.claims()).ifPresent(r -> claim(r, d));
