@@ -20,6 +20,10 @@ from .world import BusyError, World
 
 log = logging.getLogger("kicnp_sim.protocol")
 MAX_STEP_S = 3600.0
+# Characters (code points) of one line, either way. The platform's JSON reader (Jackson) refuses a string longer than
+# 20,000,000 UTF-16 units and would drop the whole event, leaving the request it answers waiting for its timeout; half
+# that, in code points, can never reach it, even when every character needs two units.
+MAX_LINE = 10_000_000
 SELF_ACK = ("command", "query", "step")  # handlers that send their own ack at the right moment
 MARGIN = 0.1  # positions must be at least this far inside the walls
 
@@ -35,8 +39,20 @@ class ProtocolError(Exception):
 
 
 def encode(event: dict[str, Any]) -> str:
-    """One event as one compact JSON line (no newline)."""
-    return json.dumps(event, separators=(",", ":"), ensure_ascii=False, allow_nan=False)
+    """One event as one compact JSON line (no newline).
+
+    An event whose line would be longer than MAX_LINE is not sent: an ``error`` event with its id (if it has one) says
+    so instead, so that a request waiting for it fails at once, with the reason, rather than at its timeout."""
+    line = json.dumps(event, separators=(",", ":"), ensure_ascii=False, allow_nan=False)
+    if len(line) <= MAX_LINE:
+        return line
+    req_id = event.get("id")
+    what = f"request {req_id!r}: its {event['type']} event" if req_id is not None else f"a {event['type']} event"
+    message = (f"{what} would be a line of {len(line)} characters, longer than the protocol's limit of {MAX_LINE} "
+               "characters; it was not sent")
+    log.error("%s", message)
+    return json.dumps({"type": "error", "t": event["t"], "id": req_id, "field": None, "message": message},
+                      separators=(",", ":"), ensure_ascii=False, allow_nan=False)
 
 
 def _finite(value: Any) -> bool:
@@ -158,6 +174,9 @@ class Dispatcher:
             if not isinstance(req_id, str) or not req_id:
                 req_id = None if not isinstance(req_id, (str, int)) else req_id
                 raise ProtocolError(req_id, "id", "is required and must be a non-empty string")
+            if len(line) > MAX_LINE:  # what it says would come back too long for the platform to read
+                raise ProtocolError(req_id, None, f"is a line of {len(line)} characters, longer than the protocol's "
+                                                  f"limit of {MAX_LINE} characters; it was not handled")
             rtype = req.get("type")
             if rtype not in REQUESTS:
                 raise ProtocolError(req_id, "type", f"must be one of {', '.join(sorted(REQUESTS))}; got {rtype!r}")

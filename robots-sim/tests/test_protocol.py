@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 
 from conftest import Sim, only
 
@@ -191,3 +192,27 @@ def test_a_walking_user_stops_at_an_obstacle_or_the_counter_instead_of_walking_t
     assert users["al"]["walking"] is False
     assert 1.5 <= users["al"]["x"] <= 1.8 - 0.25 + 0.01 + 0.02, users["al"]  # just short of the crate's west face
     assert (users["bo"]["x"], users["bo"]["y"]) == (6.7, 5.0)
+
+
+
+def test_a_request_longer_than_the_line_limit_is_refused_naming_its_length_and_the_limit(sim: Sim) -> None:
+    line = json.dumps({"id": "big", "type": "add_obstacle", "name": "x" * 10_000_000, "x": 1.0, "y": 5.0, "w": 0.2,
+                       "h": 0.2})
+    evs = sim.send(line)
+    assert [e["type"] for e in evs] == ["error"]
+    assert evs[0]["id"] == "big" and evs[0]["field"] is None
+    assert evs[0]["message"] == (f"request 'big': is a line of {len(line)} characters, longer than the protocol's limit "
+                                 "of 10000000 characters; it was not handled")
+    assert not sim.world.obstacles
+    assert sim.step(0.5)[-1]["type"] == "ack"  # still working
+
+
+def test_an_event_longer_than_the_line_limit_becomes_an_error_naming_its_length_and_the_limit(sim: Sim) -> None:
+    for i in range(3):  # each request within the limit, the world state holding all three names beyond it
+        assert sim.request("add_obstacle", name=str(i) * 4_000_000, x=1.0 + i, y=5.0, w=0.2, h=0.2)[0]["type"] == "ack"
+    evs = sim.request("query", id="q")
+    assert [e["type"] for e in evs] == ["ack", "error"]
+    assert evs[1]["id"] == "q" and evs[1]["field"] is None
+    assert re.fullmatch(r"request 'q': its state event would be a line of 12\d{6} characters, longer than the "
+                        r"protocol's limit of 10000000 characters; it was not sent", evs[1]["message"]), evs[1]
+    assert sim.step(0.5)[-1]["type"] == "ack"  # still working

@@ -18,6 +18,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Properties;
+import java.util.TreeMap;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
@@ -55,7 +56,8 @@ final class AgentBag {
                     + "the other CLASSes named) into FILE, one JSON line each, flushed as it is written: first a "
                     + "header {\"format\": \"kicnp-bag\", \"version\": 1, \"started\", \"gateway\", \"classes\"}, then "
                     + "{\"t\" (ms since the start), \"event\": added|replaced, \"agent\", \"sensor\", \"values\", "
-                    + "\"ttlMs\" (when it had one)}, {\"t\", \"event\": \"removed\", \"agent\", \"sensor\"} when a signal "
+                    + "\"ttlMs\" (when it had one)}, the signals already there first, as added at t 0 (with what was "
+                    + "left of their time to live), {\"t\", \"event\": \"removed\", \"agent\", \"sensor\"} when a signal "
                     + "goes (its agent left, it expired, it was destroyed), and {\"t\", \"event\", \"instance\", "
                     + "\"class\", \"frame\"} for a frame that is no signal. Runs until interrupted, --for seconds, or "
                     + "--count lines. 'agent play' sends it again.")
@@ -72,7 +74,8 @@ final class AgentBag {
         @Option(names = "--for", paramLabel = "SECONDS", description = "Stop after this many seconds.")
         Double seconds;
 
-        @Option(names = "--count", paramLabel = "N", description = "Stop after N lines (the header not counted).")
+        @Option(names = "--count", paramLabel = "N",
+                description = "Stop after N lines (the header and the signals already there not counted).")
         Integer count;
 
         /** A change and when it was heard (System.nanoTime). */
@@ -91,15 +94,11 @@ final class AgentBag {
             PrintWriter err = spec.commandLine().getErr();
             long deadline = seconds == null ? Long.MAX_VALUE : System.nanoTime() + Math.round(seconds * 1e9);
             try (CliAgent a = connect(new Hooks(c -> heard.add(new Heard(System.nanoTime(), c)), r -> { }))) {
-                Signals signals = new Signals(err);
-                for (String c : recorded) {
-                    known(a, c).forEach(signals::known); // to name the agent and sensor of a signal that goes
-                }
                 long start = System.nanoTime();
                 Instant started = Instant.now();
                 for (String c : recorded) {
                     try {
-                        a.subscribe(c);
+                        subscribe(a, c);
                     } catch (NotConnectedException e) {
                         if (a.stopped().isEmpty()) {
                             throw e;
@@ -107,14 +106,54 @@ final class AgentBag {
                         return stopped(a.stopped().get()); // replaced while it subscribed
                     }
                 }
+                // Read after subscribing, so that a change in between is in the snapshot, heard, or both; never lost.
+                Signals signals = new Signals(err);
+                List<Bag.Signal> present = snapshot(a, recorded, signals);
                 // Opened only now, so that a server that cannot be reached or refuses leaves an earlier file as it was.
                 try (BufferedWriter file = open(out)) {
                     write(file, new Bag.Header(started, agent.gateway, recorded));
+                    present.forEach(p -> write(file, p));
                     err.println("Recording " + String.join(", ", recorded) + " to " + out + " as '" + a.name() + "'.");
+                    if (!present.isEmpty()) {
+                        err.println(present.size() + " signal" + (present.size() == 1 ? "" : "s")
+                                + " there at the start recorded at t=0.");
+                    }
                     err.flush();
                     return record(a, heard, file, signals, start, deadline);
                 }
             }
+        }
+
+        /**
+         * The signals of the recorded classes there are now, as lines at t=0, so that playing the bag starts from the
+         * state the recording started in (as {@code rosbag} users expect), not from the first change after it. Their
+         * values are asked for typed (a frame's XML holds them as text); a signal gone before it is asked for is
+         * left out, its removal being heard. Ordered by instance name, so the same state makes the same lines.
+         */
+        private static List<Bag.Signal> snapshot(CliAgent a, List<String> recorded, Signals signals) {
+            Map<String, Frame> byName = new TreeMap<>();
+            for (String c : recorded) {
+                a.query(c).forEach(f -> byName.put(f.name(), f)); // a frame of two recorded classes comes twice
+            }
+            List<Bag.Signal> present = new ArrayList<>();
+            long now = System.currentTimeMillis();
+            for (Frame f : byName.values()) {
+                signals.known(f); // to name the agent and sensor of a signal that goes
+                if (Signals.signal(f).isEmpty()) {
+                    continue;
+                }
+                Optional<Value> values;
+                try {
+                    values = a.ask(f.name(), "values");
+                } catch (RequestRefusedException e) {
+                    if (e.code() != ErrorCode.UNKNOWN_FRAME) {
+                        throw e;
+                    }
+                    continue;
+                }
+                values.flatMap(v -> Signals.present(f, v, now)).ifPresent(present::add);
+            }
+            return present;
         }
 
         /** Writes each change heard as a line until --count, --for, or the connection is lost for good. */
@@ -149,10 +188,10 @@ final class AgentBag {
             return 0;
         }
 
-        /** The instances of a class there are now; a clear word when it is SensorSignal and the server has none. */
-        private static List<Frame> known(CliAgent a, String ofClass) {
+        /** Subscribes to a class; a clear word when it is SensorSignal and the server has none. */
+        private static void subscribe(CliAgent a, String ofClass) {
             try {
-                return a.query(ofClass);
+                a.subscribe(ofClass);
             } catch (RequestRefusedException e) {
                 if (e.code() == ErrorCode.UNKNOWN_FRAME && ofClass.equals(SENSOR_SIGNAL)) {
                     throw new RequestRefusedException(e.code(), e.getMessage() + " A server whose knowledge base does "
@@ -205,6 +244,21 @@ final class AgentBag {
 
         void known(Frame f) {
             signal(f).ifPresent(s -> byName.put(f.name(), s));
+        }
+
+        /**
+         * A signal there when the recording started, as an added line at t=0: its values as the server holds them,
+         * and as time to live what was left of it at {@code now} (epoch ms, this machine's clock against the
+         * server's {@code expires}), so that played it expires where it would have. Empty when it has no values list.
+         */
+        static Optional<Bag.Signal> present(Frame f, Value values, long now) {
+            if (!(values instanceof Value.Lst list)) {
+                return Optional.empty();
+            }
+            Source s = signal(f).orElseThrow();
+            Optional<Long> left = integer(f, "expires")
+                    .map(e -> Math.clamp(e - now, 1, Message.SensorSignal.MAX_TTL_MS));
+            return Optional.of(new Bag.Signal(0, ChangeKind.ADDED, s.agent(), s.sensor(), list.items(), left));
         }
 
         Bag.Line line(long t, Message.Changed c) {

@@ -192,6 +192,49 @@ class AgentBagTest {
     }
 
     @Test
+    void record_startsWithTheSignalsAlreadyThere_atTimeZero_withWhatIsLeftOfTheirTimeToLive_andPlay_recreatesThem()
+            throws Exception {
+        Path bag = dir.resolve("state.jsonl");
+        CompletableFuture<CliRun> recording;
+        try (UserAgent scout = new UserAgent(AgentOptions.of("127.0.0.1", server.port(), "scout", AgentKind.ROBOT,
+                "scout-secret"))) {
+            scout.startAndAwait(Duration.ofSeconds(10));
+            scout.sensor("sonar", Duration.ofMinutes(1), Value.of(0.4), Value.of(7L), Value.ref("ken"), Value.of("42"));
+            scout.sensor("door", Value.of("open"));
+            awaitTrue(() -> kb.contains("signal_scout_sonar") && kb.contains("signal_scout_door"));
+            recording = recording(bag, 1);
+            scout.sensor("door", Value.of("shut"));
+            awaitTrue(() -> lines(bag).size() == 4);
+        }
+        CliRun r = recording.get(30, TimeUnit.SECONDS);
+
+        assertThat(r.exitCode()).as(r.err()).isZero();
+        assertThat(r.err()).contains("2 signals there at the start recorded at t=0.")
+                .contains("Recorded 1 line to " + bag + ".");
+        List<String> lines = lines(bag);
+        assertThat(JSON.readTree(lines.get(1)).get("t").asLong()).isZero();
+        assertThat(JSON.readTree(lines.get(2)).get("t").asLong()).isZero();
+        long ttl = JSON.readTree(lines.get(2)).get("ttlMs").asLong();
+        assertThat(ttl).as("what was left of its minute").isBetween(30_000L, 60_000L);
+        List<String> expected = List.of(
+                "{\"event\":\"added\",\"agent\":\"scout\",\"sensor\":\"door\",\"values\":[\"open\"]}",
+                "{\"event\":\"added\",\"agent\":\"scout\",\"sensor\":\"sonar\",\"values\":[0.4,7,{\"ref\":\"ken\"},"
+                        + "\"42\"],\"ttlMs\":" + ttl + "}",
+                "{\"event\":\"replaced\",\"agent\":\"scout\",\"sensor\":\"door\",\"values\":[\"shut\"]}");
+        assertThat(withoutTimes(lines)).containsExactlyElementsOf(expected);
+
+        // scout has left, so its signals are gone; played back, the bag recreates them first, then the change.
+        awaitTrue(() -> kb.instancesOf("SensorSignal").isEmpty());
+        Path again = dir.resolve("again.jsonl");
+        CompletableFuture<CliRun> second = recording(again, 3);
+        CliRun play = agent("play", bag.toString());
+        assertThat(play.exitCode()).as(play.err()).isZero();
+        CliRun r2 = second.get(30, TimeUnit.SECONDS);
+        assertThat(r2.exitCode()).as(r2.err()).isZero();
+        assertThat(withoutTimes(lines(again))).containsExactlyElementsOf(expected);
+    }
+
+    @Test
     void record_ofAnotherClass_keepsItsFramesAsXml_onceEach_evenWhenTwoRecordedClassesHoldThem() throws Exception {
         kb.add(Frame.classFrame("Staff").parent("Person").build());
         Path bag = dir.resolve("people.jsonl");

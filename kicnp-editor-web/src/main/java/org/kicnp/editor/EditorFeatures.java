@@ -6,6 +6,7 @@ final class EditorFeatures {
     }
 
     static Features available() {
-        return new Features(new XmlTransfer(), new ScriptCheck(), Features.noInference());
+        ScriptCheck scripts = new ScriptCheck();
+        return new Features(new XmlTransfer(scripts), scripts, Features.noInference());
     }
 }

@@ -1,5 +1,7 @@
 package org.kicnp.editor;
 
+import static java.util.Objects.requireNonNull;
+
 import com.fasterxml.jackson.databind.JsonNode;
 import java.io.StringWriter;
 import java.util.ArrayList;
@@ -17,16 +19,24 @@ import org.kicnp.core.xml.KnowledgeLoader;
 import org.kicnp.core.xml.KnowledgeXmlException;
 import org.kicnp.core.xml.KnowledgeXmlWriter;
 import org.kicnp.core.xml.LoadError;
+import org.kicnp.core.xml.SourceLocation;
 import org.kicnp.core.xml.SourcedFrame;
 
 /**
  * Export and import in the paper's XML format (Table 4), through the core's reader and writer. Export writes the
  * durable frames (declared and learned; runtime frames are not knowledge to keep). Import is all or nothing: the
  * text is parsed, then every frame is added or, where the name exists, replaced, in one batch; any error in the
- * XML or against the frame model is reported with its line and column and nothing changes.
+ * XML or against the frame model is reported with its line and column and nothing changes. The frames' scripts meet
+ * the same syntax check as a frame saved through the API, so an import cannot bring in a script that would fail at
+ * every firing.
  */
 final class XmlTransfer implements Features.Xml {
     static final String SOURCE = "import";
+    private final Features.Scripts scripts;
+
+    XmlTransfer(Features.Scripts scripts) {
+        this.scripts = requireNonNull(scripts, "scripts");
+    }
 
     @Override public boolean available() {
         return true;
@@ -53,6 +63,13 @@ final class XmlTransfer implements Features.Xml {
         }
         List<Change> puts = new ArrayList<>(frames.size());
         frames.forEach(f -> puts.add(new Change.Put(f.frame())));
+        List<ApiProblem> scriptProblems = scriptProblems(frames);
+        if (!scriptProblems.isEmpty()) {
+            List<ApiProblem> all = new ArrayList<>(scriptProblems);
+            Map<String, SourceLocation> at = starts(frames);
+            kb.problems(puts).forEach(p -> all.add(located(p, at)));
+            throw rejected(all);
+        }
         ChangeSet cs;
         try {
             cs = kb.apply(puts);
@@ -75,16 +92,37 @@ final class XmlTransfer implements Features.Xml {
                 : problems.size() + " errors in the XML; nothing was imported.", problems);
     }
 
+    /** One problem per script that does not parse, placed at the FRAME element of its frame. */
+    private List<ApiProblem> scriptProblems(List<SourcedFrame> frames) {
+        List<ApiProblem> problems = new ArrayList<>();
+        for (SourcedFrame f : frames) {
+            for (ApiProblem p : scripts.problems(f.frame())) {
+                problems.add(new ApiProblem(p.frame(), p.slot(), p.message(), f.location().line(), f.location().column()));
+            }
+        }
+        return problems;
+    }
+
     /** Frame-model problems placed at the FRAME element of the frame they concern. */
     private static ApiException located(BatchRejectedException e, List<SourcedFrame> frames) {
-        Map<String, SourcedFrame> byName = new HashMap<>();
-        frames.forEach(f -> byName.put(f.frame().name(), f));
-        List<ApiProblem> problems = new ArrayList<>();
-        for (Problem p : e.problems()) {
-            SourcedFrame at = byName.get(p.frame());
-            problems.add(new ApiProblem(p.frame(), p.slot().orElse(""), p.message(),
-                    at == null ? 0 : at.location().line(), at == null ? 0 : at.location().column()));
-        }
+        Map<String, SourceLocation> at = starts(frames);
+        return rejected(e.problems().stream().map(p -> located(p, at)).toList());
+    }
+
+    private static ApiProblem located(Problem p, Map<String, SourceLocation> starts) {
+        SourceLocation at = starts.get(p.frame());
+        return new ApiProblem(p.frame(), p.slot().orElse(""), p.message(), at == null ? 0 : at.line(),
+                at == null ? 0 : at.column());
+    }
+
+    /** Where each frame's FRAME element starts, by frame name. */
+    private static Map<String, SourceLocation> starts(List<SourcedFrame> frames) {
+        Map<String, SourceLocation> starts = HashMap.newHashMap(frames.size());
+        frames.forEach(f -> starts.put(f.frame().name(), f.location()));
+        return starts;
+    }
+
+    private static ApiException rejected(List<ApiProblem> problems) {
         return new ApiException(422, problems.size() == 1 ? problems.getFirst().message()
                 : problems.size() + " problems; nothing was imported.", problems);
     }

@@ -248,6 +248,16 @@ class EditorBrowserTest {
         assertThat(kb.require("Robot").ownSlot("robotName").flatMap(Slot::role)).contains("second, typed during the save");
     }
 
+    @Test void stringSlotNamedOnSomethingThatIsNoScript_isEditedAsAPlainValueAndSaves() throws Exception {
+        Browser browser = Browser.ready();
+        KnowledgeBase kb = SampleKnowledge.create();
+        kb.add(Frame.classFrame("Cup").parent("System")
+                .slot(Slot.ofValue("onTable", DataType.STRING, Value.of("kitchen counter")))
+                .slot(Slot.ofValue("onInstantiate", DataType.STRING, Value.of("var placed = true;"))).build());
+        browser.playOn(kb, "plain-on-slot.e2e.mjs", true, "browser-plain-on-slot.log");
+        assertThat(kb.value("Cup", "onTable")).contains(Value.of("by the sink, left"));
+    }
+
     /** Where the browser scripts run; skips the test when Chromium or Node.js is missing, installs Playwright once. */
     private record Browser(Path node, Path e2e, Path artifacts) {
         static Browser ready() throws IOException, InterruptedException {

@@ -140,6 +140,39 @@ class TransferApiTest {
         assertThat(kb.contains("AIBO")).isFalse();
     }
 
+    @Test void import_withAScriptThatDoesNotParse_answers422AtItsFrameAndChangesNothing() {
+        http.login(PASSWORD);
+        long version = kb.version();
+        String xml = """
+                <KNOWLEDGEBASE>
+                  <FRAME><NAME>Scout</NAME><ISA>Robot</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>
+                  <FRAME><NAME>Wave</NAME><ISA>System</ISA><ISINSTANCE>FALSE</ISINSTANCE>
+                    <SLOTLIST>
+                      <SLOT><NAME>onInstantiate</NAME><TYPE>TYPE_STR</TYPE><VALUE>Sendmsg(s.mMouth, 'hi';</VALUE></SLOT>
+                      <SLOT><NAME>arms</NAME><TYPE>TYPE_INT</TYPE><CONDITION>js: s.arms &gt;</CONDITION></SLOT>
+                    </SLOTLIST>
+                  </FRAME>
+                </KNOWLEDGEBASE>""";
+
+        HttpResponse<String> r = http.post("/api/import", importBody(xml));
+
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(422);
+        JsonNode problems = json(r).get("problems");
+        assertThat(problems).as(r.body()).hasSize(2);
+        assertThat(problems.get(0).get("frame").asText() + "." + problems.get(0).get("slot").asText())
+                .isEqualTo("Wave.onInstantiate");
+        assertThat(problems.get(0).get("message").asText()).startsWith("The script in slot 'onInstantiate' of frame "
+                + "'Wave' has a syntax error at line 1, column ");
+        assertThat(problems.get(0).get("line").asInt()).isEqualTo(3);
+        assertThat(problems.get(1).get("frame").asText() + "." + problems.get(1).get("slot").asText())
+                .isEqualTo("Wave.arms");
+        assertThat(problems.get(1).get("message").asText()).startsWith("The js: condition of slot 'arms' of frame "
+                + "'Wave' has a syntax error");
+        assertThat(kb.contains("Scout")).isFalse();
+        assertThat(kb.contains("Wave")).isFalse();
+        assertThat(kb.version()).isEqualTo(version);
+    }
+
     @Test void import_withoutLogin_answers401() {
         HttpResponse<String> r = http.post("/api/import", importBody("<FRAMES/>"));
 

@@ -120,6 +120,8 @@ public final class RobotDriver implements AutoCloseable {
             done.whenComplete((f, e) -> actions.remove(done));
         } catch (SimulatorExitedException e) {
             return finish(feedback, new Feedback.Failed(world.deathReason().orElse(e.getMessage())));
+        } catch (IllegalArgumentException e) { // too long for the protocol: a refusal, as a bad argument is
+            return finish(feedback, new Feedback.Failed(e.getMessage()));
         }
         return done;
     }

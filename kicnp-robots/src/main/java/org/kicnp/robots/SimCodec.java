@@ -16,12 +16,38 @@ import java.util.Optional;
  * line is one {@link SimProtocolException} that quotes it rather than a null deep inside a listener.
  */
 public final class SimCodec {
+    /**
+     * Characters (code points) of one line, either way (robots-sim/PROTOCOL.md). Jackson refuses a string longer than
+     * 20,000,000 UTF-16 units, so a longer event would be dropped and the request it answers left to its timeout; a
+     * line of half that many code points cannot hold such a string.
+     */
+    public static final int MAX_LINE = 10_000_000;
     private static final int MAX_QUOTE = 200;
 
     private final ObjectMapper json = new ObjectMapper();
 
-    /** The request as one JSON line (without the newline), carrying {@code id}. */
+    /**
+     * The request as one JSON line (without the newline), carrying {@code id}.
+     *
+     * @throws IllegalArgumentException when the line would be longer than {@link #MAX_LINE}: the simulator would
+     *     refuse it, as what it says back could not be read here
+     */
     public String encode(String id, SimRequest request) {
+        String line = line(id, request);
+        if (tooLong(line)) {
+            String what = request instanceof SimRequest.Command c ? c.robot() + "." + c.action() : request.type();
+            throw new IllegalArgumentException("The simulator request '" + id + "' (" + what + ") would be a line of "
+                    + line.codePointCount(0, line.length()) + " characters, longer than the protocol's limit of "
+                    + MAX_LINE + " characters; it was not sent.");
+        }
+        return line;
+    }
+
+    private static boolean tooLong(String line) {
+        return line.length() > MAX_LINE && line.codePointCount(0, line.length()) > MAX_LINE;
+    }
+
+    private String line(String id, SimRequest request) {
         ObjectNode out = json.createObjectNode();
         out.put("id", id);
         out.put("type", request.type());
@@ -82,6 +108,11 @@ public final class SimCodec {
 
     /** Decodes one line of the simulator's stdout. */
     public SimEvent decode(String line) {
+        if (tooLong(line)) {
+            throw bad(line, "it is " + line.codePointCount(0, line.length()) + " characters long, longer than the "
+                    + "protocol's limit of " + MAX_LINE + " characters; it is skipped, and a request it answers fails "
+                    + "when it times out");
+        }
         JsonNode node;
         try {
             node = json.readTree(line);

@@ -166,6 +166,8 @@ public final class SimWorld implements AutoCloseable {
     /**
      * Sends a request; the future completes with the ack's result, or fails with {@link SimRequestRejectedException},
      * {@link SimulatorExitedException} or a {@link TimeoutException}.
+     *
+     * @throws IllegalArgumentException when the request's line would be longer than {@link SimCodec#MAX_LINE}
      */
     public CompletableFuture<Optional<JsonNode>> request(SimRequest request) {
         Objects.requireNonNull(request, "request");
@@ -174,6 +176,7 @@ public final class SimWorld implements AutoCloseable {
         }
         failIfDead();
         String id = nextId();
+        String line = codec.encode(id, request); // first: a request too long to send leaves nothing waiting
         CompletableFuture<Optional<JsonNode>> ack = new CompletableFuture<>();
         pending.put(id, ack);
         Duration timeout = request instanceof SimRequest.Step s
@@ -185,7 +188,7 @@ public final class SimWorld implements AutoCloseable {
             }
         });
         try {
-            send(id, request);
+            send(line);
         } catch (SimulatorExitedException e) {
             pending.remove(id);
             throw e;
@@ -206,6 +209,7 @@ public final class SimWorld implements AutoCloseable {
     private CompletableFuture<JsonNode> queryAsync() {
         failIfDead();
         String id = nextId();
+        String line = codec.encode(id, new SimRequest.Query());
         CompletableFuture<JsonNode> state = new CompletableFuture<>();
         queries.put(id, state);
         state.orTimeout(options.requestTimeout().toMillis(), TimeUnit.MILLISECONDS).whenComplete((r, e) -> {
@@ -215,7 +219,7 @@ public final class SimWorld implements AutoCloseable {
             }
         });
         try {
-            send(id, new SimRequest.Query());
+            send(line);
         } catch (SimulatorExitedException e) {
             queries.remove(id);
             throw e;
@@ -254,11 +258,16 @@ public final class SimWorld implements AutoCloseable {
         call(new SimRequest.Step(seconds, untilIdle));
     }
 
-    /** Sends a command and follows it: {@code observer} gets every update on the event thread. */
+    /**
+     * Sends a command and follows it: {@code observer} gets every update on the event thread.
+     *
+     * @throws IllegalArgumentException when the command's line would be longer than {@link SimCodec#MAX_LINE}
+     */
     public SimAction command(SimRequest.Command command, Consumer<ActionUpdate> observer) {
         Objects.requireNonNull(command, "command");
         failIfDead();
         String id = nextId();
+        String line = codec.encode(id, command); // first: a command too long to send leaves nothing waiting
         SimAction action = new SimAction(id, command, observer);
         actions.put(id, action);
         action.outcome().whenComplete((r, e) -> actions.remove(id));
@@ -277,7 +286,7 @@ public final class SimWorld implements AutoCloseable {
             }
         });
         try {
-            send(id, command);
+            send(line);
         } catch (SimulatorExitedException e) {
             actions.remove(id);
             pending.remove(id);
@@ -296,9 +305,9 @@ public final class SimWorld implements AutoCloseable {
     }
 
     /** Queues a request line; the writer thread sends it, and a broken pipe kills the world there. */
-    private void send(String id, SimRequest request) {
+    private void send(String line) {
         failIfDead();
-        outbox.add(codec.encode(id, request));
+        outbox.add(line);
     }
 
     private void writeRequests() {

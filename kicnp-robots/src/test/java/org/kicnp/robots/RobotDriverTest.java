@@ -136,6 +136,19 @@ class RobotDriverTest {
     }
 
     @Test
+    void aSayTooLongForTheProtocolsLineLimit_failsWithoutStartingAndSaysWhy_andTheRobotSpeaksOn() throws Exception {
+        RobotDriver robovie = driver(SimWorldTest.manual(), RobotModels.robovie());
+
+        Feedback end = run(robovie, "RobovieSay", Map.of("text", "x".repeat(10_000_000)));
+
+        assertThat(end).isInstanceOfSatisfying(Feedback.Failed.class, f -> assertThat(f.reason())
+                .contains("would be a line of 100000").contains("characters, longer than the protocol's limit of "
+                        + "10000000 characters; it was not sent."));
+        assertThat(feedback).containsExactly(end);
+        assertThat(run(robovie, "RobovieSay", Map.of("text", "Hello."))).isInstanceOf(Feedback.Ended.class);
+    }
+
+    @Test
     void anUnknownAction_failsNamingTheRobotsActions() throws Exception {
         RobotDriver aibo = driver(SimWorldTest.manual(), RobotModels.aibo());
 

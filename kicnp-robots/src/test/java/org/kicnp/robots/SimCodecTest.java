@@ -88,4 +88,27 @@ class SimCodecTest {
                 .isInstanceOf(SimProtocolException.class)
                 .hasMessageEndingWith("is not a valid event: its type 'teleport' is unknown.");
     }
+
+    @Test
+    void encode_aRequestLongerThanTheProtocolsLineLimit_isRefusedNamingItsLengthAndTheLimit() {
+        SimRequest.Command say = SimRequest.Command.of("robovie", "say", Map.of("text", "x".repeat(10_000_000)));
+
+        assertThatThrownBy(() -> codec.encode("c9", say))
+                .isInstanceOf(IllegalArgumentException.class)
+                .hasMessageMatching("The simulator request 'c9' \\(robovie\\.say\\) would be a line of 100000\\d\\d "
+                        + "characters, longer than the protocol's limit of 10000000 characters; it was not sent\\.");
+    }
+
+    @Test
+    void decode_aLineLongerThanTheProtocolsLimit_failsNamingItsLengthTheLimitAndWhatHappensNext() {
+        String line = "{\"type\":\"utterance\",\"t\":1.0,\"robot\":\"robovie\",\"id\":\"c1\",\"text\":\""
+                + "x".repeat(10_000_000) + "\",\"duration_s\":1.0}";
+
+        assertThatThrownBy(() -> codec.decode(line))
+                .isInstanceOf(SimProtocolException.class)
+                .hasMessageStartingWith("Simulator line '{\"type\":\"utterance\",\"t\":1.0,")
+                .hasMessageEndingWith("' is not a valid event: it is " + line.length() + " characters long, longer "
+                        + "than the protocol's limit of 10000000 characters; it is skipped, and a request it answers "
+                        + "fails when it times out.");
+    }
 }

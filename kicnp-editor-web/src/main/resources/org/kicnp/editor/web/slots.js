@@ -4,7 +4,10 @@ import { $, TYPES, api, el, state } from './base.js';
 import { markDirty, renderFrame } from './frame.js';
 import { editor as codeEditor } from './highlight.js';
 
-export const isScript = (s) => s.type === 'TYPE_STR' && /^on[A-Z]/.test(s.name);
+// The paper's procedural slots, the only string slots the platform runs as scripts (kicnp-core's FrameScripts), so the
+// only ones edited as code and syntax-checked: any other string slot, even one named on… (onTable), holds data.
+const PROCEDURAL = ['onInstantiate', 'onDestroy'];
+export const isScript = (s) => s.type === 'TYPE_STR' && PROCEDURAL.includes(s.name);
 // A list item holding a comma or a quote (or a space at either end) is shown as a quoted string, so that the text
 // splits back into the same items (splitItems).
 const itemText = (t) => (/[,"]|^\s|\s$/.test(t) ? JSON.stringify(t) : t);
