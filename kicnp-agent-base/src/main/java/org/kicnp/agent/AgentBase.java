@@ -317,12 +317,21 @@ public abstract class AgentBase implements AutoCloseable {
         request(new Message.Unsubscribe(nextId(), ofClass));
     }
 
-    /** Relays a message to one agent by name. */
+    /**
+     * Relays a message to one agent by name.
+     *
+     * @throws RequestRefusedException with {@code unknown_agent} when no such agent is registered
+     */
     public final void relayTo(String agent, String subject, String body) {
         request(Message.Relay.toAgent(nextId(), name(), agent, subject, body));
     }
 
-    /** Relays a message to every registered agent of a kind (not to this one). */
+    /**
+     * Relays a message to every registered agent of a kind (not to this one).
+     *
+     * @throws RequestRefusedException with {@code unknown_agent} when no other agent of that kind is registered, so
+     *     nobody would receive it
+     */
     public final void relayToKind(AgentKind kind, String subject, String body) {
         request(Message.Relay.toKind(nextId(), name(), kind, subject, body));
     }

@@ -87,6 +87,15 @@ class GatewayEndToEndTest {
     }
 
     @Test
+    void relay_toKindWithNoAgentOfIt_isRefusedWithCode() {
+        UserAgent alice = user("alice");
+        assertThatThrownBy(() -> alice.relayToKind(AgentKind.ROBOT, "stop", "Everyone stop."))
+                .isInstanceOfSatisfying(RequestRefusedException.class,
+                        e -> assertThat(e.code()).isEqualTo(ErrorCode.UNKNOWN_AGENT))
+                .hasMessage("No other agent of kind 'robot' is registered, so nobody received the relay.");
+    }
+
+    @Test
     void tell_toName_reachesThatAgent_andToUnknownAgentDoesNotThrow() {
         UserAgent alice = user("alice");
         UserAgent bob = user("bob");
