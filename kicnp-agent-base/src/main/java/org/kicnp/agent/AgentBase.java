@@ -462,16 +462,37 @@ public abstract class AgentBase implements AutoCloseable {
                 case Message.Ack a when a.id().equals(id) -> {
                     return a;
                 }
-                case Message.ErrorReply e -> {
-                    if (e.id().isEmpty() || e.id().get().equals(id)) {
-                        if (id.equals("hello")) {
-                            throw new AuthenticationException("Server refused agent '" + name() + "': " + e.message());
-                        }
-                        return e;
+                case Message.ErrorReply e when e.id().isEmpty() -> handshakeError(e, id);
+                case Message.ErrorReply e when e.id().get().equals(id) -> {
+                    if (id.equals("hello")) {
+                        throw new AuthenticationException("Server refused agent '" + name() + "': " + e.message());
                     }
+                    return e;
                 }
                 default -> { } // heartbeats before registration
             }
+        }
+    }
+
+    /**
+     * An error answering no request while the agent says hello or registers. Only {@code not_authenticated} refuses
+     * the agent, which then stops; any other is about this connection (a heartbeat timeout, an overloaded or failing
+     * server): it is logged, and when the server closes the connection over it the agent connects again, as after
+     * any lost connection, rather than stopping for good over something a retry may not meet.
+     *
+     * @throws AuthenticationException on {@code not_authenticated}
+     * @throws NotConnectedException on an error that closes the connection
+     */
+    private void handshakeError(Message.ErrorReply e, String awaiting) {
+        if (e.code() == ErrorCode.NOT_AUTHENTICATED) {
+            throw new AuthenticationException("Server refused agent '" + name() + "': " + e.message());
+        }
+        String code = e.code().name().toLowerCase(Locale.ROOT);
+        LOG.warn("Agent '{}': server says {} while awaiting the answer to its {}: {}", name(), code, awaiting,
+                e.message());
+        if (e.code().closesConnection()) {
+            throw new NotConnectedException("Agent '" + name() + "' was not registered: the server closed the "
+                    + "connection (" + code + "): " + e.message());
         }
     }
 

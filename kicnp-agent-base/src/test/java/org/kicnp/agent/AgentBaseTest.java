@@ -13,6 +13,7 @@ import java.util.Optional;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Test;
 import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.ErrorCode;
 import org.kicnp.protocol.Framing;
 import org.kicnp.protocol.Message;
 import org.kicnp.protocol.MessageCodec;
@@ -83,6 +84,51 @@ class AgentBaseTest {
             });
             assertThatThrownBy(() -> a.startAndAwait(Duration.ofSeconds(10))).isInstanceOf(AuthenticationException.class)
                     .hasMessage("Server refused agent 'alice': Wrong token.");
+        }
+    }
+
+    /**
+     * An error without id while the agent says hello or registers is about that connection (a timeout, a failure in
+     * the server), not a refusal of the agent: it is logged and the agent connects again.
+     */
+    @Test
+    void errorWithoutId_whileRegistering_doesNotStopTheAgent_itConnectsAgain() throws Exception {
+        try (FakeGateway server = new FakeGateway(
+                peer -> {
+                    peer.authenticate();
+                    peer.readSkippingHeartbeats(); // the register
+                    peer.send(Message.ErrorReply.of(ErrorCode.INTERNAL, "The server failed on this connection: boom."));
+                },
+                peer -> {
+                    peer.readSkippingHeartbeats(); // the hello
+                    peer.send(Message.ErrorReply.of(ErrorCode.HEARTBEAT_TIMEOUT,
+                            "Nothing was heard from this connection within the heartbeat timeout."));
+                },
+                peer -> {
+                    peer.register();
+                    peer.drain();
+                });
+             UserAgent a = new UserAgent(AgentOptions.of("127.0.0.1", server.port(), "alice", AgentKind.USER, "t")
+                     .withBackoff(Duration.ofMillis(10), Duration.ofMillis(50)))) {
+            a.startAndAwait(Duration.ofSeconds(10));
+            assertThat(a.isConnected()).isTrue();
+            assertThat(a.stopped()).isEmpty();
+            assertThat(server.connections()).isEqualTo(3);
+        }
+    }
+
+    /** An id-less {@code not_authenticated} answering the hello is a refusal: the agent stops, saying so. */
+    @Test
+    void notAuthenticatedWithoutId_answeringTheHello_stopsTheAgentWithAuthenticationException() throws Exception {
+        try (FakeGateway server = new FakeGateway(peer -> {
+            peer.readSkippingHeartbeats();
+            peer.send(Message.ErrorReply.of(ErrorCode.NOT_AUTHENTICATED, "Send 'hello' first."));
+        });
+             UserAgent a = new UserAgent(AgentOptions.of("127.0.0.1", server.port(), "alice", AgentKind.USER, "t")
+                     .withBackoff(Duration.ofMillis(10), Duration.ofMillis(50)))) {
+            assertThatThrownBy(() -> a.startAndAwait(Duration.ofSeconds(10))).isInstanceOf(AuthenticationException.class)
+                    .hasMessage("Server refused agent 'alice': Send 'hello' first.");
+            assertThat(server.connections()).isEqualTo(1);
         }
     }
 
