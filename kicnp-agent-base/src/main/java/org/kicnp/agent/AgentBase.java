@@ -130,6 +130,14 @@ public abstract class AgentBase implements AutoCloseable {
     protected void onDisconnected(String reason) {
     }
 
+    /**
+     * Called (on the event thread) when the server refuses to renew a subscription after a reconnect — the class was
+     * destroyed while the agent was away, say. The subscription has ended: no {@link #onChanged} comes for it until
+     * the agent subscribes again. The refusal is logged as a warning too.
+     */
+    protected void onSubscriptionRefused(String ofClass, RequestRefusedException reason) {
+    }
+
     // ---- life cycle ----
 
     /** Starts connecting in the background; returns at once. Use {@link #awaitConnected} to wait. */
@@ -443,13 +451,33 @@ public abstract class AgentBase implements AutoCloseable {
         }
         connection = c;
         for (String ofClass : subscriptions) {
-            c.send(new Message.Subscribe("resubscribe-" + nextId(), ofClass));
+            resubscribe(c, ofClass);
         }
         registered = true;
         firstOutcome.countDown();
         startHeartbeats(c);
         LOG.info("Agent '{}' registered with {}:{}.", name(), options.host(), options.port());
         events.execute(this::onConnected);
+    }
+
+    /**
+     * Renews a subscription on a new connection without waiting for the answer (the read loop, which reads it, has
+     * not started yet); a refusal ends the subscription, logged and reported through {@link #onSubscriptionRefused}.
+     */
+    private void resubscribe(Connection c, String ofClass) throws IOException {
+        String id = "resubscribe-" + nextId();
+        CompletableFuture<Message> answer = new CompletableFuture<>();
+        pending.put(id, answer);
+        answer.thenAccept(m -> {
+            if (m instanceof Message.ErrorReply e) {
+                subscriptions.remove(ofClass);
+                LOG.warn("Agent '{}': the server refused to renew its subscription to '{}' after a reconnect ({}): {}",
+                        name(), ofClass, e.code().name().toLowerCase(Locale.ROOT), e.message());
+                RequestRefusedException reason = new RequestRefusedException(e.code(), e.message());
+                events.execute(() -> onSubscriptionRefused(ofClass, reason));
+            }
+        });
+        c.send(new Message.Subscribe(id, ofClass));
     }
 
     private Message awaitDirect(Connection c, String id) throws IOException {

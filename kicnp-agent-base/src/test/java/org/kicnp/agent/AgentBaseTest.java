@@ -9,7 +9,12 @@ import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.time.Duration;
+import java.util.List;
 import java.util.Optional;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Test;
 import org.kicnp.protocol.AgentKind;
@@ -129,6 +134,49 @@ class AgentBaseTest {
             assertThatThrownBy(() -> a.startAndAwait(Duration.ofSeconds(10))).isInstanceOf(AuthenticationException.class)
                     .hasMessage("Server refused agent 'alice': Send 'hello' first.");
             assertThat(server.connections()).isEqualTo(1);
+        }
+    }
+
+    /** A subscription the server refuses to renew after a reconnect is reported to the agent, and has ended. */
+    @Test
+    void resubscription_refusedAfterAReconnect_isReportedThroughOnSubscriptionRefused() throws Exception {
+        try (FakeGateway server = new FakeGateway(
+                peer -> {
+                    peer.register();
+                    Message.Subscribe sub = (Message.Subscribe) peer.readSkippingHeartbeats();
+                    peer.send(new Message.Ack(sub.id()));
+                }, // then the connection drops
+                peer -> {
+                    peer.register();
+                    Message.Subscribe again = (Message.Subscribe) peer.readSkippingHeartbeats();
+                    peer.send(Message.ErrorReply.to(again.id(), ErrorCode.UNKNOWN_FRAME, "No frame 'Cup' exists."));
+                    peer.drain();
+                });
+             Subscriber a = new Subscriber(AgentOptions.of("127.0.0.1", server.port(), "alice", AgentKind.USER, "t")
+                     .withBackoff(Duration.ofMillis(10), Duration.ofMillis(50)))) {
+            a.startAndAwait(Duration.ofSeconds(10));
+            a.subscribe("Cup");
+            RequestRefusedException refusal = a.refused.poll(10, TimeUnit.SECONDS);
+            assertThat(refusal).isNotNull();
+            assertThat(refusal.code()).isEqualTo(ErrorCode.UNKNOWN_FRAME);
+            assertThat(refusal).hasMessage("No frame 'Cup' exists.");
+            assertThat(a.refusedClasses).containsExactly("Cup");
+            assertThat(server.connections()).isEqualTo(2);
+        }
+    }
+
+    /** Records the subscriptions the server refused to renew. */
+    private static final class Subscriber extends UserAgent {
+        final BlockingQueue<RequestRefusedException> refused = new LinkedBlockingQueue<>();
+        final List<String> refusedClasses = new CopyOnWriteArrayList<>();
+
+        Subscriber(AgentOptions options) {
+            super(options);
+        }
+
+        @Override protected void onSubscriptionRefused(String ofClass, RequestRefusedException reason) {
+            refusedClasses.add(ofClass);
+            refused.add(reason);
         }
     }
 
