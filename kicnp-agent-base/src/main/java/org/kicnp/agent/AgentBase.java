@@ -13,9 +13,6 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.ThreadPoolExecutor;
-import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.ThreadLocalRandom;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
@@ -44,11 +41,11 @@ import org.slf4j.LoggerFactory;
  * and fail with a typed {@link AgentException}.
  *
  * <p>Threads: one virtual thread reads the connection; each command runs on its own virtual thread; relays and
- * change notifications are delivered in order on one event thread.
+ * change notifications are delivered in order on one event thread, through a queue of 10,000 that never makes the
+ * reader wait: when it is full the oldest relay or change is dropped and counted ({@link #eventsDropped()}).
  */
 public abstract class AgentBase implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(AgentBase.class);
-    private static final int EVENT_QUEUE = 10_000;
 
     private final AgentOptions options;
     private final MessageCodec codec = new MessageCodec();
@@ -63,17 +60,8 @@ public abstract class AgentBase implements AutoCloseable {
      * — two {@code kicnp agent command} in a row — never share an id while the first is still in flight at the robot.
      */
     private final String commandIds = Long.toString(System.currentTimeMillis(), 36);
-    /** Relays and changes, in order; when full, the reader waits, so TCP pushes back on the server (which sheds). */
-    private final ExecutorService events = new ThreadPoolExecutor(1, 1, 0, TimeUnit.MILLISECONDS,
-            new ArrayBlockingQueue<>(EVENT_QUEUE), Thread.ofVirtual().name("agent-events").factory(), (task, pool) -> {
-                try {
-                    if (!pool.isShutdown()) {
-                        pool.getQueue().put(task);
-                    }
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                }
-            });
+    /** Relays, changes and life-cycle callbacks, in order; never blocks the reader (the oldest are dropped). */
+    private final EventQueue events;
     private final CountDownLatch firstOutcome = new CountDownLatch(1);
     private volatile Connection connection;
     private volatile boolean registered;
@@ -87,6 +75,7 @@ public abstract class AgentBase implements AutoCloseable {
 
     protected AgentBase(AgentOptions options) {
         this.options = requireNonNull(options, "options");
+        this.events = new EventQueue(options.name());
         this.commands = new CommandRunner(options.name(), this::onCommand, this::onCancel, this::send);
     }
 
@@ -200,6 +189,15 @@ public abstract class AgentBase implements AutoCloseable {
         return registered;
     }
 
+    /**
+     * How many relays and change notifications were dropped, oldest first, because {@code onRelay} and
+     * {@code onChanged} did not keep up: 10,000 were waiting for them (each drop logged at the first and every
+     * 1,000th). The connection's reader never waits for them, so answers, commands and heartbeats are not held up.
+     */
+    public final long eventsDropped() {
+        return events.dropped();
+    }
+
     /** How many commands this robot agent took and has neither reported done nor lost with its connection. */
     public final int commandsInFlight() {
         return commands.inFlight();
@@ -228,7 +226,7 @@ public abstract class AgentBase implements AutoCloseable {
                 Thread.currentThread().interrupt();
             }
         }
-        events.shutdownNow();
+        events.close();
         failPending(() -> new NotConnectedException("Agent '" + name() + "' was closed."));
     }
 
@@ -457,7 +455,7 @@ public abstract class AgentBase implements AutoCloseable {
         firstOutcome.countDown();
         startHeartbeats(c);
         LOG.info("Agent '{}' registered with {}:{}.", name(), options.host(), options.port());
-        events.execute(this::onConnected);
+        events.callback(this::onConnected);
     }
 
     /**
@@ -474,7 +472,7 @@ public abstract class AgentBase implements AutoCloseable {
                 LOG.warn("Agent '{}': the server refused to renew its subscription to '{}' after a reconnect ({}): {}",
                         name(), ofClass, e.code().name().toLowerCase(Locale.ROOT), e.message());
                 RequestRefusedException reason = new RequestRefusedException(e.code(), e.message());
-                events.execute(() -> onSubscriptionRefused(ofClass, reason));
+                events.callback(() -> onSubscriptionRefused(ofClass, reason));
             }
         });
         c.send(new Message.Subscribe(id, ofClass));
@@ -548,8 +546,8 @@ public abstract class AgentBase implements AutoCloseable {
                         t.received(f);
                     }
                 }
-                case Message.Relay r -> events.execute(() -> onRelay(r));
-                case Message.Changed ch -> events.execute(() -> onChanged(ch));
+                case Message.Relay r -> events.deliver(() -> onRelay(r));
+                case Message.Changed ch -> events.deliver(() -> onChanged(ch));
                 case Message.Heartbeat h -> { }
                 case Message.ErrorReply e when e.code() == ErrorCode.SUPERSEDED ->
                         throw new AuthenticationException("Agent '" + name() + "' stops: " + e.message());
@@ -615,7 +613,7 @@ public abstract class AgentBase implements AutoCloseable {
         // The server fails the commands this robot runs, too: cancel them, so that the robot stops and its program hears.
         commands.connectionLost(closed ? "agent '" + name() + "' was closed" : "the connection to the gateway was lost");
         if (was && !closed) {
-            events.execute(() -> onDisconnected("connection lost"));
+            events.callback(() -> onDisconnected("connection lost"));
         }
     }
 
