@@ -211,6 +211,18 @@ class GatewayEndToEndTest {
                 .hasMessage("Server refused agent 'alice': Unknown agent 'alice' or wrong token.");
     }
 
+    /** An unknown name and a known name with a wrong token get one answer, so a stranger cannot probe for names. */
+    @Test
+    void hello_withUnknownName_andWithWrongToken_getTheSameRefusal() throws IOException {
+        for (String name : List.of("alice", "eve")) {
+            try (RawClient raw = new RawClient(server.port())) {
+                raw.send(new Message.Hello("1", name, AgentKind.USER, "guess"));
+                assertThat(raw.readUntilClosed()).containsExactly(new Message.AuthResult("1", false, "kicnp",
+                        Optional.of("Unknown agent '" + name + "' or wrong token.")));
+            }
+        }
+    }
+
     @Test
     void messageBeforeHello_getsErrorAndClose() throws IOException {
         try (RawClient raw = new RawClient(server.port())) {
