@@ -133,6 +133,28 @@ class GatewayEndToEndTest {
         assertThat(kb.value("signal_scout_sonar", "value")).contains(Value.of(0.5));
     }
 
+    /**
+     * Actions whose feedback frame names would be one ('fetch tea' and 'fetch_tea' both make
+     * 'feedback_scout_fetch_tea'): the second is refused, naming both, rather than overwrite the first's feedback.
+     */
+    @Test
+    void command_whoseFeedbackFrameHoldsAnotherAction_isRefusedNamingBoth() {
+        connect(new org.kicnp.example.TeaRobot(options("scout", AgentKind.ROBOT)));
+        UserAgent alice = user("alice");
+        CommandTicket first = alice.command("scout", "fetch tea", Map.of());
+        assertThatThrownBy(() -> first.result(WAIT)).isInstanceOf(ActionFailedException.class);
+        assertThat(kb.value("feedback_scout_fetch_tea", "action")).contains(Value.of("fetch tea"));
+
+        assertThatThrownBy(() -> alice.command("scout", "fetch_tea", Map.of()))
+                .isInstanceOfSatisfying(RequestRefusedException.class,
+                        e -> assertThat(e.code()).isEqualTo(ErrorCode.REJECTED))
+                .hasMessageMatching("Command '[^']+' to 'scout' was not sent: the feedback of action 'fetch_tea' would "
+                        + "go to frame 'feedback_scout_fetch_tea', which holds the feedback of action 'fetch tea' of "
+                        + "robot 'scout'; rename one of the two actions\\.");
+        assertThat(kb.value("feedback_scout_fetch_tea", "action")).contains(Value.of("fetch tea"));
+        assertThat(alice.command("scout", "fetch tea", Map.of())).isNotNull(); // the first action goes on as before
+    }
+
     @Test
     void knowledge_queryAskAssert_andSubscriptionNotifies() {
         UserAgent alice = user("alice");
