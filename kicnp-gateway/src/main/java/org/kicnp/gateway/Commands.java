@@ -132,7 +132,7 @@ final class Commands implements ActionSink {
         }
         try {
             runtime.feedback(entry.command(), f);
-        } catch (KnowledgeException | IllegalArgumentException e) { // another action took its frame since it was sent
+        } catch (KnowledgeException | IllegalArgumentException e) { // the latter: another action's feedback took the frame
             LOG.warn("Could not record feedback of command '{}' from '{}': {}", f.id(), robot.agent(), e.getMessage());
         }
         deliver(entry, f);
