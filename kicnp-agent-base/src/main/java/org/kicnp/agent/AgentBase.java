@@ -13,9 +13,6 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.ThreadPoolExecutor;
-import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.ThreadLocalRandom;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
@@ -44,11 +41,11 @@ import org.slf4j.LoggerFactory;
  * and fail with a typed {@link AgentException}.
  *
  * <p>Threads: one virtual thread reads the connection; each command runs on its own virtual thread; relays and
- * change notifications are delivered in order on one event thread.
+ * change notifications are delivered in order on one event thread, through a queue of 10,000 that never makes the
+ * reader wait: when it is full the oldest relay or change is dropped and counted ({@link #eventsDropped()}).
  */
 public abstract class AgentBase implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(AgentBase.class);
-    private static final int EVENT_QUEUE = 10_000;
 
     private final AgentOptions options;
     private final MessageCodec codec = new MessageCodec();
@@ -63,17 +60,8 @@ public abstract class AgentBase implements AutoCloseable {
      * — two {@code kicnp agent command} in a row — never share an id while the first is still in flight at the robot.
      */
     private final String commandIds = Long.toString(System.currentTimeMillis(), 36);
-    /** Relays and changes, in order; when full, the reader waits, so TCP pushes back on the server (which sheds). */
-    private final ExecutorService events = new ThreadPoolExecutor(1, 1, 0, TimeUnit.MILLISECONDS,
-            new ArrayBlockingQueue<>(EVENT_QUEUE), Thread.ofVirtual().name("agent-events").factory(), (task, pool) -> {
-                try {
-                    if (!pool.isShutdown()) {
-                        pool.getQueue().put(task);
-                    }
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                }
-            });
+    /** Relays, changes and life-cycle callbacks, in order; never blocks the reader (the oldest are dropped). */
+    private final EventQueue events;
     private final CountDownLatch firstOutcome = new CountDownLatch(1);
     private volatile Connection connection;
     private volatile boolean registered;
@@ -87,6 +75,7 @@ public abstract class AgentBase implements AutoCloseable {
 
     protected AgentBase(AgentOptions options) {
         this.options = requireNonNull(options, "options");
+        this.events = new EventQueue(options.name());
         this.commands = new CommandRunner(options.name(), this::onCommand, this::onCancel, this::send);
     }
 
@@ -128,6 +117,14 @@ public abstract class AgentBase implements AutoCloseable {
 
     /** Called (on the event thread) when a registered connection is lost; the agent is reconnecting. */
     protected void onDisconnected(String reason) {
+    }
+
+    /**
+     * Called (on the event thread) when the server refuses to renew a subscription after a reconnect — the class was
+     * destroyed while the agent was away, say. The subscription has ended: no {@link #onChanged} comes for it until
+     * the agent subscribes again. The refusal is logged as a warning too.
+     */
+    protected void onSubscriptionRefused(String ofClass, RequestRefusedException reason) {
     }
 
     // ---- life cycle ----
@@ -192,6 +189,15 @@ public abstract class AgentBase implements AutoCloseable {
         return registered;
     }
 
+    /**
+     * How many relays and change notifications were dropped, oldest first, because {@code onRelay} and
+     * {@code onChanged} did not keep up: 10,000 were waiting for them (each drop logged at the first and every
+     * 1,000th). The connection's reader never waits for them, so answers, commands and heartbeats are not held up.
+     */
+    public final long eventsDropped() {
+        return events.dropped();
+    }
+
     /** How many commands this robot agent took and has neither reported done nor lost with its connection. */
     public final int commandsInFlight() {
         return commands.inFlight();
@@ -220,7 +226,7 @@ public abstract class AgentBase implements AutoCloseable {
                 Thread.currentThread().interrupt();
             }
         }
-        events.shutdownNow();
+        events.close();
         failPending(() -> new NotConnectedException("Agent '" + name() + "' was closed."));
     }
 
@@ -317,12 +323,21 @@ public abstract class AgentBase implements AutoCloseable {
         request(new Message.Unsubscribe(nextId(), ofClass));
     }
 
-    /** Relays a message to one agent by name. */
+    /**
+     * Relays a message to one agent by name.
+     *
+     * @throws RequestRefusedException with {@code unknown_agent} when no such agent is registered
+     */
     public final void relayTo(String agent, String subject, String body) {
         request(Message.Relay.toAgent(nextId(), name(), agent, subject, body));
     }
 
-    /** Relays a message to every registered agent of a kind (not to this one). */
+    /**
+     * Relays a message to every registered agent of a kind (not to this one).
+     *
+     * @throws RequestRefusedException with {@code unknown_agent} when no other agent of that kind is registered, so
+     *     nobody would receive it
+     */
     public final void relayToKind(AgentKind kind, String subject, String body) {
         request(Message.Relay.toKind(nextId(), name(), kind, subject, body));
     }
@@ -434,13 +449,33 @@ public abstract class AgentBase implements AutoCloseable {
         }
         connection = c;
         for (String ofClass : subscriptions) {
-            c.send(new Message.Subscribe("resubscribe-" + nextId(), ofClass));
+            resubscribe(c, ofClass);
         }
         registered = true;
         firstOutcome.countDown();
         startHeartbeats(c);
         LOG.info("Agent '{}' registered with {}:{}.", name(), options.host(), options.port());
-        events.execute(this::onConnected);
+        events.callback(this::onConnected);
+    }
+
+    /**
+     * Renews a subscription on a new connection without waiting for the answer (the read loop, which reads it, has
+     * not started yet); a refusal ends the subscription, logged and reported through {@link #onSubscriptionRefused}.
+     */
+    private void resubscribe(Connection c, String ofClass) throws IOException {
+        String id = "resubscribe-" + nextId();
+        CompletableFuture<Message> answer = new CompletableFuture<>();
+        pending.put(id, answer);
+        answer.thenAccept(m -> {
+            if (m instanceof Message.ErrorReply e) {
+                subscriptions.remove(ofClass);
+                LOG.warn("Agent '{}': the server refused to renew its subscription to '{}' after a reconnect ({}): {}",
+                        name(), ofClass, e.code().name().toLowerCase(Locale.ROOT), e.message());
+                RequestRefusedException reason = new RequestRefusedException(e.code(), e.message());
+                events.callback(() -> onSubscriptionRefused(ofClass, reason));
+            }
+        });
+        c.send(new Message.Subscribe(id, ofClass));
     }
 
     private Message awaitDirect(Connection c, String id) throws IOException {
@@ -453,16 +488,37 @@ public abstract class AgentBase implements AutoCloseable {
                 case Message.Ack a when a.id().equals(id) -> {
                     return a;
                 }
-                case Message.ErrorReply e -> {
-                    if (e.id().isEmpty() || e.id().get().equals(id)) {
-                        if (id.equals("hello")) {
-                            throw new AuthenticationException("Server refused agent '" + name() + "': " + e.message());
-                        }
-                        return e;
+                case Message.ErrorReply e when e.id().isEmpty() -> handshakeError(e, id);
+                case Message.ErrorReply e when e.id().get().equals(id) -> {
+                    if (id.equals("hello")) {
+                        throw new AuthenticationException("Server refused agent '" + name() + "': " + e.message());
                     }
+                    return e;
                 }
                 default -> { } // heartbeats before registration
             }
+        }
+    }
+
+    /**
+     * An error answering no request while the agent says hello or registers. Only {@code not_authenticated} refuses
+     * the agent, which then stops; any other is about this connection (a heartbeat timeout, an overloaded or failing
+     * server): it is logged, and when the server closes the connection over it the agent connects again, as after
+     * any lost connection, rather than stopping for good over something a retry may not meet.
+     *
+     * @throws AuthenticationException on {@code not_authenticated}
+     * @throws NotConnectedException on an error that closes the connection
+     */
+    private void handshakeError(Message.ErrorReply e, String awaiting) {
+        if (e.code() == ErrorCode.NOT_AUTHENTICATED) {
+            throw new AuthenticationException("Server refused agent '" + name() + "': " + e.message());
+        }
+        String code = e.code().name().toLowerCase(Locale.ROOT);
+        LOG.warn("Agent '{}': server says {} while awaiting the answer to its {}: {}", name(), code, awaiting,
+                e.message());
+        if (e.code().closesConnection()) {
+            throw new NotConnectedException("Agent '" + name() + "' was not registered: the server closed the "
+                    + "connection (" + code + "): " + e.message());
         }
     }
 
@@ -490,8 +546,8 @@ public abstract class AgentBase implements AutoCloseable {
                         t.received(f);
                     }
                 }
-                case Message.Relay r -> events.execute(() -> onRelay(r));
-                case Message.Changed ch -> events.execute(() -> onChanged(ch));
+                case Message.Relay r -> events.deliver(() -> onRelay(r));
+                case Message.Changed ch -> events.deliver(() -> onChanged(ch));
                 case Message.Heartbeat h -> { }
                 case Message.ErrorReply e when e.code() == ErrorCode.SUPERSEDED ->
                         throw new AuthenticationException("Agent '" + name() + "' stops: " + e.message());
@@ -557,7 +613,7 @@ public abstract class AgentBase implements AutoCloseable {
         // The server fails the commands this robot runs, too: cancel them, so that the robot stops and its program hears.
         commands.connectionLost(closed ? "agent '" + name() + "' was closed" : "the connection to the gateway was lost");
         if (was && !closed) {
-            events.execute(() -> onDisconnected("connection lost"));
+            events.callback(() -> onDisconnected("connection lost"));
         }
     }
 

@@ -9,10 +9,16 @@ import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.time.Duration;
+import java.util.List;
 import java.util.Optional;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Test;
 import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.ErrorCode;
 import org.kicnp.protocol.Framing;
 import org.kicnp.protocol.Message;
 import org.kicnp.protocol.MessageCodec;
@@ -83,6 +89,94 @@ class AgentBaseTest {
             });
             assertThatThrownBy(() -> a.startAndAwait(Duration.ofSeconds(10))).isInstanceOf(AuthenticationException.class)
                     .hasMessage("Server refused agent 'alice': Wrong token.");
+        }
+    }
+
+    /**
+     * An error without id while the agent says hello or registers is about that connection (a timeout, a failure in
+     * the server), not a refusal of the agent: it is logged and the agent connects again.
+     */
+    @Test
+    void errorWithoutId_whileRegistering_doesNotStopTheAgent_itConnectsAgain() throws Exception {
+        try (FakeGateway server = new FakeGateway(
+                peer -> {
+                    peer.authenticate();
+                    peer.readSkippingHeartbeats(); // the register
+                    peer.send(Message.ErrorReply.of(ErrorCode.INTERNAL, "The server failed on this connection: boom."));
+                },
+                peer -> {
+                    peer.readSkippingHeartbeats(); // the hello
+                    peer.send(Message.ErrorReply.of(ErrorCode.HEARTBEAT_TIMEOUT,
+                            "Nothing was heard from this connection within the heartbeat timeout."));
+                },
+                peer -> {
+                    peer.register();
+                    peer.drain();
+                });
+             UserAgent a = new UserAgent(AgentOptions.of("127.0.0.1", server.port(), "alice", AgentKind.USER, "t")
+                     .withBackoff(Duration.ofMillis(10), Duration.ofMillis(50)))) {
+            a.startAndAwait(Duration.ofSeconds(10));
+            assertThat(a.isConnected()).isTrue();
+            assertThat(a.stopped()).isEmpty();
+            assertThat(server.connections()).isEqualTo(3);
+        }
+    }
+
+    /** An id-less {@code not_authenticated} answering the hello is a refusal: the agent stops, saying so. */
+    @Test
+    void notAuthenticatedWithoutId_answeringTheHello_stopsTheAgentWithAuthenticationException() throws Exception {
+        try (FakeGateway server = new FakeGateway(peer -> {
+            peer.readSkippingHeartbeats();
+            peer.send(Message.ErrorReply.of(ErrorCode.NOT_AUTHENTICATED, "Send 'hello' first."));
+        });
+             UserAgent a = new UserAgent(AgentOptions.of("127.0.0.1", server.port(), "alice", AgentKind.USER, "t")
+                     .withBackoff(Duration.ofMillis(10), Duration.ofMillis(50)))) {
+            assertThatThrownBy(() -> a.startAndAwait(Duration.ofSeconds(10))).isInstanceOf(AuthenticationException.class)
+                    .hasMessage("Server refused agent 'alice': Send 'hello' first.");
+            assertThat(server.connections()).isEqualTo(1);
+        }
+    }
+
+    /** A subscription the server refuses to renew after a reconnect is reported to the agent, and has ended. */
+    @Test
+    void resubscription_refusedAfterAReconnect_isReportedThroughOnSubscriptionRefused() throws Exception {
+        try (FakeGateway server = new FakeGateway(
+                peer -> {
+                    peer.register();
+                    Message.Subscribe sub = (Message.Subscribe) peer.readSkippingHeartbeats();
+                    peer.send(new Message.Ack(sub.id()));
+                }, // then the connection drops
+                peer -> {
+                    peer.register();
+                    Message.Subscribe again = (Message.Subscribe) peer.readSkippingHeartbeats();
+                    peer.send(Message.ErrorReply.to(again.id(), ErrorCode.UNKNOWN_FRAME, "No frame 'Cup' exists."));
+                    peer.drain();
+                });
+             Subscriber a = new Subscriber(AgentOptions.of("127.0.0.1", server.port(), "alice", AgentKind.USER, "t")
+                     .withBackoff(Duration.ofMillis(10), Duration.ofMillis(50)))) {
+            a.startAndAwait(Duration.ofSeconds(10));
+            a.subscribe("Cup");
+            RequestRefusedException refusal = a.refused.poll(10, TimeUnit.SECONDS);
+            assertThat(refusal).isNotNull();
+            assertThat(refusal.code()).isEqualTo(ErrorCode.UNKNOWN_FRAME);
+            assertThat(refusal).hasMessage("No frame 'Cup' exists.");
+            assertThat(a.refusedClasses).containsExactly("Cup");
+            assertThat(server.connections()).isEqualTo(2);
+        }
+    }
+
+    /** Records the subscriptions the server refused to renew. */
+    private static final class Subscriber extends UserAgent {
+        final BlockingQueue<RequestRefusedException> refused = new LinkedBlockingQueue<>();
+        final List<String> refusedClasses = new CopyOnWriteArrayList<>();
+
+        Subscriber(AgentOptions options) {
+            super(options);
+        }
+
+        @Override protected void onSubscriptionRefused(String ofClass, RequestRefusedException reason) {
+            refusedClasses.add(ofClass);
+            refused.add(reason);
         }
     }
 

@@ -13,7 +13,8 @@ public interface ActionSink {
      * Sends a command to the agent of {@code command.robot()}. Never blocks on the network. If the robot is not
      * connected, or goes away before the command ends, the listener hears {@code failed} with the reason.
      *
-     * @throws IllegalArgumentException when a command with the same id is already in flight on that robot
+     * @throws IllegalArgumentException when a command with the same id is already in flight on that robot, or when
+     *     the frame its feedback would go to holds another action's (docs/protocol.md, "Commands and feedback")
      */
     void send(Command command);
 

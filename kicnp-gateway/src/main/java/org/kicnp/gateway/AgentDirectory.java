@@ -8,6 +8,7 @@ import java.io.Reader;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
 import java.util.EnumSet;
 import java.util.HashMap;
 import java.util.Locale;
@@ -20,12 +21,18 @@ import org.kicnp.protocol.Message.Hello;
 
 /**
  * Who may connect: a token per agent and the kinds it may connect as, read from {@code agents.properties}
- * ({@code NAME.token = secret}, {@code NAME.kinds = robot,user}; kinds default to any). Tokens are compared in
- * constant time. Immutable.
+ * ({@code NAME.token = secret}, {@code NAME.kinds = robot,user}; kinds default to any). A hello costs the same
+ * whether its name is known or not and whatever its token's length: the SHA-256 of the token it sends is compared
+ * in constant time with the agent's (or, for an unknown name, with a dummy's), so neither the answer nor its timing
+ * tells a stranger which names exist. Immutable.
  */
 public final class AgentDirectory {
-    private record Entry(byte[] token, Set<AgentKind> kinds) {
+    /** An agent's token, kept as its SHA-256, and its kinds. */
+    private record Entry(byte[] tokenDigest, Set<AgentKind> kinds) {
     }
+
+    /** What the token of a hello under an unknown name is compared with: the same work as for a known name. */
+    private static final byte[] DUMMY_DIGEST = sha256("no agent has this token");
 
     private final Map<String, Entry> entries;
 
@@ -59,11 +66,11 @@ public final class AgentDirectory {
             String name = dot < 0 ? "" : key.substring(0, dot);
             switch (dot < 0 ? "" : key.substring(dot + 1)) {
                 case "token" -> {
-                    if (value.isEmpty()) { // MessageDigest.isEqual of two empty arrays is true: anyone could connect
+                    if (value.isEmpty()) { // it would match the empty token: anyone could connect under this name
                         throw new GatewayException("Agent '" + name + "' in '" + source
                                 + "' has an empty token; give it a secret, or remove it.");
                     }
-                    tokens.put(name, value.getBytes(UTF_8));
+                    tokens.put(name, sha256(value));
                 }
                 case "kinds" -> kinds.put(name, parseKinds(value, key, source));
                 default -> throw new GatewayException("Key '" + key + "' in the agent file '" + source
@@ -93,14 +100,15 @@ public final class AgentDirectory {
         }
         Map<String, Entry> copy = new HashMap<>(entries);
         Set<AgentKind> allowed = kinds.length == 0 ? EnumSet.allOf(AgentKind.class) : EnumSet.of(kinds[0], kinds);
-        copy.put(requireNonNull(name, "name"), new Entry(token.getBytes(UTF_8), allowed));
+        copy.put(requireNonNull(name, "name"), new Entry(sha256(token), allowed));
         return new AgentDirectory(copy);
     }
 
     /** Why this hello is refused, or empty when it is accepted. */
     public Optional<String> refusal(Hello hello) {
         Entry e = entries.get(hello.agent());
-        if (e == null || !MessageDigest.isEqual(e.token(), hello.token().getBytes(UTF_8))) {
+        boolean tokenMatches = MessageDigest.isEqual(e == null ? DUMMY_DIGEST : e.tokenDigest(), sha256(hello.token()));
+        if (e == null || !tokenMatches) {
             // One answer for both, so a stranger cannot probe which agent names exist.
             return Optional.of("Unknown agent '" + hello.agent() + "' or wrong token.");
         }
@@ -109,6 +117,14 @@ public final class AgentDirectory {
                     + hello.kind().name().toLowerCase(Locale.ROOT) + " agent.");
         }
         return Optional.empty();
+    }
+
+    private static byte[] sha256(String token) {
+        try {
+            return MessageDigest.getInstance("SHA-256").digest(token.getBytes(UTF_8));
+        } catch (NoSuchAlgorithmException e) {
+            throw new IllegalStateException("This JVM has no SHA-256, which every Java platform must have.", e);
+        }
     }
 
     private static Set<AgentKind> parseKinds(String text, String key, String source) {

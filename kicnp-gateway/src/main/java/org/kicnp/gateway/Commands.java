@@ -69,6 +69,11 @@ final class Commands implements ActionSink {
             return Optional.of(ErrorReply.to(c.id(), ErrorCode.UNKNOWN_AGENT,
                     "Agent '" + c.robot() + "' is not connected, so command '" + c.id() + "' cannot be sent."));
         }
+        Optional<String> clash = runtime.feedbackClash(c);
+        if (clash.isPresent()) {
+            return Optional.of(ErrorReply.to(c.id(), ErrorCode.REJECTED, "Command '" + c.id() + "' to '" + c.robot()
+                    + "' was not sent: " + clash.get()));
+        }
         InFlight entry = new InFlight(c, robot.get(), issuer);
         if (robot.get().commandsInFlight.incrementAndGet() > MAX_IN_FLIGHT_PER_ROBOT) {
             robot.get().commandsInFlight.decrementAndGet();
@@ -127,7 +132,7 @@ final class Commands implements ActionSink {
         }
         try {
             runtime.feedback(entry.command(), f);
-        } catch (KnowledgeException e) {
+        } catch (KnowledgeException | IllegalArgumentException e) { // the latter: another action's feedback took the frame
             LOG.warn("Could not record feedback of command '{}' from '{}': {}", f.id(), robot.agent(), e.getMessage());
         }
         deliver(entry, f);
@@ -141,7 +146,7 @@ final class Commands implements ActionSink {
                         Optional.empty(), "agent '" + robot.agent() + "' disconnected");
                 try {
                     runtime.feedback(entry.command(), failed);
-                } catch (KnowledgeException e) {
+                } catch (KnowledgeException | IllegalArgumentException e) {
                     LOG.warn("Could not record the failure of command '{}': {}", entry.command().id(), e.getMessage());
                 }
                 deliver(entry, failed);

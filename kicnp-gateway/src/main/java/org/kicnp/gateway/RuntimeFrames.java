@@ -154,10 +154,17 @@ final class RuntimeFrames {
         }
     }
 
-    /** Puts the latest feedback of a robot action. */
+    /**
+     * Puts the latest feedback of a robot action.
+     *
+     * @throws IllegalArgumentException when its frame holds another action's feedback ({@link #feedbackClash})
+     */
     void feedback(Command c, Feedback f) {
+        feedbackClash(c).ifPresent(clash -> {
+            throw new IllegalArgumentException(clash);
+        });
         ensureClass(ACTION_FEEDBACK);
-        Frame.Builder b = Frame.instance("feedback_" + c.robot() + "_" + safe(c.action()), ACTION_FEEDBACK)
+        Frame.Builder b = Frame.instance(feedbackName(c), ACTION_FEEDBACK)
                 .provenance(Provenance.RUNTIME)
                 .slot(Slot.ofValue("command", DataType.STRING, Value.of(c.id())))
                 .slot(Slot.ofValue("robot", DataType.STRING, Value.of(c.robot())))
@@ -166,6 +173,33 @@ final class RuntimeFrames {
                 .slot(Slot.ofValue("detail", DataType.STRING, Value.of(f.detail())));
         f.progress().ifPresent(p -> b.slot(Slot.ofValue("progress", DataType.FLOAT, Value.of(p))));
         kb.put(b.build());
+    }
+
+    /**
+     * Why a command's feedback may not go to its frame, or empty when it may. Frame names keep only letters, digits,
+     * '_' and '-', so two actions can share one: 'fetch tea' and 'fetch_tea' of a robot, or robot 'arm' action
+     * 'left_grip' and robot 'arm_left' action 'grip'. The first to report keeps the frame; the other would overwrite
+     * its feedback, and a slot condition on it would read the wrong action's status.
+     */
+    Optional<String> feedbackClash(Command c) {
+        String name = feedbackName(c);
+        if (!kb.contains(name)) {
+            return Optional.empty();
+        }
+        Optional<Value> robot = kb.value(name, "robot");
+        Optional<Value> action = kb.value(name, "action");
+        if (robot.equals(Optional.of(Value.of(c.robot()))) && action.equals(Optional.of(Value.of(c.action())))) {
+            return Optional.empty();
+        }
+        String holder = robot.isPresent() && action.isPresent()
+                ? "holds the feedback of action " + quoted(action.get()) + " of robot " + quoted(robot.get())
+                : "is another frame of the knowledge base";
+        return Optional.of("the feedback of action '" + c.action() + "' would go to frame '" + name + "', which "
+                + holder + "; rename one of the two actions.");
+    }
+
+    private static String feedbackName(Command c) {
+        return "feedback_" + c.robot() + "_" + safe(c.action());
     }
 
     /** Retracts the presence and sensor instances of an agent that went away. */

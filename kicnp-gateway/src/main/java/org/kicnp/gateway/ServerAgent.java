@@ -3,6 +3,7 @@ package org.kicnp.gateway;
 import io.netty.buffer.ByteBuf;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import org.kicnp.core.BatchRejectedException;
@@ -10,6 +11,7 @@ import org.kicnp.core.Change;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.KnowledgeException;
+import org.kicnp.protocol.AgentKind;
 import org.kicnp.protocol.ErrorCode;
 import org.kicnp.protocol.FrameText;
 import org.kicnp.protocol.Message;
@@ -133,7 +135,8 @@ final class ServerAgent {
 
     /**
      * Relays to one agent or to every agent of a kind (not back to the sender). Answers {@code ack}, or nothing when
-     * the relay's id is empty (fire and forget); a refusal is answered either way.
+     * the relay's id is empty (fire and forget); a refusal — no such agent, or no other agent of the kind, so that
+     * nobody would receive it — is answered either way.
      */
     Optional<Message> relay(Session from, Message.Relay r) {
         Message.Relay stamped = r.from(from.agent());
@@ -145,11 +148,11 @@ final class ServerAgent {
             }
             out.send(target.get(), stamped);
         } else {
-            for (Session target : registry.ofKind(stamped.toKind().orElseThrow())) {
-                if (target != from) {
-                    out.send(target, stamped);
-                }
+            List<Session> targets = othersOfKind(from, stamped.toKind().orElseThrow());
+            if (targets.isEmpty()) {
+                return Optional.of(noneOfKind(r.id(), stamped.toKind().get()));
             }
+            targets.forEach(target -> out.send(target, stamped));
         }
         return acked(r.id());
     }
@@ -168,13 +171,18 @@ final class ServerAgent {
             }
             out.sendFrame(target.get(), frame.retain());
         } else {
-            for (Session target : registry.ofKind(route.toKind().orElseThrow())) {
-                if (target != from) {
-                    out.sendFrame(target, frame.retain());
-                }
+            List<Session> targets = othersOfKind(from, route.toKind().orElseThrow());
+            if (targets.isEmpty()) {
+                return Optional.of(noneOfKind(route.id(), route.toKind().get()));
             }
+            targets.forEach(target -> out.sendFrame(target, frame.retain()));
         }
         return acked(route.id());
+    }
+
+    /** The registered agents of a kind a relay from {@code from} goes to: every one but the sender. */
+    private List<Session> othersOfKind(Session from, AgentKind kind) {
+        return registry.ofKind(kind).stream().filter(target -> target != from).toList();
     }
 
     /** The answer to a relay that went out: an {@code ack}, or nothing for a fire-and-forget relay (empty id). */
@@ -184,7 +192,19 @@ final class ServerAgent {
 
     /** The refusal of a relay to an unknown agent; without id for a fire-and-forget relay. */
     private static ErrorReply unknownAgent(String id, String to) {
-        String text = "No agent '" + to + "' is registered.";
+        return nobody(id, "No agent '" + to + "' is registered.");
+    }
+
+    /**
+     * The refusal of a relay to a kind no other agent registered as: answered rather than acked, since an ack would
+     * tell the sender it reached someone.
+     */
+    private static ErrorReply noneOfKind(String id, AgentKind kind) {
+        return nobody(id, "No other agent of kind '" + kind.name().toLowerCase(Locale.ROOT)
+                + "' is registered, so nobody received the relay.");
+    }
+
+    private static ErrorReply nobody(String id, String text) {
         return id.isEmpty() ? ErrorReply.of(ErrorCode.UNKNOWN_AGENT, text) : ErrorReply.to(id, ErrorCode.UNKNOWN_AGENT, text);
     }
 

@@ -26,6 +26,33 @@ class AgentDirectoryTest {
         assertThat(d.refusal(new Hello("1", "eve", AgentKind.USER, "pw"))).contains("Unknown agent 'eve' or wrong token.");
     }
 
+    /**
+     * A hello under an unknown name costs what one under a known name does, so timing does not tell which names
+     * exist: with a 16 MB token the work is the token's hashing in both cases, where skipping the comparison for an
+     * unknown name answered thousands of times faster. The margin (a tenth) leaves room for a loaded machine.
+     */
+    @Test
+    void refusal_ofAnUnknownName_takesTheWorkOfAWrongToken() {
+        AgentDirectory d = AgentDirectory.empty().with("alice", "pw");
+        String token = "x".repeat(16 << 20);
+        Hello known = new Hello("1", "alice", AgentKind.USER, token);
+        Hello unknown = new Hello("1", "eve", AgentKind.USER, token);
+        long knownNanos = fastest(() -> d.refusal(known));
+        long unknownNanos = fastest(() -> d.refusal(unknown));
+        assertThat(unknownNanos).as("nanoseconds for an unknown name, against %d for a wrong token", knownNanos)
+                .isGreaterThan(knownNanos / 10);
+    }
+
+    private static long fastest(Runnable r) {
+        long best = Long.MAX_VALUE;
+        for (int i = 0; i < 5; i++) {
+            long start = System.nanoTime();
+            r.run();
+            best = Math.min(best, System.nanoTime() - start);
+        }
+        return best;
+    }
+
     @Test
     void of_whenKindUnknown_namesKeyAndSource() throws Exception {
         Properties p = new Properties();

@@ -87,6 +87,15 @@ class GatewayEndToEndTest {
     }
 
     @Test
+    void relay_toKindWithNoAgentOfIt_isRefusedWithCode() {
+        UserAgent alice = user("alice");
+        assertThatThrownBy(() -> alice.relayToKind(AgentKind.ROBOT, "stop", "Everyone stop."))
+                .isInstanceOfSatisfying(RequestRefusedException.class,
+                        e -> assertThat(e.code()).isEqualTo(ErrorCode.UNKNOWN_AGENT))
+                .hasMessage("No other agent of kind 'robot' is registered, so nobody received the relay.");
+    }
+
+    @Test
     void tell_toName_reachesThatAgent_andToUnknownAgentDoesNotThrow() {
         UserAgent alice = user("alice");
         UserAgent bob = user("bob");
@@ -122,6 +131,28 @@ class GatewayEndToEndTest {
         assertThat(heard).startsWith("started plan-1");
         assertThat(kb.value("feedback_scout_bring", "status")).contains(Value.of("ended"));
         assertThat(kb.value("signal_scout_sonar", "value")).contains(Value.of(0.5));
+    }
+
+    /**
+     * Actions whose feedback frame names would be one ('fetch tea' and 'fetch_tea' both make
+     * 'feedback_scout_fetch_tea'): the second is refused, naming both, rather than overwrite the first's feedback.
+     */
+    @Test
+    void command_whoseFeedbackFrameHoldsAnotherAction_isRefusedNamingBoth() {
+        connect(new org.kicnp.example.TeaRobot(options("scout", AgentKind.ROBOT)));
+        UserAgent alice = user("alice");
+        CommandTicket first = alice.command("scout", "fetch tea", Map.of());
+        assertThatThrownBy(() -> first.result(WAIT)).isInstanceOf(ActionFailedException.class);
+        assertThat(kb.value("feedback_scout_fetch_tea", "action")).contains(Value.of("fetch tea"));
+
+        assertThatThrownBy(() -> alice.command("scout", "fetch_tea", Map.of()))
+                .isInstanceOfSatisfying(RequestRefusedException.class,
+                        e -> assertThat(e.code()).isEqualTo(ErrorCode.REJECTED))
+                .hasMessageMatching("Command '[^']+' to 'scout' was not sent: the feedback of action 'fetch_tea' would "
+                        + "go to frame 'feedback_scout_fetch_tea', which holds the feedback of action 'fetch tea' of "
+                        + "robot 'scout'; rename one of the two actions\\.");
+        assertThat(kb.value("feedback_scout_fetch_tea", "action")).contains(Value.of("fetch tea"));
+        assertThat(alice.command("scout", "fetch tea", Map.of())).isNotNull(); // the first action goes on as before
     }
 
     @Test
@@ -200,6 +231,18 @@ class GatewayEndToEndTest {
         open.add(mallory);
         assertThatThrownBy(() -> mallory.startAndAwait(WAIT)).isInstanceOf(AuthenticationException.class)
                 .hasMessage("Server refused agent 'alice': Unknown agent 'alice' or wrong token.");
+    }
+
+    /** An unknown name and a known name with a wrong token get one answer, so a stranger cannot probe for names. */
+    @Test
+    void hello_withUnknownName_andWithWrongToken_getTheSameRefusal() throws IOException {
+        for (String name : List.of("alice", "eve")) {
+            try (RawClient raw = new RawClient(server.port())) {
+                raw.send(new Message.Hello("1", name, AgentKind.USER, "guess"));
+                assertThat(raw.readUntilClosed()).containsExactly(new Message.AuthResult("1", false, "kicnp",
+                        Optional.of("Unknown agent '" + name + "' or wrong token.")));
+            }
+        }
     }
 
     @Test

@@ -11,6 +11,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.ErrorCode;
 import org.kicnp.protocol.Framing;
 import org.kicnp.protocol.Message;
 
@@ -84,6 +85,23 @@ class RelayForwardingTest {
             assertThat(carol.read()).isEqualTo(all);
             alice.send(new Message.Query("q", "NoSuchFrame")); // alice's next message is the answer, not her relay
             assertThat(alice.read()).isNotInstanceOf(Message.Relay.class);
+        }
+    }
+
+    /** Whether the relay is forwarded as it is (it names its sender) or decoded, nobody receiving it is an error. */
+    @Test
+    void relay_toKindWithNoOtherAgentOfIt_isRefusedWithUnknownAgent_onBothPaths() throws IOException {
+        try (RawClient alice = agent("alice", "a")) {
+            String nobody = "No other agent of kind 'robot' is registered, so nobody received the relay.";
+            alice.send(Message.Relay.toKind("8", "alice", AgentKind.ROBOT, "stop", "now"));
+            assertThat(alice.read()).isEqualTo(Message.ErrorReply.to("8", ErrorCode.UNKNOWN_AGENT, nobody));
+            alice.send(Message.Relay.toKind("9", "carol", AgentKind.ROBOT, "stop", "now"));
+            assertThat(alice.read()).isEqualTo(Message.ErrorReply.to("9", ErrorCode.UNKNOWN_AGENT, nobody));
+            alice.send(Message.Relay.toKind("", "alice", AgentKind.ROBOT, "stop", "now"));
+            assertThat(alice.read()).isEqualTo(Message.ErrorReply.of(ErrorCode.UNKNOWN_AGENT, nobody));
+            alice.send(Message.Relay.toKind("10", "alice", AgentKind.USER, "all", "alone")); // alice is its only user
+            assertThat(alice.read()).isEqualTo(Message.ErrorReply.to("10", ErrorCode.UNKNOWN_AGENT,
+                    "No other agent of kind 'user' is registered, so nobody received the relay."));
         }
     }
 

@@ -18,6 +18,13 @@ public sealed interface Message {
     /** Letters, digits, {@code _} and {@code -}, starting with a letter or {@code _}: the names of agents. */
     Pattern NAME = Pattern.compile("[\\p{L}_][\\p{L}\\p{N}_\\-]*");
 
+    /**
+     * The most characters a name (of an agent, a robot, a sensor) or a command's action may have: far below the
+     * frame's limit, so that one member cannot fill a frame, the knowledge base's frame names or an error that
+     * quotes it.
+     */
+    int MAX_NAME_LENGTH = 256;
+
     /** A message that expects an answer echoing its {@link #id()}. */
     sealed interface Request extends Message permits Hello, Register, Relay, Command, Query, Ask, Assert, Destroy,
             Subscribe, Unsubscribe, Push, Pull, Prove, Why, WhyNot, Cancel {
@@ -80,6 +87,8 @@ public sealed interface Message {
             if (toAgent.isPresent() == toKind.isPresent()) {
                 throw new IllegalArgumentException("A relay needs exactly one of toAgent and toKind.");
             }
+            checkLength(from, "from");
+            toAgent.ifPresent(to -> checkLength(to, "toAgent"));
         }
 
         /** A relay to one agent by name. */
@@ -107,6 +116,7 @@ public sealed interface Message {
             if (action.isBlank()) {
                 throw new IllegalArgumentException("A command needs an action.");
             }
+            checkLength(action, "action");
             args = Map.copyOf(args);
         }
     }
@@ -445,6 +455,13 @@ public sealed interface Message {
         }
     }
 
+    private static void checkLength(String name, String member) {
+        if (name.length() > MAX_NAME_LENGTH) {
+            throw new IllegalArgumentException("The member '" + member + "' is " + name.length()
+                    + " characters long; at most " + MAX_NAME_LENGTH + " are allowed.");
+        }
+    }
+
     /** An unmodifiable copy that keeps the given order (a frame's slot order), which {@link Map#copyOf} does not. */
     private static <V> Map<String, V> ordered(Map<String, V> map) {
         Map<String, V> copy = new java.util.LinkedHashMap<>(map.size() * 2);
@@ -454,6 +471,7 @@ public sealed interface Message {
 
     private static void checkName(String name, String what) {
         requireNonNull(name, what);
+        checkLength(name, what);
         if (!NAME.matcher(name).matches()) {
             throw new IllegalArgumentException("'" + name + "' is not a valid " + what
                     + " name: use letters, digits, '_' and '-', starting with a letter or '_'.");

@@ -100,8 +100,8 @@ final class RelayScanner {
                         return null;
                     }
                 } else if (member <= TO_KIND) {
-                    if (escaped) {
-                        return null;
+                    if (escaped || member != ID && strEnd - strStart > Message.MAX_NAME_LENGTH) {
+                        return null; // a name that may be too long: decoded in full, which says so
                     }
                     // Names repeat from relay to relay: answered from NameCache (the empty id of every
                     // fire-and-forget relay is the one empty string).
