@@ -46,7 +46,8 @@ class PythonSdkTest {
     private static final AgentDirectory AGENTS = AgentDirectory.empty()
             .with("pyrobot", "robot-token", AgentKind.ROBOT)
             .with("pyrobot2", "robot2-token", AgentKind.ROBOT)
-            .with("pyuser", "user-token", AgentKind.USER);
+            .with("pyuser", "user-token", AgentKind.USER)
+            .with("scout", "scout-token", AgentKind.ROBOT);
     /** The knowledge the Python tests read and change: cups, and the runtime classes the gateway fills. */
     private static final String KNOWLEDGE = """
             <KNOWLEDGEBASE>
@@ -84,7 +85,8 @@ class PythonSdkTest {
             assertThat(gateway.server.metrics().protocolErrors()).as("protocol errors").isZero();
             assertThat(gateway.heard).contains("started py-wave", "progress py-wave 0.5 halfway",
                     "ended py-wave: waved 3 times", "failed py-raise: Agent 'pyrobot' failed on 'grab': ValueError: no arm",
-                    "failed py-cancel: cancelled: stop now", "ended py-after-restart: waved 1 times");
+                    "failed py-cancel: cancelled: stop now", "ended py-after-restart: waved 1 times",
+                    "ended py-tea: brought a cup of milk");
             Eventually.await("every Python agent is gone", () -> gateway.server.registeredAgents().isEmpty());
             assertThat(gateway.kb.instancesOf("SensorSignal")).isEmpty();
         }
@@ -142,7 +144,8 @@ class PythonSdkTest {
             command.addAll(List.of(args));
             ProcessBuilder pb = new ProcessBuilder(command).directory(SDK.toFile());
             pb.environment().put("KICNP_PORT", Integer.toString(server.port()));
-            pb.environment().put("KICNP_AGENTS", "pyrobot:robot:robot-token,pyrobot2:robot:robot2-token,pyuser:user:user-token");
+            pb.environment().put("KICNP_AGENTS", "pyrobot:robot:robot-token,pyrobot2:robot:robot2-token,"
+                    + "pyuser:user:user-token,scout:robot:scout-token");
             pb.environment().put("PYTHONDONTWRITEBYTECODE", "1");
             pb.environment().putAll(env);
             Process p = pb.start();
