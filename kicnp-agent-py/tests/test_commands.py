@@ -47,8 +47,10 @@ class RobotCommandsTest(GatewayTestCase):
 
     def test_handlerThatRaises_failsTheCommandWithTheExceptionsMessage(self):
         self.robot()
-        self.gateway.call("command", id="py-raise", robot="pyrobot", action="grab", args={})
-        eventually("py-raise ends", lambda: len(self.gateway.heard("py-raise")) == 2)
+        with self.assertLogs("kicnp_agent", "WARNING") as logged:
+            self.gateway.call("command", id="py-raise", robot="pyrobot", action="grab", args={})
+            eventually("py-raise ends", lambda: len(self.gateway.heard("py-raise")) == 2)
+        self.assertIn("Agent 'pyrobot' failed on command 'py-raise'.", [r.getMessage() for r in logged.records])
         self.assertEqual(["started py-raise", "failed py-raise: Agent 'pyrobot' failed on 'grab': ValueError: no arm"],
                          self.gateway.heard("py-raise"))
 
