@@ -394,7 +394,7 @@ class Agent:
             except AuthenticationError as e:
                 self._stop(e)
                 return
-            except (OSError, ProtocolError, NotConnectedError) as e:
+            except (OSError, ProtocolError) as e:
                 if self._closed.is_set():
                     return
                 self._last_failure = str(e) or type(e).__name__
@@ -459,7 +459,7 @@ class Agent:
                 if connection.is_open and time.monotonic() - connection.last_sent >= interval:
                     try:
                         connection.send({"type": "heartbeat", "time": int(time.time() * 1000)})
-                    except (OSError, NotConnectedError):
+                    except OSError:
                         return  # the connection is gone; the read loop notices and reconnects
 
         threading.Thread(target=beat, name="agent-heartbeat-" + self.name, daemon=True).start()

@@ -10,7 +10,6 @@ import threading
 import time
 
 from . import wire
-from .errors import NotConnectedError
 
 _RECEIVE = 65536
 
@@ -116,7 +115,7 @@ class Connection:
         """Writes one message (a dict with ``type``); an ``OSError`` when the connection fails."""
         data = wire.encode(message, self._options.max_frame_bytes)
         if self._closed:
-            raise NotConnectedError("The connection is closed; the %s message was not sent." % message["type"])
+            raise ConnectionError("The connection is closed.")
         self._transport.send(data)
         self.last_sent = time.monotonic()
 

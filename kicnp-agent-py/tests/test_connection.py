@@ -3,7 +3,7 @@ import time
 import unittest
 
 from harness import GatewayTestCase, eventually
-from kicnp_agent import Agent, AuthenticationError
+from kicnp_agent import Agent, AuthenticationError, frame_xml
 
 
 class Counting(Agent):
@@ -32,6 +32,24 @@ class ConnectionTest(GatewayTestCase):
         self.assertIs(refused.exception, agent.stopped)
         self.assertFalse(agent.is_connected)
 
+    def test_capabilitiesTheServerRefuses_stopTheAgentNamingTheProblem(self):
+        agent = self.connect("pyrobot", capabilities=[frame_xml("Fly", "NoSuchAction")])
+        with self.assertRaises(AuthenticationError) as refused:
+            agent.start_and_wait(10)
+        self.assertTrue(str(refused.exception).startswith("The server refused to register agent 'pyrobot' (rejected): "),
+                        str(refused.exception))
+        self.assertIn("NoSuchAction", str(refused.exception))
+
+    def test_aSecondConnectionUnderTheSameName_replacesTheFirst_whichStops(self):
+        first = self.connect("pyrobot").start_and_wait(10)
+        with self.assertLogs("kicnp_agent", "ERROR") as logged:
+            self.connect("pyrobot").start_and_wait(10)
+            eventually("the first stops", lambda: first.stopped is not None)
+        self.assertIsInstance(first.stopped, AuthenticationError)
+        self.assertTrue(str(first.stopped).startswith("Agent 'pyrobot' stops: "), str(first.stopped))
+        self.assertIn("Agent 'pyrobot' stops: %s" % first.stopped, [r.getMessage() for r in logged.records])
+        self.assertFalse(first.is_connected)
+
     def test_heartbeats_keepAnIdleAgentConnectedPastTheServersTimeout(self):
         agent = self.connect("pyrobot", Counting).start_and_wait(10)
         time.sleep(4.5)  # the gateway drops an agent it has not heard for 3 s
@@ -40,7 +58,10 @@ class ConnectionTest(GatewayTestCase):
 
     def test_agentTheServerDrops_reconnectsAndRegistersAgain(self):
         agent = self.connect("pyrobot", Counting, heartbeat_interval=30).start_and_wait(10)
-        eventually("the gateway drops the silent agent", lambda: agent.disconnected, timeout=10)
+        with self.assertLogs("kicnp_agent", "WARNING") as logged:
+            eventually("the gateway drops the silent agent", lambda: agent.disconnected, timeout=10)
+        self.assertTrue(any(r.getMessage().startswith("Agent 'pyrobot': the server says heartbeat_timeout: ")
+                            for r in logged.records), logged.output)
         eventually("the agent is registered again", lambda: agent.connected == 2 and agent.is_connected)
         self.assertIn("pyrobot", self.gateway.call("agents")["agents"])
 

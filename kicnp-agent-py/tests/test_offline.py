@@ -1,12 +1,11 @@
-"""The agent without a gateway: options, feedback rules, refusals before sending, and a server that never answers
-(a socket of the test's own that speaks only the handshake)."""
-import json
-import socket
-import struct
+"""The agent without a gateway: options, feedback rules, refusals before sending, and a stand-in gateway that stays
+silent, drops the connection, closes it with an error or sends what is not the protocol."""
 import threading
 import unittest
 
-from kicnp_agent import (ActionHandle, Agent, AgentTimeoutError, Command, NotConnectedError)
+from fake_gateway import FakeGateway
+from harness import eventually
+from kicnp_agent import ActionHandle, Agent, AgentTimeoutError, Command, NotConnectedError, RequestRefusedError
 
 
 class OptionsTest(unittest.TestCase):
@@ -70,49 +69,13 @@ class NotConnectedTest(unittest.TestCase):
                          "day (86400 s), not 0.0005 s.", str(error.exception))
 
 
-class SilentServer:
-    """Accepts one agent, authenticates and registers it, then reads everything and answers nothing."""
-
-    def __init__(self):
-        self.listener = socket.create_server(("127.0.0.1", 0))
-        self.port = self.listener.getsockname()[1]
-        self.received = []
-        threading.Thread(target=self._serve, daemon=True).start()
-
-    def _serve(self):
-        conn, _ = self.listener.accept()
-        with conn:
-            try:
-                while True:
-                    message = self._read(conn)
-                    self.received.append(message["type"])
-                    if message["type"] == "hello":
-                        self._write(conn, {"type": "auth_result", "id": message["id"], "accepted": True, "server": "t"})
-                    elif message["type"] == "register":
-                        self._write(conn, {"type": "ack", "id": message["id"]})
-            except (OSError, struct.error, ValueError):
-                return
-
-    @staticmethod
-    def _read(conn):
-        header = conn.recv(4, socket.MSG_WAITALL)
-        return json.loads(conn.recv(struct.unpack(">I", header)[0], socket.MSG_WAITALL))
-
-    @staticmethod
-    def _write(conn, message):
-        payload = json.dumps(dict(message, v=1)).encode()
-        conn.sendall(struct.pack(">I", len(payload)) + payload)
-
-    def close(self):
-        self.listener.close()
-
-
-class RequestTimeoutTest(unittest.TestCase):
+class StandInGatewayTest(unittest.TestCase):
 
     def setUp(self):
-        self.server = SilentServer()
+        self.server = FakeGateway()
         self.addCleanup(self.server.close)
-        self.agent = Agent("scout", "t", kind="user", port=self.server.port, request_timeout=0.3)
+        self.agent = Agent("scout", "t", kind="user", port=self.server.port, request_timeout=0.3, backoff_initial=0.01,
+                           backoff_max=0.05)
         self.addCleanup(self.agent.close)
         self.agent.start_and_wait(5)
 
@@ -131,6 +94,45 @@ class RequestTimeoutTest(unittest.TestCase):
             self.agent.query("Cup", timeout=5)
         self.assertEqual("Agent 'scout' was closed.", str(error.exception))
         self.assertFalse(self.agent.is_connected)
+
+    def test_aDroppedConnection_failsTheRequestWaitingOnIt_andTheAgentReconnects(self):
+        threading.Timer(0.1, self.server.drop).start()
+        with self.assertRaises(NotConnectedError) as error:
+            self.agent.query("Cup", timeout=5)
+        self.assertEqual("Agent 'scout' lost its connection.", str(error.exception))
+        eventually("the agent is registered again", lambda: self.server.connections == 2 and self.agent.is_connected)
+
+    def test_aServerThatClosesWithAnError_isNamedInTheFailureOfTheRequestWaiting(self):
+        def close_with_error(server, message):
+            server.send({"type": "error", "code": "heartbeat_timeout", "message": "Nothing was heard."})
+            server.drop()
+        self.server._answer = close_with_error
+        with self.assertLogs("kicnp_agent", "WARNING"), self.assertRaises(NotConnectedError) as error:
+            self.agent.query("Cup", timeout=5)
+        self.assertEqual("Agent 'scout' lost its connection: the server closed it (heartbeat_timeout): Nothing was "
+                         "heard.", str(error.exception))
+
+    def test_aFrameTooLargeForTheServer_isTheAnswerToTheRequestInFlight(self):
+        def too_large(server, message):
+            server.send({"type": "error", "code": "frame_too_large", "message": "The frame is 2 MiB, above 1 MiB."})
+            server.drop()
+        self.server._answer = too_large
+        with self.assertLogs("kicnp_agent", "WARNING"), self.assertRaises(RequestRefusedError) as error:
+            self.agent.assert_frames("<FRAME/>", timeout=5)
+        self.assertEqual(("frame_too_large", "The frame is 2 MiB, above 1 MiB."), (error.exception.code,
+                                                                                 str(error.exception)))
+
+    def test_whatIsNotTheProtocol_dropsTheConnection_andTheAgentReconnects(self):
+        with self.assertLogs("kicnp_agent", "INFO") as logged:
+            self.server.send({"type": "ack", "id": "x"}, version=2)
+            eventually("the agent is registered again", lambda: self.server.connections == 2 and self.agent.is_connected)
+            self.server.send_bytes(b"not json")
+            eventually("the agent is registered a third time", lambda: self.server.connections == 3
+                       and self.agent.is_connected)
+        lost = [r.getMessage() for r in logged.records if "lost its connection" in r.getMessage()]
+        self.assertEqual(2, len(lost), lost)
+        self.assertIn("(The server speaks protocol version 2, not 1.); reconnecting.", lost[0])
+        self.assertIn("(The server sent a frame that is not UTF-8 JSON", lost[1])
 
 
 if __name__ == "__main__":

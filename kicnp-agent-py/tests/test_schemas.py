@@ -1,64 +1,34 @@
 """Every message the SDK sends conforms to its published schema (docs/protocol/schemas/TYPE.json): an agent drives
-each call against a socket of the test's own that answers as a gateway would and records what it receives."""
+each call against a stand-in gateway that answers as a gateway would and keeps what it receives."""
 import json
 import pathlib
-import socket
-import struct
-import threading
 import unittest
 
+from fake_gateway import FakeGateway
 from harness import eventually
 from kicnp_agent import Agent, Ref, frame_xml
 from schema_check import problems
 
 SCHEMAS = pathlib.Path(__file__).resolve().parent.parent.parent / "docs" / "protocol" / "schemas"
 REASON = {"instance": "cup1", "ofClass": "Cup", "derived": False, "binding": {}, "conditions": [], "supports": []}
-ANSWERS = {"hello": {"type": "auth_result", "accepted": True, "server": "fake"}, "query": {"type": "frames", "frames": []},
+ANSWERS = {"query": {"type": "frames", "frames": []},
            "ask": {"type": "answer"}, "prove": {"type": "proofs", "proofs": []},
            "why": {"type": "explained", "reason": REASON},
            "why_not": {"type": "not_fired", "frame": "Cup", "summary": "It has.", "slots": [], "bindings": [],
                        "truncated": False}}
-ACKED = {"register", "assert", "destroy", "subscribe", "unsubscribe", "command", "cancel", "relay"}
+ACKED = {"assert", "destroy", "subscribe", "unsubscribe", "command", "cancel", "relay"}
 
 
 def schema(kind):
     return json.loads((SCHEMAS / (kind + ".json")).read_text(encoding="utf-8"))
 
 
-class AnsweringServer:
-    """Accepts one agent and answers each request as a gateway would; keeps every message it receives."""
-
-    def __init__(self):
-        self.listener = socket.create_server(("127.0.0.1", 0))
-        self.port = self.listener.getsockname()[1]
-        self.received = []
-        self._conn = None
-        self._lock = threading.Lock()
-        threading.Thread(target=self._serve, daemon=True).start()
-
-    def _serve(self):
-        self._conn, _ = self.listener.accept()
-        with self._conn:
-            try:
-                while True:
-                    header = self._conn.recv(4, socket.MSG_WAITALL)
-                    message = json.loads(self._conn.recv(struct.unpack(">I", header)[0], socket.MSG_WAITALL))
-                    self.received.append(message)
-                    kind = message["type"]
-                    if kind in ANSWERS:
-                        self.send(dict(ANSWERS[kind], id=message["id"]))
-                    elif kind in ACKED and message["id"]:
-                        self.send({"type": "ack", "id": message["id"]})
-            except (OSError, struct.error, ValueError):
-                return
-
-    def send(self, message):
-        payload = json.dumps(dict(message, v=1)).encode()
-        with self._lock:
-            self._conn.sendall(struct.pack(">I", len(payload)) + payload)
-
-    def close(self):
-        self.listener.close()
+def answer_as_a_gateway(gateway, message):
+    kind = message["type"]
+    if kind in ANSWERS:
+        gateway.send(dict(ANSWERS[kind], id=message["id"]))
+    elif kind in ACKED and message["id"]:
+        gateway.send({"type": "ack", "id": message["id"]})
 
 
 class SchemaTest(unittest.TestCase):
@@ -78,7 +48,7 @@ class SchemaTest(unittest.TestCase):
                                   schema("sensor")))
 
     def test_everyMessageTheSdkSends_conformsToItsSchema(self):
-        server = AnsweringServer()
+        server = FakeGateway(answer_as_a_gateway)
         self.addCleanup(server.close)
         agent = Agent("scout", "t", port=server.port, heartbeat_interval=0.05, capabilities=[frame_xml("Fetch")])
         self.addCleanup(agent.close)
