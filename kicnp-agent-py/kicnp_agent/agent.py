@@ -2,13 +2,13 @@
 import functools
 import itertools
 import logging
-import queue
 import random
 import threading
 import time
 
 from .actions import CommandRunner, CommandTicket
 from .connection import Connection
+from .dispatch import EventQueue, PendingRequests
 from .errors import (AgentError, AgentTimeoutError, AuthenticationError, NotConnectedError, ProtocolError,
                      RequestRefusedError)
 from .frames import Frame
@@ -17,7 +17,6 @@ from .messages import (Changed, Command, Feedback, NotFired, ProofNode, Reason, 
 from .options import AgentKind, AgentOptions
 
 LOG = logging.getLogger("kicnp_agent")
-_EVENT_QUEUE = 10000
 _MAX_TTL_MS = 86400000
 # Errors after which the server closes the connection (docs/protocol.md, "Error codes").
 _CLOSING = {"frame_too_large", "bad_json", "unsupported_version", "unknown_type", "bad_message", "not_authenticated",
@@ -44,7 +43,7 @@ class Agent:
         self._actions = {}
         self._callbacks = {}
         self._subscriptions = []
-        self._pending = {}
+        self._pending = PendingRequests()
         self._tickets = {}
         self._lock = threading.Lock()
         self._ids = itertools.count(1)
@@ -52,10 +51,10 @@ class Agent:
         self._command_ids = _base36(int(time.time() * 1000))
         self._runner = CommandRunner(name, self._run_command, lambda handle, reason: self.on_cancel(handle, reason),
                                      self._send_feedback)
-        self._events = queue.Queue(_EVENT_QUEUE)
+        self._closed = threading.Event()
+        self._events = EventQueue(name, self._closed)
         self._connection = None
         self._registered = threading.Event()
-        self._closed = threading.Event()
         self._fatal = None
         self._closing_error = None
         self._last_failure = None
@@ -133,7 +132,7 @@ class Agent:
         """Starts connecting in the background and returns at once; see :meth:`wait_connected`."""
         if self._threads:
             raise RuntimeError("Agent '%s' was already started." % self.name)
-        for name, target in (("agent-" + self.name, self._supervise), ("agent-events-" + self.name, self._deliver)):
+        for name, target in (("agent-" + self.name, self._supervise), ("agent-events-" + self.name, self._events.run)):
             thread = threading.Thread(target=target, name=name, daemon=True)
             self._threads.append(thread)
             thread.start()
@@ -185,7 +184,7 @@ class Agent:
         for thread in self._threads:
             if thread is not current:
                 thread.join(2.0)
-        self._fail_pending(NotConnectedError("Agent '%s' was closed." % self.name))
+        self._pending.fail_all(NotConnectedError("Agent '%s' was closed." % self.name))
 
     def __enter__(self):
         return self
@@ -357,30 +356,18 @@ class Agent:
 
     def _request(self, message, expected, what, timeout):
         """Sends a request with a fresh id and waits for its answer, which must be ``expected`` or an error."""
-        request_id = str(next(self._ids))
-        message = dict(message, id=message.get("id", request_id))
-        waiter = _Waiter()
-        with self._lock:
-            self._pending[message["id"]] = waiter
-        try:
-            self._send(message)
-            limit = self.options.request_timeout if timeout is None else timeout
-            if not waiter.done.wait(limit):
-                raise AgentTimeoutError("The server did not answer %s (request '%s') within %g s."
-                                        % (what, message["id"], limit))
-            if waiter.error is not None:
-                raise waiter.error
-            answer = waiter.answer
-            if answer["type"] == "error":
-                raise RequestRefusedError(answer["code"], "The server refused %s (%s): %s"
-                                          % (what, answer["code"], answer["message"]))
-            if answer["type"] != expected:
-                raise ProtocolError("The server answered %s with a %s message, not %s." % (what, answer["type"],
-                                                                                          expected))
-            return answer
-        finally:
-            with self._lock:
-                self._pending.pop(message["id"], None)
+        message = dict(message, id=message.get("id") or str(next(self._ids)))
+        limit = self.options.request_timeout if timeout is None else timeout
+        answer = self._pending.call(message["id"], lambda: self._send(message), limit)
+        if answer is None:
+            raise AgentTimeoutError("The server did not answer %s (request '%s') within %g s."
+                                    % (what, message["id"], limit))
+        if answer["type"] == "error":
+            raise RequestRefusedError(answer["code"], "The server refused %s (%s): %s"
+                                      % (what, answer["code"], answer["message"]))
+        if answer["type"] != expected:
+            raise ProtocolError("The server answered %s with a %s message, not %s." % (what, answer["type"], expected))
+        return answer
 
     def _supervise(self):
         delay = self.options.backoff_initial
@@ -401,8 +388,8 @@ class Agent:
                 LOG.info("Agent '%s' lost its connection to %s:%d (%s); reconnecting.", self.name, self.options.host,
                          self.options.port, self._last_failure)
             except Exception as e:  # a bug in the program (say, in capabilities()) or a server we do not understand
-                self._stop(AgentError("Agent '%s' stops: %s" % (self.name, _sentence("%s: %s" % (type(e).__name__, e)))))
-                LOG.exception("Agent '%s' stops.", self.name)
+                self._stop(AgentError("Agent '%s' failed: %s" % (self.name, _sentence("%s: %s" % (type(e).__name__, e)))),
+                           e)
                 return
             finally:
                 if connection is not None:
@@ -412,9 +399,9 @@ class Agent:
                 return
             delay = min(delay * 2, self.options.backoff_max)
 
-    def _stop(self, error):
+    def _stop(self, error, cause=None):
         self._fatal = error
-        LOG.error("Agent '%s' stops: %s", self.name, error)
+        LOG.error("%s The agent stops.", error, exc_info=cause)
 
     def _handshake(self, connection):
         connection.send({"type": "hello", "id": "hello", "agent": self.name, "kind": self.kind.value,
@@ -437,7 +424,7 @@ class Agent:
         self._registered.set()
         self._start_heartbeats(connection)
         LOG.info("Agent '%s' registered with %s:%d.", self.name, self.options.host, self.options.port)
-        self._event(self.on_connected)
+        self._events.put(self.on_connected)
 
     def _await_direct(self, connection, request_id):
         while True:
@@ -476,12 +463,12 @@ class Agent:
                 self._feedback(Feedback(m["id"], m["robot"], m["stage"], m["detail"], m.get("progress")))
             elif kind == "relay":
                 relay = Relay(m["id"], m["from"], m["subject"], m["body"], m.get("toAgent"), m.get("toKind"))
-                self._event(functools.partial(self.on_relay, relay))
+                self._events.put(functools.partial(self.on_relay, relay))
             elif kind == "changed":
                 values = m.get("values")
                 change = Changed(m["ofClass"], m["change"], m["name"], m.get("frame"),
                                  None if values is None else value_from_json(values))
-                self._event(functools.partial(self._changed, change))
+                self._events.put(functools.partial(self._changed, change))
             elif kind == "error":
                 self._error(m)
             elif kind != "heartbeat":
@@ -489,7 +476,8 @@ class Agent:
 
     def _error(self, m):
         if m["code"] == "superseded":
-            raise AuthenticationError("Agent '%s' stops: %s" % (self.name, _sentence(m["message"])))
+            raise AuthenticationError("Agent '%s' was replaced by a newer connection under its name: %s"
+                                      % (self.name, _sentence(m["message"])))
         if m.get("id"):
             self._complete(m)
             return
@@ -498,12 +486,7 @@ class Agent:
             self._closing_error = m
 
     def _complete(self, answer):
-        with self._lock:
-            waiter = self._pending.get(answer["id"])
-        if waiter is not None:
-            waiter.answer = answer
-            waiter.done.set()
-        elif answer["type"] == "error":
+        if not self._pending.answer(answer) and answer["type"] == "error":
             LOG.warning("Agent '%s': request '%s' was refused (%s): %s", self.name, answer["id"], answer["code"],
                         answer["message"])
 
@@ -518,40 +501,18 @@ class Agent:
             callback = self._callbacks.get(change.of_class)
         (callback or self.on_changed)(change)
 
-    def _event(self, call):
-        """Queues a call for the event thread; when the queue is full the reader waits, so TCP pushes back."""
-        while not self._closed.is_set():
-            try:
-                self._events.put(call, timeout=0.1)
-                return
-            except queue.Full:
-                continue
-
-    def _deliver(self):
-        while True:
-            try:
-                call = self._events.get(timeout=0.1)
-            except queue.Empty:
-                if self._closed.is_set():
-                    return
-                continue
-            try:
-                call()
-            except Exception:
-                LOG.exception("Agent '%s': a relay or change handler failed.", self.name)
-
     def _lost(self):
         was = self._registered.is_set()
         self._registered.clear()
         self._connection = None
         why, self._closing_error = self._closing_error, None
         if self._closed.is_set():
-            self._fail_pending(NotConnectedError("Agent '%s' was closed." % self.name))
+            self._pending.fail_all(NotConnectedError("Agent '%s' was closed." % self.name))
         elif why is not None and why["code"] == "frame_too_large":
             # The request in flight was too long for the server, which said so and closed: that is its answer.
-            self._fail_pending(RequestRefusedError(why["code"], why["message"]))
+            self._pending.fail_all(RequestRefusedError(why["code"], why["message"]))
         else:
-            self._fail_pending(NotConnectedError(
+            self._pending.fail_all(NotConnectedError(
                 "Agent '%s' lost its connection%s" % (self.name, "." if why is None else ": the server closed it (%s): %s"
                                                        % (why["code"], _sentence(why["message"])))))
         with self._lock:
@@ -562,23 +523,7 @@ class Agent:
         self._runner.connection_lost("agent '%s' was closed" % self.name if self._closed.is_set()
                                      else "the connection to the gateway was lost")
         if was and not self._closed.is_set():
-            self._event(lambda: self.on_disconnected("connection lost"))
-
-    def _fail_pending(self, error):
-        with self._lock:
-            waiters, self._pending = list(self._pending.values()), {}
-        for waiter in waiters:
-            waiter.error = error
-            waiter.done.set()
-
-
-class _Waiter:
-    """A request's answer, or the error that ended the wait."""
-
-    def __init__(self):
-        self.done = threading.Event()
-        self.answer = None
-        self.error = None
+            self._events.put(lambda: self.on_disconnected("connection lost"))
 
 
 def _sentence(text):

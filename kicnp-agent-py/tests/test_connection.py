@@ -46,8 +46,9 @@ class ConnectionTest(GatewayTestCase):
             self.connect("pyrobot").start_and_wait(10)
             eventually("the first stops", lambda: first.stopped is not None)
         self.assertIsInstance(first.stopped, AuthenticationError)
-        self.assertTrue(str(first.stopped).startswith("Agent 'pyrobot' stops: "), str(first.stopped))
-        self.assertIn("Agent 'pyrobot' stops: %s" % first.stopped, [r.getMessage() for r in logged.records])
+        self.assertTrue(str(first.stopped).startswith("Agent 'pyrobot' was replaced by a newer connection under its "
+                                                      "name: "), str(first.stopped))
+        self.assertIn("%s The agent stops." % first.stopped, [r.getMessage() for r in logged.records])
         self.assertFalse(first.is_connected)
 
     def test_heartbeats_keepAnIdleAgentConnectedPastTheServersTimeout(self):

@@ -5,7 +5,7 @@ import unittest
 
 from fake_gateway import FakeGateway
 from harness import eventually
-from kicnp_agent import ActionHandle, Agent, AgentTimeoutError, Command, NotConnectedError, RequestRefusedError
+from kicnp_agent import ActionHandle, Agent, AgentError, AgentTimeoutError, Command, NotConnectedError, RequestRefusedError
 
 
 class OptionsTest(unittest.TestCase):
@@ -133,6 +133,25 @@ class StandInGatewayTest(unittest.TestCase):
         self.assertEqual(2, len(lost), lost)
         self.assertIn("(The server speaks protocol version 2, not 1.); reconnecting.", lost[0])
         self.assertIn("(The server sent a frame that is not UTF-8 JSON", lost[1])
+
+
+class BrokenCapabilitiesTest(unittest.TestCase):
+
+    def test_aProgramErrorWhileConnecting_stopsTheAgentNamingIt(self):
+        class Broken(Agent):
+            def capabilities(self):
+                raise RuntimeError("no frames today")
+
+        server = FakeGateway()
+        self.addCleanup(server.close)
+        agent = Broken("scout", "t", port=server.port)
+        self.addCleanup(agent.close)
+        with self.assertLogs("kicnp_agent", "ERROR") as logged, self.assertRaises(AgentError) as error:
+            agent.start_and_wait(5)
+        self.assertEqual("Agent 'scout' failed: RuntimeError: no frames today.", str(error.exception))
+        self.assertEqual(["Agent 'scout' failed: RuntimeError: no frames today. The agent stops."],
+                         [r.getMessage() for r in logged.records])
+        self.assertIs(error.exception, agent.stopped)
 
 
 if __name__ == "__main__":
