@@ -35,7 +35,7 @@ class ActionHandle:
     def started(self):
         """Reports that the command started; only once (the SDK reports it before an action handler runs)."""
         with self._lock:
-            if self._started or self._done:
+            if self._started or self._done or self._cut_off:
                 return
             self._started = True
         self._report("started", "")

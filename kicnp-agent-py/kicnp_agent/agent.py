@@ -254,6 +254,20 @@ class Agent:
         """Removes a RUNTIME instance (with what the engine derived from it, in the platform)."""
         self._request({"type": "destroy", "frame": frame}, "ack", "the destroy of frame '%s'" % frame, timeout)
 
+    def push(self, *frames, timeout=None):
+        """Sends frames (XML, parents first) to the server, as a peer platform shares knowledge: stored all or none."""
+        if not frames:
+            raise ValueError("Nothing to push: no frames given.")
+        self._request({"type": "push", "frames": list(frames)}, "ack", "the push of %d frame(s)" % len(frames), timeout)
+
+    def pull(self, root=None, timeout=None):
+        """A subtree of the server's knowledge base (the whole of it without ``root``) as :class:`Frame` s, parents
+        first and RUNTIME frames left out."""
+        message = {"type": "pull"} if root is None else {"type": "pull", "root": root}
+        answer = self._request(message, "frames", "the pull of %s" % ("the knowledge base" if root is None
+                                                                     else "the subtree of '%s'" % root), timeout)
+        return [Frame.parse(xml) for xml in answer["frames"]]
+
     def subscribe(self, of_class, callback=None, timeout=None):
         """Hears of every change to frames of ``of_class`` (and below): ``callback(change)`` with a :class:`Changed`,
         or :meth:`on_changed` without one, on the event thread. Renewed by itself after a reconnect."""
@@ -375,6 +389,8 @@ class Agent:
             connection = None
             try:
                 connection = Connection.open(self.options)
+                if self._closed.is_set():  # closed while connecting
+                    return
                 self._handshake(connection)
                 delay = self.options.backoff_initial
                 self._read_loop(connection)

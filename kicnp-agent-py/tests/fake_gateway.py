@@ -60,4 +60,8 @@ class FakeGateway:
             self._conn.shutdown(socket.SHUT_RDWR)
 
     def close(self):
+        try:
+            self.listener.shutdown(socket.SHUT_RDWR)  # wakes the thread waiting in accept
+        except OSError:
+            pass  # not supported here: closing is enough to refuse new agents
         self.listener.close()

@@ -4,7 +4,7 @@ import threading
 import unittest
 
 from harness import GatewayTestCase, eventually
-from kicnp_agent import ActionFailedError, RequestRefusedError
+from kicnp_agent import ActionFailedError, Agent, RequestRefusedError
 
 
 class RobotCommandsTest(GatewayTestCase):
@@ -81,6 +81,36 @@ class RobotCommandsTest(GatewayTestCase):
         self.assertEqual("agent 'pyrobot' was closed", seen["cancel_reason"])
         eventually("py-close fails", lambda: len(self.gateway.heard("py-close")) == 2)
         self.assertEqual("failed py-close: agent 'pyrobot' disconnected", self.gateway.heard("py-close")[1])
+
+
+class Braking(Agent):
+    """A robot whose brakes fail when it is asked to stop."""
+
+    def on_cancel(self, handle, reason):
+        raise RuntimeError("brakes")
+
+
+class CancelHandlerTest(GatewayTestCase):
+
+    def test_anOnCancelThatRaises_endsTheCommandAsCancelFailed_notCancelled(self):
+        robot = self.connect("pyrobot", Braking)
+        running = threading.Event()
+
+        @robot.action("patrol")
+        def patrol(command, handle):
+            running.set()
+            handle.wait_cancelled(10)
+
+        robot.start_and_wait(10)
+        self.gateway.call("command", id="py-brakes", robot="pyrobot", action="patrol", args={})
+        self.assertTrue(running.wait(10))
+        with self.assertLogs("kicnp_agent", "WARNING") as logged:
+            self.gateway.call("cancel", robot="pyrobot", command="py-brakes", reason="stop now")
+            eventually("py-brakes ends", lambda: len(self.gateway.heard("py-brakes")) == 2)
+        self.assertEqual("failed py-brakes: cancel failed: RuntimeError: brakes (agent 'pyrobot', asked to stop: stop "
+                         "now); the robot may not have stopped", self.gateway.heard("py-brakes")[1])
+        self.assertIn("Agent 'pyrobot' failed to cancel 'py-brakes'.", [r.getMessage() for r in logged.records])
+        self.assertTrue(robot.is_connected)
 
 
 class UserCommandsTest(GatewayTestCase):

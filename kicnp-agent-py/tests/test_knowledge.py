@@ -1,4 +1,5 @@
 """The knowledge base through a real gateway: query, ask, assert, destroy, subscribe, and prove/why/why_not."""
+import threading
 import unittest
 
 from harness import GatewayTestCase, eventually
@@ -71,6 +72,47 @@ class KnowledgeTest(GatewayTestCase):
             self.user.prove("SensorSignal")
         self.assertIn("the proof of class 'SensorSignal'", str(refused.exception))
         self.assertIn("Only Cup can be proved here.", str(refused.exception))
+
+    def test_requestsFromManyThreadsAtOnce_eachGetTheirOwnAnswer(self):
+        answers, errors = [], []
+
+        def ask_many():
+            try:
+                for _ in range(20):
+                    answers.append((self.user.ask("cup1", "ml"), self.user.ask("cup1", "colour")))
+            except Exception as e:  # kept for the assertion below, which names it
+                errors.append(e)
+
+        threads = [threading.Thread(target=ask_many) for _ in range(8)]
+        for thread in threads:
+            thread.start()
+        for thread in threads:
+            thread.join(30)
+        self.assertEqual([], errors)
+        self.assertEqual([(250, "blue")] * 160, answers)
+
+
+class PeerTest(GatewayTestCase):
+
+    def test_aPeerPushesFramesAllOrNone_andPullsASubtreeParentsFirst(self):
+        peer = self.connect("pypeer").start_and_wait(10)
+        peer.push(frame_xml("Mug", "Cup", slots={"handle": True}), frame_xml("mug1", "Mug", instance=True))
+        self.assertTrue(self.gateway.call("contains", frame="mug1")["contains"])
+        names = [f.name for f in peer.pull("Cup")]
+        self.assertEqual("Cup", names[0])
+        self.assertLess(names.index("Mug"), names.index("mug1"))
+        self.assertIn("cup1", names)
+        with self.assertRaises(RequestRefusedError) as refused:
+            peer.push(frame_xml("Tumbler", "Cup"), frame_xml("Flute", "NoSuchGlass"))
+        self.assertEqual("rejected", refused.exception.code)
+        self.assertIn("The server refused the push of 2 frame(s) (rejected): ", str(refused.exception))
+        self.assertFalse(self.gateway.call("contains", frame="Tumbler")["contains"])
+
+    def test_aUserMayNotPush(self):
+        user = self.connect("pyuser").start_and_wait(10)
+        with self.assertRaises(RequestRefusedError) as refused:
+            user.push(frame_xml("Mug", "Cup"))
+        self.assertEqual("forbidden", refused.exception.code)
 
 
 class SensorSignalTest(GatewayTestCase):

@@ -1,5 +1,6 @@
 """The agent without a gateway: options, feedback rules, refusals before sending, and a stand-in gateway that stays
 silent, drops the connection, closes it with an error or sends what is not the protocol."""
+import socket
 import threading
 import unittest
 
@@ -43,6 +44,14 @@ class ActionHandleTest(unittest.TestCase):
             with self.assertRaises(ValueError):
                 self.handle.progress(fraction)
         self.assertEqual([], self.sent)
+
+    def test_afterTheConnectionIsLost_reportsAreDropped(self):
+        self.handle._cut()
+        self.handle.started()
+        self.handle.progress(0.5)
+        self.handle.ended("done")
+        self.assertEqual([], self.sent)
+        self.assertTrue(self.handle.is_done)
 
     def test_afterACancelIsReported_laterReportsAreIgnored(self):
         self.assertTrue(self.handle._request_cancel("stop"))
@@ -133,6 +142,32 @@ class StandInGatewayTest(unittest.TestCase):
         self.assertEqual(2, len(lost), lost)
         self.assertIn("(The server speaks protocol version 2, not 1.); reconnecting.", lost[0])
         self.assertIn("(The server sent a frame that is not UTF-8 JSON", lost[1])
+
+
+class UnreachableServerTest(unittest.TestCase):
+
+    def test_waitConnected_namesTheLastFailure(self):
+        bound = socket.socket()  # a port bound but not listening: every connection is refused
+        self.addCleanup(bound.close)
+        bound.bind(("127.0.0.1", 0))
+        port = bound.getsockname()[1]
+        agent = Agent("scout", "t", port=port, backoff_initial=0.01, backoff_max=0.05)
+        self.addCleanup(agent.close)
+        with self.assertRaises(AgentTimeoutError) as error:
+            agent.start_and_wait(0.5)
+        self.assertRegex(str(error.exception), r"^Agent 'scout' was not registered with 127\.0\.0\.1:%d within 0\.5 s; "
+                                               r"the last attempt failed: .*[Rr]efused.*\.$" % port)
+
+    def test_aServerSilentLongerThanServerSilence_isTakenForLost(self):
+        server = FakeGateway()
+        self.addCleanup(server.close)
+        agent = Agent("scout", "t", port=server.port, server_silence=0.3, heartbeat_interval=0.1, backoff_initial=0.01,
+                      backoff_max=0.05)
+        self.addCleanup(agent.close)
+        with self.assertLogs("kicnp_agent", "INFO") as logged:
+            agent.start_and_wait(5)
+            eventually("the agent connects again", lambda: server.connections == 2 and agent.is_connected)
+        self.assertIn("(The server sent nothing for 0.3 s.); reconnecting.", "\n".join(logged.output))
 
 
 class BrokenCapabilitiesTest(unittest.TestCase):

@@ -47,7 +47,8 @@ class PythonSdkTest {
             .with("pyrobot", "robot-token", AgentKind.ROBOT)
             .with("pyrobot2", "robot2-token", AgentKind.ROBOT)
             .with("pyuser", "user-token", AgentKind.USER)
-            .with("scout", "scout-token", AgentKind.ROBOT);
+            .with("scout", "scout-token", AgentKind.ROBOT)
+            .with("pypeer", "peer-token", AgentKind.PEER);
     /** The knowledge the Python tests read and change: cups, and the runtime classes the gateway fills. */
     private static final String KNOWLEDGE = """
             <KNOWLEDGEBASE>
@@ -86,9 +87,11 @@ class PythonSdkTest {
             assertThat(gateway.heard).contains("started py-wave", "progress py-wave 0.5 halfway",
                     "ended py-wave: waved 3 times", "failed py-raise: Agent 'pyrobot' failed on 'grab': ValueError: no arm",
                     "failed py-cancel: cancelled: stop now", "ended py-after-restart: waved 1 times",
-                    "ended py-tea: brought a cup of milk");
+                    "ended py-tea: brought a cup of milk", "failed py-brakes: cancel failed: RuntimeError: brakes (agent "
+                    + "'pyrobot', asked to stop: stop now); the robot may not have stopped");
             Eventually.await("every Python agent is gone", () -> gateway.server.registeredAgents().isEmpty());
             assertThat(gateway.kb.instancesOf("SensorSignal")).isEmpty();
+            assertThat(gateway.kb.contains("mug1")).as("what the Python peer pushed").isTrue();
         }
     }
 
@@ -145,7 +148,7 @@ class PythonSdkTest {
             ProcessBuilder pb = new ProcessBuilder(command).directory(SDK.toFile());
             pb.environment().put("KICNP_PORT", Integer.toString(server.port()));
             pb.environment().put("KICNP_AGENTS", "pyrobot:robot:robot-token,pyrobot2:robot:robot2-token,"
-                    + "pyuser:user:user-token,scout:robot:scout-token");
+                    + "pyuser:user:user-token,scout:robot:scout-token,pypeer:peer:peer-token");
             pb.environment().put("PYTHONDONTWRITEBYTECODE", "1");
             pb.environment().putAll(env);
             Process p = pb.start();
