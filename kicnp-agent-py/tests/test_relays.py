@@ -2,7 +2,7 @@
 import queue
 import unittest
 
-from harness import GatewayTestCase
+from harness import GatewayTestCase, eventually
 from kicnp_agent import RequestRefusedError
 
 
@@ -30,6 +30,15 @@ class RelayTest(GatewayTestCase):
         self.assertEqual("unknown_agent", refused.exception.code)
         self.assertTrue(str(refused.exception).startswith(
             "The server refused the relay to agent 'pyrobot2' (unknown_agent): "), str(refused.exception))
+
+    def test_aFireAndForgetRelayToAnAgentNotConnected_isRefusedLater_inTheLog(self):
+        user = self.connect("pyuser").start_and_wait(10)
+        with self.assertLogs("kicnp_agent", "WARNING") as logged:
+            user.tell_to("pyrobot2", "say", "hello")
+            eventually("the refusal comes", lambda: logged.records)
+        self.assertEqual(["Agent 'pyuser': the server says unknown_agent: No agent 'pyrobot2' is registered."],
+                         [r.getMessage() for r in logged.records])
+        self.assertTrue(user.is_connected)
 
 
 if __name__ == "__main__":
