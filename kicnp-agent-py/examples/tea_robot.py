@@ -19,7 +19,7 @@ def bring(command, action):
     item = command.args.get("item", "tea")
     for leg in range(1, 4):
         if action.wait_cancelled(0.1):                       # drive one leg of the way (here: wait)
-            return                                       # cancelled: the SDK reports it
+            return                                           # cancelled: the SDK reports it
         action.progress(leg / 3, "leg %d of 3" % leg)
         scout.sensor("sonar", 1.5 / leg, ttl=2.0)            # metres to the user, for slot conditions
     return "brought a cup of " + item                       # reported as 'ended'; an exception as 'failed'
