@@ -1,0 +1,67 @@
+"""A gateway stand-in on a socket of the test's own, for what a real gateway will not do on cue: stay silent, drop a
+connection in the middle of a request, close with an error, or send what is not the protocol."""
+import json
+import socket
+import struct
+import threading
+
+
+class FakeGateway:
+    """Accepts agents one connection after another, authenticates and registers each, keeps every message it
+    receives, and hands the others to ``answer(gateway, message)`` (by default: no answer)."""
+
+    def __init__(self, answer=None):
+        self.listener = socket.create_server(("127.0.0.1", 0))
+        self.port = self.listener.getsockname()[1]
+        self.received = []
+        self.connections = 0
+        self._answer = answer or (lambda gateway, message: None)
+        self._conn = None
+        self._lock = threading.Lock()
+        threading.Thread(target=self._serve, daemon=True).start()
+
+    def _serve(self):
+        while True:
+            try:
+                conn, _ = self.listener.accept()
+            except OSError:
+                return
+            with self._lock:
+                self._conn = conn
+                self.connections += 1
+            with conn:
+                self._read_all(conn)
+
+    def _read_all(self, conn):
+        try:
+            while True:
+                header = conn.recv(4, socket.MSG_WAITALL)
+                message = json.loads(conn.recv(struct.unpack(">I", header)[0], socket.MSG_WAITALL))
+                self.received.append(message)
+                if message["type"] == "hello":
+                    self.send({"type": "auth_result", "id": message["id"], "accepted": True, "server": "fake"})
+                elif message["type"] == "register":
+                    self.send({"type": "ack", "id": message["id"]})
+                else:
+                    self._answer(self, message)
+        except (OSError, struct.error, ValueError):
+            return
+
+    def send(self, message, version=1):
+        self.send_bytes(json.dumps(dict(message, v=version)).encode())
+
+    def send_bytes(self, payload):
+        with self._lock:
+            self._conn.sendall(struct.pack(">I", len(payload)) + payload)
+
+    def drop(self):
+        """Closes the agent's current connection, as a crashed server or a cut cable would."""
+        with self._lock:
+            self._conn.shutdown(socket.SHUT_RDWR)
+
+    def close(self):
+        try:
+            self.listener.shutdown(socket.SHUT_RDWR)  # wakes the thread waiting in accept
+        except OSError:
+            pass  # not supported here: closing is enough to refuse new agents
+        self.listener.close()

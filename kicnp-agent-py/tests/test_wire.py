@@ -1,0 +1,90 @@
+"""The wire format and values, without a gateway: framing, the checks on what a server sends, slot values."""
+import json
+import struct
+import unittest
+
+from kicnp_agent import ProtocolError, Ref, RequestRefusedError
+from kicnp_agent.messages import value_from_json, value_to_json
+from kicnp_agent.wire import FrameBuffer, decode, encode
+
+
+def frame(message):
+    payload = json.dumps(message).encode("utf-8")
+    return struct.pack(">I", len(payload)) + payload
+
+
+class WireTest(unittest.TestCase):
+
+    def test_encode_writesTheLengthThenCompactJsonWithTheVersion(self):
+        data = encode({"type": "ack", "id": "7"})
+        self.assertEqual(b'\x00\x00\x00\x1d{"v":1,"type":"ack","id":"7"}', data)
+        self.assertEqual(len(data) - 4, struct.unpack(">I", data[:4])[0])
+
+    def test_encode_keepsUnicodeAsUtf8_andCountsBytesNotCharacters(self):
+        data = encode({"type": "relay", "body": "Grüße"})
+        self.assertEqual(len(data) - 4, struct.unpack(">I", data[:4])[0])
+        self.assertIn("Grüße".encode("utf-8"), data)
+
+    def test_encode_refusesAMessageLongerThanAFrame_beforeSendingAnything(self):
+        with self.assertRaises(RequestRefusedError) as refused:
+            encode({"type": "assert", "id": "1", "frame": "x" * 2000}, max_frame_bytes=1024)
+        self.assertEqual("frame_too_large", refused.exception.code)
+        self.assertIn("The assert message is 2043 bytes, more than one message may carry (1024 bytes", str(refused.exception))
+
+    def test_frameBuffer_cutsFramesThatArriveInPieces(self):
+        stream = frame({"v": 1, "type": "ack", "id": "1"}) + frame({"v": 1, "type": "heartbeat", "time": 5})
+        buffer = FrameBuffer()
+        frames = []
+        for i in range(0, len(stream), 3):
+            buffer.feed(stream[i:i + 3])
+            payload = buffer.next_frame()
+            while payload is not None:
+                frames.append(decode(payload))
+                payload = buffer.next_frame()
+        self.assertEqual([{"v": 1, "type": "ack", "id": "1"}, {"v": 1, "type": "heartbeat", "time": 5}], frames)
+
+    def test_frameBuffer_refusesAnEmptyOrTooLongFrame(self):
+        for header, message in ((b"\x00\x00\x00\x00", "The server sent an empty frame."),
+                                (b"GET ", "The server sent a frame of 1195725856 bytes, more than the 1048576 bytes "
+                                          "this agent accepts (max_frame_bytes).")):
+            buffer = FrameBuffer()
+            buffer.feed(header)
+            with self.assertRaises(ProtocolError) as error:
+                buffer.next_frame()
+            self.assertEqual(message, str(error.exception))
+
+    def test_decode_refusesWhatIsNotAMessageForAnAgent_sayingWhat(self):
+        cases = [(b"[1]", "The server sent a frame that is not a JSON object: [1]."),
+                 (b'{"v":2,"type":"ack","id":"1"}', "The server speaks protocol version 2, not 1."),
+                 (b'{"v":1,"type":"hello","id":"1"}', "The server sent a message of type 'hello', which an agent "
+                                                      "does not expect."),
+                 (b'{"v":1,"type":"command","id":"c","robot":"r","action":"a"}',
+                  "The server's command message lacks the member 'args'.")]
+        for payload, message in cases:
+            with self.assertRaises(ProtocolError) as error:
+                decode(payload)
+            self.assertEqual(message, str(error.exception))
+        with self.assertRaises(ProtocolError) as error:
+            decode(b"{nope")
+        self.assertTrue(str(error.exception).startswith("The server sent a frame that is not UTF-8 JSON"))
+
+    def test_values_travelAsTheProtocolTypesThem(self):
+        values = ["near", 7, 1.5, True, Ref("userA"), [0.1, Ref("ken")]]
+        wire = [value_to_json(v, "value") for v in values]
+        self.assertEqual(["near", 7, 1.5, True, {"ref": "userA"}, [0.1, {"ref": "ken"}]], wire)
+        self.assertEqual(values, [value_from_json(v) for v in wire])
+
+    def test_values_refuseNaNInfinityAndOtherTypes_namingTheValue(self):
+        with self.assertRaises(ValueError) as error:
+            value_to_json([1.0, float("nan")], "Value 1 of sensor 'sonar'")
+        self.assertEqual("Value 1 of sensor 'sonar'[1] is nan, which JSON cannot carry; send a finite number.",
+                         str(error.exception))
+        with self.assertRaises(ValueError):
+            value_to_json(float("-inf"), "v")
+        with self.assertRaises(TypeError) as error:
+            value_to_json({"x": 1}, "Value 2 of sensor 'arm'")
+        self.assertIn("Value 2 of sensor 'arm' is a dict", str(error.exception))
+
+
+if __name__ == "__main__":
+    unittest.main()
