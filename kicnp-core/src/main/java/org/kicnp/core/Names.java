@@ -12,7 +12,10 @@ final class Names {
         }
         for (int i = 1; i < s.length(); i++) {
             char c = s.charAt(i);
-            if (!(Character.isLetterOrDigit(c) || c == '_' || c == '-')) {
+            // Names are mostly ASCII (every instance the engine derives is named so): decided without the Unicode tables.
+            boolean fits = c < 128 ? c >= 'a' && c <= 'z' || c >= 'A' && c <= 'Z' || c >= '0' && c <= '9' || c == '_'
+                    || c == '-' : Character.isLetterOrDigit(c);
+            if (!fits) {
                 return false;
             }
         }

@@ -80,8 +80,8 @@ final class PlainInstanceAdd {
                 || !f.linksFrom().isEmpty()) {
             return null;
         }
-        ClassInfo cls = known(classes, f.parentOrNull());
-        if (cls == null || !cls.complete || nodes.get(f.name()) != null) {
+        ClassInfo cls = known(nodes, classes, f.parentOrNull());
+        if (cls == null || nodes.get(f.name()) != null) {
             return null;
         }
         List<Slot> slots = f.slots();
@@ -105,12 +105,12 @@ final class PlainInstanceAdd {
                 case INSTANCE -> {
                     String argument = d == null ? null : d.argument();
                     if (d == null || d.slot().type() != DataType.INSTANCE || argument == null
-                            || known(classes, argument) == null
+                            || known(nodes, classes, argument) == null
                             || !(s.valueOrNull() instanceof Value.Ref ref)) {
                         return null;
                     }
                     Node target = Node.find(nodes, ref.frame(), near);
-                    if (target == null || !isA(classes, target.frame, argument)) {
+                    if (target == null || !isA(nodes, classes, target.frame, argument)) {
                         return null;
                     }
                     if (targets == NO_TARGETS) {
@@ -133,18 +133,28 @@ final class PlainInstanceAdd {
         return new Checked(f, parent, targets);
     }
 
-    /** The checked class named {@code name}, or null when none is known (the validator would look it up). */
-    private static ClassInfo known(Map<String, ClassInfo> classes, String name) {
-        ClassInfo c = name == null ? null : classes.get(name);
-        return c != null && c.frame.isClass() ? c : null;
+    /**
+     * The class named {@code name} as the validator knows it: from the memo, or else worked out from the knowledge
+     * base by a validator of no change (which remembers it in the memo, as any batch's validation would); null when
+     * there is no such class or its chain is not complete.
+     */
+    private static ClassInfo known(NodeIndex nodes, Map<String, ClassInfo> classes, String name) {
+        if (name == null) {
+            return null;
+        }
+        ClassInfo c = classes.get(name);
+        if (c == null) {
+            c = new Validator(Map.of(), nodes, classes, new ArrayList<>()).classInfo(name);
+        }
+        return c != null && c.frame.isClass() && c.complete ? c : null;
     }
 
     /** Whether {@code target} is {@code ancestor} or lies below it, answered from a checked class; else false. */
-    private static boolean isA(Map<String, ClassInfo> classes, Frame target, String ancestor) {
+    private static boolean isA(NodeIndex nodes, Map<String, ClassInfo> classes, Frame target, String ancestor) {
         if (target.name().equals(ancestor)) {
             return true;
         }
-        ClassInfo p = known(classes, target.parentOrNull());
+        ClassInfo p = known(nodes, classes, target.parentOrNull());
         return p != null && p.isA(ancestor);
     }
 

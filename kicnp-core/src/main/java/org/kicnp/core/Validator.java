@@ -431,6 +431,15 @@ final class Validator {
     }
 
     /**
+     * What is known of the class named {@code name} in the view, worked out (and remembered, as any check does) when
+     * it is not known yet; null when the view has no class of that name or its IS-A chain has a cycle.
+     */
+    ClassInfo classInfo(String name) {
+        Frame f = view(name);
+        return f == null || !f.isClass() ? null : info(f);
+    }
+
+    /**
      * What is known already of the class named {@code name} in the view, without looking it up there: an entry of
      * {@link #classes} is made only for a class of the view whose IS-A chain ends at a root, and stays true while the
      * map is in use (the knowledge base's own map is cleared by a batch that changes a class). Null when nothing is

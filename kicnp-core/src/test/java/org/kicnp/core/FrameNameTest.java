@@ -33,4 +33,12 @@ class FrameNameTest {
             assertThat(Frame.classFrame(name).build().name()).as(text).isEqualTo(name);
         }
     }
+
+    @Test
+    void isFrameName_takesAfterTheFirstCharacterEveryLetterOrDigitUnderscoreAndHyphen_andNothingElse() {
+        for (int c = 0; c <= Character.MAX_VALUE; c++) {
+            boolean expected = Character.isLetterOrDigit((char) c) || c == '_' || c == '-';
+            assertThat(Names.isFrameName("a" + (char) c)).as("U+%04X", c).isEqualTo(expected);
+        }
+    }
 }
