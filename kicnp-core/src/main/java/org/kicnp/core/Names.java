@@ -12,10 +12,7 @@ final class Names {
         }
         for (int i = 1; i < s.length(); i++) {
             char c = s.charAt(i);
-            // Names are mostly ASCII (every instance the engine derives is named so): decided without the Unicode tables.
-            boolean fits = c < 128 ? c >= 'a' && c <= 'z' || c >= 'A' && c <= 'Z' || c >= '0' && c <= '9' || c == '_'
-                    || c == '-' : Character.isLetterOrDigit(c);
-            if (!fits) {
+            if (!(isAsciiLetterOrDigit(c) || c == '_' || c == '-' || c >= 128 && Character.isLetterOrDigit(c))) {
                 return false;
             }
         }
@@ -58,10 +55,15 @@ final class Names {
         }
         for (int i = 1; i < s.length(); i++) {
             char c = s.charAt(i);
-            if (!(Character.isLetterOrDigit(c) || c == '_' || c == '$')) {
+            if (!(isAsciiLetterOrDigit(c) || c == '_' || c == '$' || c >= 128 && Character.isLetterOrDigit(c))) {
                 return false;
             }
         }
         return true;
+    }
+
+    /** {@link Character#isLetterOrDigit} for ASCII, without the Unicode tables: names are mostly ASCII. */
+    private static boolean isAsciiLetterOrDigit(char c) {
+        return c >= 'a' && c <= 'z' || c >= 'A' && c <= 'Z' || c >= '0' && c <= '9';
     }
 }

@@ -41,4 +41,12 @@ class FrameNameTest {
             assertThat(Names.isFrameName("a" + (char) c)).as("U+%04X", c).isEqualTo(expected);
         }
     }
+
+    @Test
+    void isSlotName_takesAfterTheFirstCharacterEveryLetterOrDigitUnderscoreAndDollar_andNothingElse() {
+        for (int c = 0; c <= Character.MAX_VALUE; c++) {
+            boolean expected = Character.isLetterOrDigit((char) c) || c == '_' || c == '$';
+            assertThat(Names.isSlotName("a" + (char) c)).as("U+%04X", c).isEqualTo(expected);
+        }
+    }
 }

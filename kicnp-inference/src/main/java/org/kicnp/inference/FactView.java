@@ -48,9 +48,19 @@ final class FactView implements Conditions.Reader {
         Frame linksOf;
         /** Set when the fact leaves the view: a link to it is stale (its name may come back as another fact). */
         boolean gone;
+        /** A reference to this fact, made once for the slots of every instance derived from it; null until needed. */
+        private Value ref;
 
         Fact(String name) {
             this.name = name;
+        }
+
+        /** A reference to this fact ({@code Value.ref(name)}), the same one each time. */
+        Value ref() {
+            if (ref == null) {
+                ref = Value.ref(name);
+            }
+            return ref;
         }
 
         /** The fact's membership of memory {@code m}, or null. */

@@ -434,7 +434,14 @@ final class ForwardChainer {
             supports.markFired(a.key(), refs);
             FactView.Fact record = supports.record(d, Optional.of(r), refs);
             Frame.Builder b = Frame.instance(name, r.frame()).provenance(Provenance.RUNTIME);
-            full.forEach((slot, fact) -> b.slot(Slot.builder(slot, DataType.INSTANCE).value(Value.ref(fact)).build()));
+            if (full.size() == refs.length) { // the required slots, in order: their facts' records are at hand
+                List<String> slots = r.requiredSlots();
+                for (int i = 0; i < refs.length; i++) {
+                    b.slot(Slot.ofValue(slots.get(i), DataType.INSTANCE, refs[i].ref()));
+                }
+            } else {
+                full.forEach((slot, fact) -> b.slot(Slot.ofValue(slot, DataType.INSTANCE, Value.ref(fact))));
+            }
             try {
                 Frame instance = b.build();
                 if (full.size() == refs.length) {
