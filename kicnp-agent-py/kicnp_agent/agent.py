@@ -15,7 +15,7 @@ from .frames import Frame
 from .messages import (Changed, Command, Feedback, NotFired, ProofNode, Reason, Relay, value_from_json,
                        value_to_json)
 from .options import AgentKind, AgentOptions
-from .wire import check_lengths
+from .wire import MAX_NAME_LENGTH, check_lengths, length
 
 LOG = logging.getLogger("kicnp_agent")
 _MAX_TTL_MS = 86400000
@@ -316,8 +316,7 @@ class Agent:
     def command(self, robot, action, args=None, timeout=None):
         """Sends a command to a robot through the hub (what a user agent does); follow it with the :class:`CommandTicket`."""
         check_lengths("command", robot=robot, action=action)
-        command = Command("%s-%s-%d" % (self.name, self._command_ids, next(self._ids)), robot, action,
-                          {str(k): str(v) for k, v in (args or {}).items()})
+        command = Command(self._command_id(), robot, action, {str(k): str(v) for k, v in (args or {}).items()})
         ticket = CommandTicket(command)
         with self._lock:
             self._tickets[command.id] = ticket
@@ -339,6 +338,15 @@ class Agent:
                       "the cancel of command '%s' on robot '%s'" % (command_id, robot), timeout)
 
     # ---- internals ----
+
+    def _command_id(self):
+        """The agent's name, the time this object was made and a counter, as the Java SDK makes it: a name so long that
+        the id would pass the server's limit gives only its beginning (the server refuses a clash, never mixes up)."""
+        tail = "-%s-%d" % (self._command_ids, next(self._ids))
+        head = self.name
+        while length(head) + len(tail) > MAX_NAME_LENGTH:
+            head = head[:-1]
+        return head + tail
 
     def _relay(self, call, agent, kind, subject, body):
         check_lengths(call, agent=agent, subject=subject)

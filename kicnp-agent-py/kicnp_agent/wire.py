@@ -51,19 +51,21 @@ def encode(message, max_frame_bytes=DEFAULT_MAX_FRAME_BYTES):
     return _HEADER.pack(len(payload)) + payload
 
 
+def length(text):
+    """The length of ``text`` as the server (Java) counts it, in UTF-16 units: a character beyond the basic plane
+    counts two."""
+    return len(text.encode("utf-16-le", "surrogatepass")) // 2
+
+
 def check_lengths(call, **arguments):
     """Refuses, before anything is sent, an argument of ``call`` the server would refuse as longer than
-    :data:`MAX_NAME_LENGTH`: it would close the connection over it, dropping every request in flight with it.
-
-    Characters are counted as the server (Java) counts them, in UTF-16 units: one beyond the basic plane counts two.
-    Arguments that are not text are left to the checks that follow.
+    :data:`MAX_NAME_LENGTH` (counted by :func:`length`): it would close the connection over it, dropping every
+    request in flight with it. Arguments that are not text are left to the checks that follow.
     """
     for argument, value in arguments.items():
-        if isinstance(value, str):
-            length = len(value.encode("utf-16-le", "surrogatepass")) // 2
-            if length > MAX_NAME_LENGTH:
-                raise ValueError("The argument '%s' of %s is %d characters long; the server allows at most %d, so "
-                                 "nothing was sent." % (argument, call, length, MAX_NAME_LENGTH))
+        if isinstance(value, str) and length(value) > MAX_NAME_LENGTH:
+            raise ValueError("The argument '%s' of %s is %d characters long; the server allows at most %d, so nothing "
+                             "was sent." % (argument, call, length(value), MAX_NAME_LENGTH))
 
 
 def decode(payload):

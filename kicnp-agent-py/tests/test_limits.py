@@ -1,8 +1,11 @@
 """The members the gateway holds to 256 characters (docs/protocol.md: names, actions, ids, subjects, class names) are
 refused by the SDK before anything is sent, with a ValueError naming the argument; at the limit they go on to be sent.
 No gateway is needed: the agent is never started, so a call that passes the checks fails for want of a connection."""
+import re
 import unittest
 
+from fake_gateway import FakeGateway
+from harness import eventually
 from kicnp_agent import Agent, NotConnectedError
 
 LONG = "n" * 257
@@ -63,6 +66,20 @@ class LimitsTest(unittest.TestCase):
         self.assertEqual(refusal("subject", "relay_to", 258), str(refused.exception))
         with self.assertRaises(NotConnectedError):
             self.agent.relay_to("bob", "\U0001F600" * 128, "b")
+
+    def test_aCommandOfAnAgentWithTheLongestName_hasAnIdWithinTheLimit_andIsSent(self):
+        server = FakeGateway(lambda gateway, m: gateway.send({"type": "ack", "id": m["id"]}))
+        self.addCleanup(server.close)
+        agent = Agent(LONGEST, "t", kind="user", port=server.port)
+        self.addCleanup(agent.close)
+        agent.start_and_wait(5)
+
+        ticket = agent.command("scout", "fetch")
+
+        eventually("the command is sent", lambda: any(m["type"] == "command" for m in server.received))
+        self.assertEqual([ticket.command.id], [m["id"] for m in server.received if m["type"] == "command"])
+        self.assertEqual(256, len(ticket.command.id))
+        self.assertRegex(ticket.command.id, re.compile(r"n+-[0-9a-z]+-[0-9]+\Z"))
 
 
 if __name__ == "__main__":
