@@ -188,7 +188,7 @@ public final class RobotsCommand implements Callable<Integer> {
                           Properties tokenFile, List<RobotAgent> agents, CompletableFuture<Void> stop, PrintWriter out) {
         for (String robot : ROBOTS) {
             if (stop.isDone()) {
-                return 0;
+                return stoppedWith(world);
             }
             AgentOptions plain = AgentOptions.of(address.host(), address.port(), robot, AgentKind.ROBOT,
                     tokenFile.getProperty(robot + ".token").strip());
@@ -201,7 +201,7 @@ public final class RobotsCommand implements Callable<Integer> {
             };
             agents.add(agent);
             if (!startAndAwait(agent, stop)) {
-                return 0;
+                return stoppedWith(world);
             }
             out.printf("Agent '%s' registered with %s (%d capability frames).%n", robot, gateway,
                     agent.driver().capabilities().size());
@@ -212,7 +212,12 @@ public final class RobotsCommand implements Callable<Integer> {
         } else {
             stop.join();
         }
-        return stop.isDone() && !world.alive() ? 1 : 0;
+        return stop.isDone() ? stoppedWith(world) : 0;
+    }
+
+    /** The exit code after a stop was asked for: 1 when it was the simulator's death, 0 for SIGTERM or Ctrl-C. */
+    private static int stoppedWith(SimWorld world) {
+        return world.alive() ? 0 : 1;
     }
 
     /**
