@@ -15,6 +15,7 @@ from .frames import Frame
 from .messages import (Changed, Command, Feedback, NotFired, ProofNode, Reason, Relay, value_from_json,
                        value_to_json)
 from .options import AgentKind, AgentOptions
+from .wire import MAX_NAME_LENGTH, check_lengths, length
 
 LOG = logging.getLogger("kicnp_agent")
 _MAX_TTL_MS = 86400000
@@ -202,6 +203,7 @@ class Agent:
         infinite value or a bad ttl, and :class:`NotConnectedError` when not connected (the reading is not sent; a
         sensing loop catches it and goes on).
         """
+        check_lengths("sensor", sensor=sensor)
         message = {"type": "sensor", "sensor": sensor, "source": self.name,
                    "values": [value_to_json(v, "Value %d of sensor '%s'" % (i + 1, sensor)) for i, v in enumerate(values)]}
         if ttl is not None:
@@ -214,6 +216,7 @@ class Agent:
 
     def query(self, of_class, timeout=None):
         """Every instance of a class (and of the classes below it), as :class:`Frame` s."""
+        check_lengths("query", of_class=of_class)
         answer = self._request({"type": "query", "ofClass": of_class}, "frames", "the query of class '%s'" % of_class,
                                timeout)
         return [Frame.parse(xml) for xml in answer["frames"]]
@@ -227,6 +230,7 @@ class Agent:
     def prove(self, of_class, bindings=None, timeout=None):
         """Backward chaining on the server: every instance of ``of_class`` that exists or could be derived, whose
         slots hold the instances ``bindings`` names (slot to instance), each a :class:`ProofNode`. Nothing is created."""
+        check_lengths("prove", of_class=of_class)
         answer = self._request({"type": "prove", "ofClass": of_class, "bindings": dict(bindings or {})}, "proofs",
                                "the proof of class '%s'" % of_class, timeout)
         return [ProofNode.from_json(p) for p in answer["proofs"]]
@@ -271,6 +275,7 @@ class Agent:
     def subscribe(self, of_class, callback=None, timeout=None):
         """Hears of every change to frames of ``of_class`` (and below): ``callback(change)`` with a :class:`Changed`,
         or :meth:`on_changed` without one, on the event thread. Renewed by itself after a reconnect."""
+        check_lengths("subscribe", of_class=of_class)
         self._request({"type": "subscribe", "ofClass": of_class}, "ack", "the subscription to class '%s'" % of_class,
                       timeout)
         with self._lock:
@@ -281,6 +286,7 @@ class Agent:
 
     def unsubscribe(self, of_class, timeout=None):
         """Stops the notifications of a class."""
+        check_lengths("unsubscribe", of_class=of_class)
         with self._lock:
             if of_class in self._subscriptions:
                 self._subscriptions.remove(of_class)
@@ -290,25 +296,27 @@ class Agent:
 
     def relay_to(self, agent, subject, body, timeout=None):
         """Relays a message to one agent by name and waits for the hub's ``ack`` (``unknown_agent`` when it is not there)."""
-        self._request(self._relay(agent, None, subject, body), "ack", "the relay to agent '%s'" % agent, timeout)
+        self._request(self._relay("relay_to", agent, None, subject, body), "ack", "the relay to agent '%s'" % agent,
+                      timeout)
 
     def relay_to_kind(self, kind, subject, body, timeout=None):
         """Relays a message to every registered agent of a kind (not to this one) and waits for the ``ack``."""
         kind = AgentKind(kind)
-        self._request(self._relay(None, kind, subject, body), "ack", "the relay to every %s" % kind.value, timeout)
+        self._request(self._relay("relay_to_kind", None, kind, subject, body), "ack",
+                      "the relay to every %s" % kind.value, timeout)
 
     def tell_to(self, agent, subject, body):
         """Relays a message to one agent without waiting (fire and forget); a refusal comes later and is logged."""
-        self._send(dict(self._relay(agent, None, subject, body), id=""))
+        self._send(dict(self._relay("tell_to", agent, None, subject, body), id=""))
 
     def tell_to_kind(self, kind, subject, body):
         """Relays a message to every agent of a kind without waiting, as :meth:`tell_to`."""
-        self._send(dict(self._relay(None, AgentKind(kind), subject, body), id=""))
+        self._send(dict(self._relay("tell_to_kind", None, AgentKind(kind), subject, body), id=""))
 
     def command(self, robot, action, args=None, timeout=None):
         """Sends a command to a robot through the hub (what a user agent does); follow it with the :class:`CommandTicket`."""
-        command = Command("%s-%s-%d" % (self.name, self._command_ids, next(self._ids)), robot, action,
-                          {str(k): str(v) for k, v in (args or {}).items()})
+        check_lengths("command", robot=robot, action=action)
+        command = Command(self._command_id(), robot, action, {str(k): str(v) for k, v in (args or {}).items()})
         ticket = CommandTicket(command)
         with self._lock:
             self._tickets[command.id] = ticket
@@ -325,12 +333,23 @@ class Agent:
     def cancel(self, robot, command_id, reason="", timeout=None):
         """Asks that a command in flight on a robot be stopped (a user or service agent); the outcome is the command's
         last feedback. Raises :class:`RequestRefusedError` when no such command is in flight or this agent may not."""
+        check_lengths("cancel", robot=robot, command_id=command_id)
         self._request({"type": "cancel", "robot": robot, "command": command_id, "reason": reason}, "ack",
                       "the cancel of command '%s' on robot '%s'" % (command_id, robot), timeout)
 
     # ---- internals ----
 
-    def _relay(self, agent, kind, subject, body):
+    def _command_id(self):
+        """The agent's name, the time this object was made and a counter, as the Java SDK makes it: a name so long that
+        the id would pass the server's limit gives only its beginning (the server refuses a clash, never mixes up)."""
+        tail = "-%s-%d" % (self._command_ids, next(self._ids))
+        head = self.name
+        while length(head) + len(tail) > MAX_NAME_LENGTH:
+            head = head[:-1]
+        return head + tail
+
+    def _relay(self, call, agent, kind, subject, body):
+        check_lengths(call, agent=agent, subject=subject)
         message = {"type": "relay", "from": self.name, "subject": subject, "body": body}
         if agent is not None:
             message["toAgent"] = agent

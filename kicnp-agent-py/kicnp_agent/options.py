@@ -4,7 +4,7 @@ import re
 from dataclasses import dataclass
 from typing import Optional
 
-from .wire import DEFAULT_MAX_FRAME_BYTES
+from .wire import DEFAULT_MAX_FRAME_BYTES, check_lengths
 
 _NAME = re.compile(r"[^\W\d][\w-]*\Z")
 
@@ -42,6 +42,7 @@ class AgentOptions:
     max_frame_bytes: int = DEFAULT_MAX_FRAME_BYTES
 
     def __post_init__(self):
+        check_lengths("AgentOptions", name=self.name)
         if not isinstance(self.name, str) or not _NAME.match(self.name):
             raise ValueError("Agent name %r is not a name: letters, digits, '_' and '-', starting with a letter or '_'."
                              % (self.name,))

@@ -11,6 +11,9 @@ from .errors import ProtocolError, RequestRefusedError
 
 VERSION = 1
 DEFAULT_MAX_FRAME_BYTES = 1024 * 1024
+# The most characters the server takes in a name, an action, an id, a relay's subject or a class name a request asks
+# about (org.kicnp.protocol.Message.MAX_NAME_LENGTH); a longer one is bad_message, and the server closes the connection.
+MAX_NAME_LENGTH = 256
 _HEADER = struct.Struct(">I")
 
 # The required members of each message a server may send an agent (docs/protocol/schemas/TYPE.json, less v and type).
@@ -46,6 +49,23 @@ def encode(message, max_frame_bytes=DEFAULT_MAX_FRAME_BYTES):
                                   "(%d bytes, max_frame_bytes); nothing was sent: send less."
                                   % (message["type"], len(payload), max_frame_bytes))
     return _HEADER.pack(len(payload)) + payload
+
+
+def length(text):
+    """The length of ``text`` as the server (Java) counts it, in UTF-16 units: a character beyond the basic plane
+    counts two."""
+    return len(text.encode("utf-16-le", "surrogatepass")) // 2
+
+
+def check_lengths(call, **arguments):
+    """Refuses, before anything is sent, an argument of ``call`` the server would refuse as longer than
+    :data:`MAX_NAME_LENGTH` (counted by :func:`length`): it would close the connection over it, dropping every
+    request in flight with it. Arguments that are not text are left to the checks that follow.
+    """
+    for argument, value in arguments.items():
+        if isinstance(value, str) and length(value) > MAX_NAME_LENGTH:
+            raise ValueError("The argument '%s' of %s is %d characters long; the server allows at most %d, so nothing "
+                             "was sent." % (argument, call, length(value), MAX_NAME_LENGTH))
 
 
 def decode(payload):

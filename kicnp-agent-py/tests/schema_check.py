@@ -1,6 +1,6 @@
 """A JSON Schema checker for the keywords docs/protocol/schemas uses (type, const, enum, properties, required,
-additionalProperties, items, $ref to $defs, oneOf, minimum, maximum): the standard library has none, and the SDK's
-tests must not need a package."""
+additionalProperties, items, $ref to $defs, oneOf, minimum, maximum, maxLength): the standard library has none, and
+the SDK's tests must not need a package."""
 
 _TYPES = {"object": dict, "array": list, "string": str, "boolean": bool}
 
@@ -20,6 +20,8 @@ def problems(value, schema, root=None, where="$"):
         found.append("%s is %r, not one of %s" % (where, value, schema["enum"]))
     if "minimum" in schema and value < schema["minimum"] or "maximum" in schema and value > schema["maximum"]:
         found.append("%s is %r, out of range" % (where, value))
+    if "maxLength" in schema and len(value) > schema["maxLength"]:
+        found.append("%s is %d characters long, more than %d" % (where, len(value), schema["maxLength"]))
     if isinstance(value, dict):
         found += ["%s lacks '%s'" % (where, name) for name in schema.get("required", ()) if name not in value]
         properties = schema.get("properties", {})

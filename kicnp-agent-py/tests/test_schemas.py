@@ -43,6 +43,9 @@ class SchemaTest(unittest.TestCase):
         self.assertEqual(["$ matches 2 of the oneOf schemas, not exactly 1"],
                          problems({"v": 1, "type": "relay", "id": "", "from": "a", "toAgent": "b", "toKind": "robot",
                                    "subject": "s", "body": "b"}, schema("relay")))
+        self.assertEqual(["$.subject is 257 characters long, more than 256"],
+                         problems({"v": 1, "type": "relay", "id": "", "from": "a", "toAgent": "b", "subject": "s" * 257,
+                                   "body": "b" * 257}, schema("relay")))
         self.assertEqual(["$.values[0] matches 0 of the oneOf schemas, not exactly 1"],
                          problems({"v": 1, "type": "sensor", "source": "a", "sensor": "s", "values": [{"x": 1}]},
                                   schema("sensor")))

@@ -360,7 +360,7 @@ public abstract class AgentBase implements AutoCloseable {
 
     /** Sends a command to a robot through the hub (what a user agent does); follow it with the ticket. */
     public final CommandTicket command(String robot, String action, Map<String, String> args) {
-        Command c = new Command(name() + "-" + commandIds + "-" + nextId(), robot, action, args);
+        Command c = new Command(commandId(), robot, action, args);
         CommandTicket ticket = new CommandTicket(c);
         tickets.put(c.id(), ticket);
         try {
@@ -667,6 +667,21 @@ public abstract class AgentBase implements AutoCloseable {
 
     private String nextId() {
         return Long.toString(ids.incrementAndGet());
+    }
+
+    /**
+     * The agent's name, the time this object was made and a counter, so two runs of one agent never share an id at a
+     * robot. A name so long that the id would pass {@link Message#MAX_NAME_LENGTH} gives only its beginning (not
+     * half a surrogate pair): the server keys commands by robot and id and refuses one already in flight, so a clash
+     * of two such agents is a refusal, never a mix-up.
+     */
+    private String commandId() {
+        String tail = "-" + commandIds + "-" + nextId();
+        int cut = Math.min(name().length(), Message.MAX_NAME_LENGTH - tail.length());
+        if (cut > 0 && Character.isHighSurrogate(name().charAt(cut - 1))) {
+            cut--;
+        }
+        return name().substring(0, cut) + tail;
     }
 
     private static List<Frame> parse(List<String> xml) {

@@ -209,4 +209,46 @@ class AgentBaseTest {
             }
         }
     }
+
+    /**
+     * A command id is the agent's name, the time and a counter; for a name near the limit it keeps only the name's
+     * beginning, so the id stays within the limit every request id is held to and the command is sent.
+     */
+    @Test
+    void command_ofAnAgentWithTheLongestName_hasAnIdWithinTheLimit() throws Exception {
+        String id = sentCommandId("n".repeat(Message.MAX_NAME_LENGTH));
+
+        assertThat(id).hasSize(Message.MAX_NAME_LENGTH).matches("n+-[0-9a-z]+-[0-9]+");
+    }
+
+    /** A name of letters beyond the basic plane (two UTF-16 units each) is never cut between the two. */
+    @Test
+    void command_ofAnAgentWithTheLongestNameOfTwoUnitLetters_keepsWholeLetters() throws Exception {
+        String letter = "\uD835\uDC9C"; // MATHEMATICAL SCRIPT CAPITAL A
+        String id = sentCommandId(letter.repeat(Message.MAX_NAME_LENGTH / 2));
+
+        assertThat(id.length()).isLessThanOrEqualTo(Message.MAX_NAME_LENGTH);
+        assertThat(id.substring(0, id.indexOf('-'))).matches("(" + letter + ")+");
+    }
+
+    /** The id of the command an agent called {@code name} sends, as the server received it and the ticket holds it. */
+    private static String sentCommandId(String name) throws Exception {
+        BlockingQueue<Message.Command> sent = new LinkedBlockingQueue<>();
+        try (FakeGateway gateway = new FakeGateway(peer -> {
+            peer.register();
+            Message.Command c = (Message.Command) peer.readSkippingHeartbeats();
+            sent.add(c);
+            peer.send(new Message.Ack(c.id()));
+            peer.drain();
+        }); UserAgent a = new UserAgent(AgentOptions.of("127.0.0.1", gateway.port(), name, AgentKind.USER, "t"))) {
+            a.startAndAwait(Duration.ofSeconds(10));
+
+            CommandTicket ticket = a.command("scout", "fetch", java.util.Map.of());
+
+            Message.Command c = sent.poll(10, TimeUnit.SECONDS);
+            assertThat(c).as("the command the server received").isNotNull();
+            assertThat(c.id()).isEqualTo(ticket.command().id());
+            return c.id();
+        }
+    }
 }

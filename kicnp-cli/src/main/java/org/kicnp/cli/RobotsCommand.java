@@ -28,6 +28,8 @@ import java.util.List;
 import java.util.Optional;
 import java.util.Properties;
 import java.util.concurrent.Callable;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -44,6 +46,7 @@ import javax.net.SocketFactory;
 public final class RobotsCommand implements Callable<Integer> {
     private static final List<String> ROBOTS = List.of("robovie", "pino", "scout", "aibo");
     private static final Duration STOP_WAIT = Duration.ofSeconds(15);
+    private static final Duration REGISTER_WAIT = Duration.ofSeconds(15);
 
     // The port serve listens on by default, so that "serve KB" then "robots" finds it.
     @Option(names = "--gateway", defaultValue = "127.0.0.1:" + PlatformConfig.DEFAULT_GATEWAY_PORT,
@@ -77,7 +80,7 @@ public final class RobotsCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    @Override public Integer call() throws InterruptedException {
+    @Override public Integer call() {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         GatewayAddress address;
@@ -127,20 +130,24 @@ public final class RobotsCommand implements Callable<Integer> {
         if (repo != null) {
             options = options.withRepoRoot(repo);
         }
-        CountDownLatch stop = new CountDownLatch(1);
+        // Completed by SIGTERM or Ctrl-C (the hook), or by the simulator's death.
+        CompletableFuture<Void> stop = new CompletableFuture<>();
         CountDownLatch stopped = new CountDownLatch(1);
         List<RobotAgent> agents = new ArrayList<>();
         AtomicBoolean stopping = new AtomicBoolean();
+        // Installed before anything starts: a SIGTERM during start-up must stop what has started so far too.
+        Thread hook = stopHook(stop, stopped);
+        Runtime.getRuntime().addShutdownHook(hook);
         try (SimWorld world = SimWorld.start(options)) {
             world.addListener(e -> {
                 if (e instanceof SimEvent.Exited x && !stopping.get()) {
                     err.println("The simulator is gone: " + x.reason() + ".");
-                    stop.countDown();
+                    stop.complete(null);
                 }
             });
             out.printf("Simulator started (pid %d, seed %d, time scale %s).%n", world.pid(), seed, timeScale);
             try {
-                return runAgents(world, address, sockets, tokenFile, agents, stop, stopped, out);
+                return runAgents(world, address, sockets, tokenFile, agents, stop, out);
             } finally {
                 // The agents go first, so that closing the simulator is not reported to the server as its death.
                 stopping.set(true);
@@ -153,13 +160,36 @@ public final class RobotsCommand implements Callable<Integer> {
             out.println("Robots stopped.");
             out.flush();
             stopped.countDown();
+            try {
+                Runtime.getRuntime().removeShutdownHook(hook);
+            } catch (IllegalStateException e) {
+                // Shutting down already: the hook is running.
+            }
         }
     }
 
+    /**
+     * On SIGTERM or Ctrl-C the JVM halts once its hooks return: this one asks for a stop and waits until the agents
+     * and the simulator have been stopped, so the agents leave the server cleanly and the simulator is shut down, not
+     * cut off.
+     */
+    private static Thread stopHook(CompletableFuture<Void> stop, CountDownLatch stopped) {
+        return new Thread(() -> {
+            stop.complete(null);
+            try {
+                stopped.await(STOP_WAIT.toMillis(), TimeUnit.MILLISECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "kicnp-robots-stop");
+    }
+
     private int runAgents(SimWorld world, GatewayAddress address, Optional<SocketFactory> sockets,
-                          Properties tokenFile, List<RobotAgent> agents, CountDownLatch stop, CountDownLatch stopped,
-                          PrintWriter out) throws InterruptedException {
+                          Properties tokenFile, List<RobotAgent> agents, CompletableFuture<Void> stop, PrintWriter out) {
         for (String robot : ROBOTS) {
+            if (stop.isDone()) {
+                return stoppedWith(world);
+            }
             AgentOptions plain = AgentOptions.of(address.host(), address.port(), robot, AgentKind.ROBOT,
                     tokenFile.getProperty(robot + ".token").strip());
             AgentOptions ao = sockets.map(plain::withSocketFactory).orElse(plain);
@@ -170,33 +200,40 @@ public final class RobotsCommand implements Callable<Integer> {
                 default -> new AiboAgent(ao, world);
             };
             agents.add(agent);
-            agent.startAndAwait(Duration.ofSeconds(15));
+            if (!startAndAwait(agent, stop)) {
+                return stoppedWith(world);
+            }
             out.printf("Agent '%s' registered with %s (%d capability frames).%n", robot, gateway,
                     agent.driver().capabilities().size());
         }
         out.flush();
-        // On SIGTERM or Ctrl-C the JVM halts once its hooks return: this one waits until the agents and the simulator
-        // have been stopped, so the agents leave the server cleanly and the simulator is shut down, not cut off.
-        Thread hook = new Thread(() -> {
-            stop.countDown();
-            try {
-                stopped.await(STOP_WAIT.toMillis(), TimeUnit.MILLISECONDS);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }, "kicnp-robots-stop");
-        Runtime.getRuntime().addShutdownHook(hook);
-        boolean died = duration == null ? awaitForever(stop) : stop.await((long) (duration * 1000), TimeUnit.MILLISECONDS);
-        try {
-            Runtime.getRuntime().removeShutdownHook(hook);
-        } catch (IllegalStateException e) {
-            // Shutting down already: the hook is running.
+        if (duration != null) {
+            stop.copy().completeOnTimeout(null, (long) (duration * 1000), TimeUnit.MILLISECONDS).join();
+        } else {
+            stop.join();
         }
-        return died && !world.alive() ? 1 : 0;
+        return stop.isDone() ? stoppedWith(world) : 0;
     }
 
-    private static boolean awaitForever(CountDownLatch stop) throws InterruptedException {
-        stop.await();
-        return true;
+    /** The exit code after a stop was asked for: 1 when it was the simulator's death, 0 for SIGTERM or Ctrl-C. */
+    private static int stoppedWith(SimWorld world) {
+        return world.alive() ? 0 : 1;
+    }
+
+    /**
+     * Starts the agent and waits until it is registered, or until a stop is asked for (false): a server slow to
+     * answer must not hold a SIGTERM during start-up past the hook's wait, after which the JVM halts regardless.
+     *
+     * @throws AgentException when the agent is refused or not registered in time
+     */
+    private static boolean startAndAwait(RobotAgent agent, CompletableFuture<Void> stop) {
+        CompletableFuture<Void> registered = CompletableFuture.runAsync(() -> agent.startAndAwait(REGISTER_WAIT),
+                r -> Thread.ofVirtual().name("kicnp-robots-register-" + agent.name()).start(r));
+        try {
+            CompletableFuture.anyOf(registered, stop).join();
+        } catch (CompletionException e) {
+            throw e.getCause() instanceof RuntimeException cause ? cause : e;
+        }
+        return !stop.isDone();
     }
 }

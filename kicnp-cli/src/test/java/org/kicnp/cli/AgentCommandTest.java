@@ -244,6 +244,37 @@ class AgentCommandTest {
     }
 
     @Test
+    void send_toAKindWithNoAgentOfItConnected_exits1SayingNobodyReceivedIt_andToAKindWithOne_relays() {
+        CliRun none = agent("send", "--kind", "robot", "greeting", "hello there");
+
+        assertThat(none.exitCode()).isEqualTo(1);
+        assertThat(none.err()).contains("kicnp agent send: No other agent of kind 'robot' is registered, so nobody "
+                + "received the relay.").doesNotContain("Exception").doesNotContain("\tat ");
+        assertThat(none.out()).isEmpty();
+
+        try (UserAgent scout = new UserAgent(options("scout", AgentKind.ROBOT))) {
+            scout.startAndAwait(Duration.ofSeconds(10));
+
+            CliRun s = agent("send", "--kind", "robot", "greeting", "hello there");
+
+            assertThat(s.exitCode()).as(s.err()).isZero();
+            assertThat(s.out()).contains("Relayed to every robot agent.");
+            awaitTrue(() -> !scout.relays().isEmpty());
+            assertThat(scout.relays().getFirst().subject()).isEqualTo("greeting");
+        }
+    }
+
+    @Test
+    void send_toAnAgentNotConnected_exits1NamingIt() {
+        CliRun s = agent("send", "listener", "greeting", "hello there");
+
+        assertThat(s.exitCode()).isEqualTo(1);
+        assertThat(s.err()).contains("kicnp agent send: No agent 'listener' is registered.")
+                .doesNotContain("Exception").doesNotContain("\tat ");
+        assertThat(s.out()).isEmpty();
+    }
+
+    @Test
     void command_printsTheRobotsFeedback_andExits0WhenTheActionEnds_1WhenItFails() throws Exception {
         try (AgentBase scout = new AgentBase(options("scout", AgentKind.ROBOT)) {
             @Override protected void onCommand(Command c, ActionHandle h) {

@@ -102,6 +102,95 @@ class RobotsCommandTest {
     }
 
     @Test
+    void robots_stoppedBySigtermDuringStartUp_stopsTheSimulatorAndTheAgentStartedSoFar(@TempDir Path dir) throws Exception {
+        Path tokens = Files.write(dir.resolve("agents.properties"),
+                List.of("robovie.token = a", "pino.token = b", "scout.token = c", "aibo.token = d"));
+        Path output = dir.resolve("robots.out");
+        // A server that accepts but never answers: the first agent waits for its welcome, so start-up cannot finish.
+        List<java.net.Socket> accepted = new java.util.concurrent.CopyOnWriteArrayList<>();
+        try (java.net.ServerSocket silent = new java.net.ServerSocket(0, 50, java.net.InetAddress.getLoopbackAddress())) {
+            Thread.ofVirtual().start(() -> {
+                try {
+                    while (true) {
+                        accepted.add(silent.accept());
+                    }
+                } catch (java.io.IOException e) {
+                    // closed at the end of the test
+                }
+            });
+            String java = ProcessHandle.current().info().command().orElse("java");
+            Process robots = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"),
+                    Main.class.getName(), "robots", "--gateway", "127.0.0.1:" + silent.getLocalPort(),
+                    "--tokens", tokens.toString()).redirectErrorStream(true).redirectOutput(output.toFile()).start();
+            try {
+                long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(40);
+                // The probe, then robovie's connection.
+                while ((accepted.size() < 2 || !Files.readString(output).contains("Simulator started"))
+                        && System.nanoTime() < deadline) {
+                    Thread.sleep(20);
+                }
+                assertThat(Files.readString(output)).contains("Simulator started");
+                assertThat(accepted).hasSizeGreaterThanOrEqualTo(2);
+                List<ProcessHandle> simulator = robots.descendants().toList();
+                assertThat(simulator).isNotEmpty();
+
+                robots.destroy(); // SIGTERM while robovie is still waiting to be registered
+
+                assertThat(robots.waitFor(20, TimeUnit.SECONDS)).isTrue();
+                assertThat(Files.readString(output)).contains("Robots stopped.")
+                        .doesNotContain("The simulator is gone").doesNotContain("was not registered");
+                assertThat(simulator).noneMatch(ProcessHandle::isAlive);
+            } finally {
+                robots.descendants().forEach(ProcessHandle::destroyForcibly);
+                robots.destroyForcibly();
+                for (java.net.Socket s : accepted) {
+                    s.close();
+                }
+            }
+        }
+    }
+
+    @Test
+    void robots_whoseSimulatorDiesDuringStartUp_exitsWith1SayingSo_withoutWaitingForTheAgent(@TempDir Path dir)
+            throws Exception {
+        Path tokens = Files.write(dir.resolve("agents.properties"),
+                List.of("robovie.token = a", "pino.token = b", "scout.token = c", "aibo.token = d"));
+        List<java.net.Socket> accepted = new java.util.concurrent.CopyOnWriteArrayList<>();
+        // A server that accepts but never answers: robovie is still waiting to be registered when the simulator dies.
+        try (java.net.ServerSocket silent = new java.net.ServerSocket(0, 50, java.net.InetAddress.getLoopbackAddress())) {
+            Thread.ofVirtual().start(() -> {
+                try {
+                    while (true) {
+                        accepted.add(silent.accept());
+                    }
+                } catch (java.io.IOException e) {
+                    // closed at the end of the test
+                }
+            });
+            CompletableFuture<Integer> exit = CompletableFuture.supplyAsync(() -> run("robots",
+                    "--gateway", "127.0.0.1:" + silent.getLocalPort(), "--tokens", tokens.toString()));
+            try {
+                long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+                while ((accepted.size() < 2 || !out.toString().contains("Simulator started"))
+                        && System.nanoTime() < deadline) {
+                    Thread.sleep(20);
+                }
+                long pid = Long.parseLong(out.toString().replaceAll("(?s).*Simulator started \\(pid (\\d+),.*", "$1"));
+
+                ProcessHandle.of(pid).orElseThrow().destroyForcibly();
+
+                assertThat(exit.get(10, TimeUnit.SECONDS)).isEqualTo(1);
+                assertThat(err.toString()).contains("The simulator is gone").doesNotContain("was not registered");
+                assertThat(out.toString()).contains("Robots stopped.");
+            } finally {
+                for (java.net.Socket s : accepted) {
+                    s.close();
+                }
+            }
+        }
+    }
+
+    @Test
     void robots_withAGatewayThatIsNotHostAndPort_exitsWith2SayingSo(@TempDir Path dir) throws Exception {
         Path tokens = Files.write(dir.resolve("agents.properties"), List.of("robovie.token = x"));
 

@@ -14,8 +14,9 @@ import org.kicnp.protocol.ErrorCode;
 import org.kicnp.protocol.Message;
 
 /**
- * Names and actions have a length limit of their own, far below the frame's: one member longer than that is a
- * {@code bad_message} naming the member and the limit, on every path a message takes (a forwarded relay too).
+ * Names, actions, ids, a relay's subject and class names have a length limit of their own, far below the frame's: one
+ * member longer than that is a {@code bad_message} naming the member and the limit, on every path a message takes (a
+ * forwarded relay too).
  */
 class FieldLimitsTest {
     private static final String LONG = "n".repeat(Message.MAX_NAME_LENGTH + 1);
@@ -86,6 +87,42 @@ class FieldLimitsTest {
             alice.sendPayload(("{\"v\":1,\"type\":\"sensor\",\"source\":\"alice\",\"sensor\":\"" + LONG
                     + "\",\"values\":[1]}").getBytes(UTF_8));
             assertThat(alice.readUntilClosed()).isEqualTo(refusal("sensor", "sensor"));
+        }
+    }
+
+    @Test
+    void query_withAnIdOverTheLimit_isABadMessage() throws IOException {
+        try (RawClient alice = alice()) {
+            alice.sendPayload(("{\"v\":1,\"type\":\"query\",\"id\":\"" + LONG + "\",\"ofClass\":\"Robot\"}")
+                    .getBytes(UTF_8));
+            assertThat(alice.readUntilClosed()).isEqualTo(refusal("query", "id"));
+        }
+    }
+
+    @Test
+    void plainRelay_withAnIdOverTheLimit_isABadMessage() throws IOException {
+        try (RawClient alice = alice()) {
+            alice.sendPayload(("{\"v\":1,\"type\":\"relay\",\"id\":\"" + LONG + "\",\"from\":\"alice\","
+                    + "\"toKind\":\"user\",\"subject\":\"s\",\"body\":\"b\"}").getBytes(UTF_8));
+            assertThat(alice.readUntilClosed()).isEqualTo(refusal("relay", "id"));
+        }
+    }
+
+    @Test
+    void plainRelay_withASubjectOverTheLimit_isABadMessage() throws IOException {
+        try (RawClient alice = alice()) {
+            alice.sendPayload(("{\"v\":1,\"type\":\"relay\",\"id\":\"4\",\"from\":\"alice\",\"toAgent\":\"bob\","
+                    + "\"subject\":\"" + LONG + "\",\"body\":\"b\"}").getBytes(UTF_8));
+            assertThat(alice.readUntilClosed()).isEqualTo(refusal("relay", "subject"));
+        }
+    }
+
+    @Test
+    void subscribe_toAClassNameOverTheLimit_isABadMessage() throws IOException {
+        try (RawClient alice = alice()) {
+            alice.sendPayload(("{\"v\":1,\"type\":\"subscribe\",\"id\":\"5\",\"ofClass\":\"" + LONG + "\"}")
+                    .getBytes(UTF_8));
+            assertThat(alice.readUntilClosed()).isEqualTo(refusal("subscribe", "ofClass"));
         }
     }
 }

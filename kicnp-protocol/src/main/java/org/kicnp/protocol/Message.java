@@ -19,9 +19,11 @@ public sealed interface Message {
     Pattern NAME = Pattern.compile("[\\p{L}_][\\p{L}\\p{N}_\\-]*");
 
     /**
-     * The most characters a name (of an agent, a robot, a sensor) or a command's action may have: far below the
-     * frame's limit, so that one member cannot fill a frame, the knowledge base's frame names or an error that
-     * quotes it.
+     * The most characters (UTF-16 units, as {@link String#length()} counts them) a name (of an agent, a robot, a
+     * sensor), a command's action, a request's id (and a command id a robot or a cancel quotes), a relay's subject or
+     * a class name a request asks about may have: far below the frame's limit, so that one member cannot fill a frame,
+     * the knowledge base's frame names, a table keyed by ids or an error that quotes it. Values, bodies, frames and
+     * command arguments are bounded by the frame alone.
      */
     int MAX_NAME_LENGTH = 256;
 
@@ -35,7 +37,7 @@ public sealed interface Message {
     /** Authenticates a connection: the first message an agent sends. */
     record Hello(String id, String agent, AgentKind kind, String token) implements Request {
         public Hello {
-            requireNonNull(id, "id");
+            checkLimited(id, "id");
             requireNonNull(kind, "kind");
             requireNonNull(token, "token");
             checkName(agent, "agent");
@@ -58,7 +60,7 @@ public sealed interface Message {
     /** Tells the platform what the agent can do: capability frames as XML. */
     record Register(String id, List<String> capabilities) implements Request {
         public Register {
-            requireNonNull(id, "id");
+            checkLimited(id, "id");
             capabilities = List.copyOf(capabilities);
         }
     }
@@ -78,11 +80,11 @@ public sealed interface Message {
     record Relay(String id, String from, Optional<String> toAgent, Optional<AgentKind> toKind, String subject,
                  String body) implements Request {
         public Relay {
-            requireNonNull(id, "id");
+            checkLimited(id, "id");
             requireNonNull(from, "from");
             requireNonNull(toAgent, "toAgent");
             requireNonNull(toKind, "toKind");
-            requireNonNull(subject, "subject");
+            checkLimited(subject, "subject");
             requireNonNull(body, "body");
             if (toAgent.isPresent() == toKind.isPresent()) {
                 throw new IllegalArgumentException("A relay needs exactly one of toAgent and toKind.");
@@ -110,7 +112,7 @@ public sealed interface Message {
     /** An action for a robot: the instruction the platform converts into the robot's local command (section 3.3). */
     record Command(String id, String robot, String action, Map<String, String> args) implements Request {
         public Command {
-            requireNonNull(id, "id");
+            checkLimited(id, "id");
             checkName(robot, "robot");
             requireNonNull(action, "action");
             if (action.isBlank()) {
@@ -129,9 +131,9 @@ public sealed interface Message {
      */
     record Cancel(String id, String robot, String command, String reason) implements Request {
         public Cancel {
-            requireNonNull(id, "id");
+            checkLimited(id, "id");
             checkName(robot, "robot");
-            requireNonNull(command, "command");
+            checkLimited(command, "command");
             requireNonNull(reason, "reason");
         }
     }
@@ -140,7 +142,7 @@ public sealed interface Message {
     record Feedback(String id, String robot, FeedbackStage stage, Optional<Double> progress, String detail)
             implements Message {
         public Feedback {
-            requireNonNull(id, "id");
+            checkLimited(id, "id");
             requireNonNull(robot, "robot");
             requireNonNull(stage, "stage");
             requireNonNull(progress, "progress");
@@ -214,8 +216,8 @@ public sealed interface Message {
     /** Asks for every instance of a class (and of the classes below it). */
     record Query(String id, String ofClass) implements Request {
         public Query {
-            requireNonNull(id, "id");
-            requireNonNull(ofClass, "ofClass");
+            checkLimited(id, "id");
+            checkLimited(ofClass, "ofClass");
         }
     }
 
@@ -230,7 +232,7 @@ public sealed interface Message {
     /** Asks for the effective value of one slot of one frame, inherited along IS-A. */
     record Ask(String id, String frame, String slot) implements Request {
         public Ask {
-            requireNonNull(id, "id");
+            checkLimited(id, "id");
             requireNonNull(frame, "frame");
             requireNonNull(slot, "slot");
         }
@@ -247,7 +249,7 @@ public sealed interface Message {
     /** Adds or replaces one instance frame, given as XML. */
     record Assert(String id, String frame) implements Request {
         public Assert {
-            requireNonNull(id, "id");
+            checkLimited(id, "id");
             requireNonNull(frame, "frame");
         }
     }
@@ -255,7 +257,7 @@ public sealed interface Message {
     /** Removes a frame by name. */
     record Destroy(String id, String frame) implements Request {
         public Destroy {
-            requireNonNull(id, "id");
+            checkLimited(id, "id");
             requireNonNull(frame, "frame");
         }
     }
@@ -263,16 +265,16 @@ public sealed interface Message {
     /** Asks to hear of every change to frames of a class (and of the classes below it). */
     record Subscribe(String id, String ofClass) implements Request {
         public Subscribe {
-            requireNonNull(id, "id");
-            requireNonNull(ofClass, "ofClass");
+            checkLimited(id, "id");
+            checkLimited(ofClass, "ofClass");
         }
     }
 
     /** Stops a {@link Subscribe}. */
     record Unsubscribe(String id, String ofClass) implements Request {
         public Unsubscribe {
-            requireNonNull(id, "id");
-            requireNonNull(ofClass, "ofClass");
+            checkLimited(id, "id");
+            checkLimited(ofClass, "ofClass");
         }
     }
 
@@ -300,7 +302,7 @@ public sealed interface Message {
     /** Frames sent by another K-ICNP server, to be stored all or none. */
     record Push(String id, List<String> frames) implements Request {
         public Push {
-            requireNonNull(id, "id");
+            checkLimited(id, "id");
             frames = List.copyOf(frames);
         }
     }
@@ -308,7 +310,7 @@ public sealed interface Message {
     /** Asks another K-ICNP server for a subtree, or (without a root) its whole knowledge base. */
     record Pull(String id, Optional<String> root) implements Request {
         public Pull {
-            requireNonNull(id, "id");
+            checkLimited(id, "id");
             requireNonNull(root, "root");
         }
     }
@@ -320,8 +322,8 @@ public sealed interface Message {
      */
     record Prove(String id, String ofClass, Map<String, String> bindings) implements Request {
         public Prove {
-            requireNonNull(id, "id");
-            requireNonNull(ofClass, "ofClass");
+            checkLimited(id, "id");
+            checkLimited(ofClass, "ofClass");
             bindings = Map.copyOf(bindings);
         }
     }
@@ -351,7 +353,7 @@ public sealed interface Message {
     /** Why an instance exists. */
     record Why(String id, String instance) implements Request {
         public Why {
-            requireNonNull(id, "id");
+            checkLimited(id, "id");
             requireNonNull(instance, "instance");
         }
     }
@@ -387,7 +389,7 @@ public sealed interface Message {
      */
     record WhyNot(String id, String frame, Map<String, String> bindings) implements Request {
         public WhyNot {
-            requireNonNull(id, "id");
+            checkLimited(id, "id");
             requireNonNull(frame, "frame");
             bindings = ordered(bindings);
         }
@@ -453,6 +455,11 @@ public sealed interface Message {
         public static ErrorReply of(ErrorCode code, String message) {
             return new ErrorReply(Optional.empty(), code, message);
         }
+    }
+
+    private static void checkLimited(String value, String member) {
+        requireNonNull(value, member);
+        checkLength(value, member);
     }
 
     private static void checkLength(String name, String member) {

@@ -99,9 +99,12 @@ final class RelayScanner {
                     if (escaped || !equalsAt(RELAY)) {
                         return null;
                     }
+                } else if (member != BODY && strEnd - strStart > Message.MAX_NAME_LENGTH) {
+                    // A member that may be too long (never fewer bytes than characters): decoded in full, which says so.
+                    return null;
                 } else if (member <= TO_KIND) {
-                    if (escaped || member != ID && strEnd - strStart > Message.MAX_NAME_LENGTH) {
-                        return null; // a name that may be too long: decoded in full, which says so
+                    if (escaped) {
+                        return null;
                     }
                     // Names repeat from relay to relay: answered from NameCache (the empty id of every
                     // fire-and-forget relay is the one empty string).

@@ -4,10 +4,13 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.lang.reflect.InvocationTargetException;
 import java.lang.reflect.ParameterizedType;
 import java.lang.reflect.RecordComponent;
 import java.lang.reflect.Type;
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import org.kicnp.core.Value;
@@ -43,7 +46,60 @@ final class SchemaGenerator {
         if (type == MessageType.SENSOR) {
             ((ObjectNode) props.get("ttlMs")).put("minimum", 1).put("maximum", Message.SensorSignal.MAX_TTL_MS);
         }
+        limitedMembers(type).forEach(m -> ((ObjectNode) props.get(m)).put("maxLength", Message.MAX_NAME_LENGTH));
         return s;
+    }
+
+    /**
+     * The string members the record of {@code type} holds to {@link Message#MAX_NAME_LENGTH}: found by building the
+     * {@link Samples} message of that type again with each one a character longer than that, so the schemas say what
+     * the records (and so the gateway, which decodes into them) refuse, and no table can drift from them.
+     */
+    private static List<String> limitedMembers(MessageType type) {
+        Message sample = Samples.all().stream().filter(type.recordClass()::isInstance).findFirst().orElseThrow();
+        RecordComponent[] parts = type.recordClass().getRecordComponents();
+        String tooLong = "n".repeat(Message.MAX_NAME_LENGTH + 1);
+        List<String> limited = new ArrayList<>();
+        for (int k = 0; k < parts.length; k++) {
+            Object[] args = new Object[parts.length];
+            for (int j = 0; j < parts.length; j++) {
+                args[j] = value(parts[j], sample);
+            }
+            if (parts[k].getType() == String.class) {
+                args[k] = tooLong;
+            } else if (parts[k].getGenericType() instanceof ParameterizedType p && p.getRawType() == Optional.class
+                    && p.getActualTypeArguments()[0] == String.class) {
+                args[k] = Optional.of(tooLong);
+            } else {
+                continue;
+            }
+            if (refusedAsTooLong(type.recordClass(), parts, args, parts[k].getName())) {
+                limited.add(parts[k].getName());
+            }
+        }
+        return limited;
+    }
+
+    private static Object value(RecordComponent part, Message sample) {
+        try {
+            return part.getAccessor().invoke(sample);
+        } catch (ReflectiveOperationException e) {
+            throw new IllegalStateException("Cannot read '" + part.getName() + "' of " + sample + ".", e);
+        }
+    }
+
+    private static boolean refusedAsTooLong(Class<?> record, RecordComponent[] parts, Object[] args, String member) {
+        try {
+            record.getDeclaredConstructor(Arrays.stream(parts).map(RecordComponent::getType).toArray(Class<?>[]::new))
+                    .newInstance(args);
+            return false;
+        } catch (InvocationTargetException e) {
+            return e.getCause() instanceof IllegalArgumentException i && i.getMessage().equals("The member '" + member
+                    + "' is " + (Message.MAX_NAME_LENGTH + 1) + " characters long; at most " + Message.MAX_NAME_LENGTH
+                    + " are allowed.");
+        } catch (ReflectiveOperationException e) {
+            throw new IllegalStateException("Cannot build a " + record.getSimpleName() + ".", e);
+        }
     }
 
     private static ObjectNode typeSchema(Type t) {
@@ -51,7 +107,7 @@ final class SchemaGenerator {
         if (t instanceof ParameterizedType p) {
             Class<?> raw = (Class<?>) p.getRawType();
             Type[] args = p.getActualTypeArguments();
-            if (raw == java.util.List.class) {
+            if (raw == List.class) {
                 n.put("type", "array");
                 n.set("items", typeSchema(args[0]));
             } else if (raw == java.util.Map.class) {
@@ -86,7 +142,7 @@ final class SchemaGenerator {
     }
 
     /** The records that are parts of messages, not messages: each defined once under {@code $defs}. */
-    private static final java.util.List<Class<?>> NESTED = java.util.List.of(Message.ProofNode.class,
+    private static final List<Class<?>> NESTED = List.of(Message.ProofNode.class,
             Message.Reason.class, Message.SlotCandidates.class, Message.BindingOutcome.class);
 
     private static String defName(Class<?> c) {

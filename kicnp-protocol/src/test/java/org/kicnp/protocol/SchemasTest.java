@@ -30,4 +30,30 @@ class SchemasTest {
                     .content(StandardCharsets.UTF_8).isEqualTo(expected);
         }
     }
+
+    /** The limits the schemas carry are the records': names, actions, ids, a relay's subject, class names; no others. */
+    @Test
+    void publishedSchemas_limitTheLengthOfTheMembersTheRecordsLimit() throws Exception {
+        com.fasterxml.jackson.databind.ObjectMapper json = new com.fasterxml.jackson.databind.ObjectMapper();
+        java.util.function.BiFunction<String, String, com.fasterxml.jackson.databind.JsonNode> member = (type, name) -> {
+            try {
+                return json.readTree(DIR.resolve(type + ".json").toFile()).path("properties").path(name);
+            } catch (java.io.IOException e) {
+                throw new java.io.UncheckedIOException(e);
+            }
+        };
+
+        for (String[] limited : new String[][] {{"hello", "id"}, {"hello", "agent"}, {"relay", "from"},
+                {"relay", "toAgent"}, {"relay", "subject"}, {"command", "robot"}, {"command", "action"},
+                {"cancel", "command"}, {"feedback", "id"}, {"sensor", "sensor"}, {"query", "ofClass"},
+                {"subscribe", "ofClass"}, {"unsubscribe", "ofClass"}, {"prove", "ofClass"}}) {
+            assertThat(member.apply(limited[0], limited[1]).path("maxLength").asInt())
+                    .as("%s's %s", limited[0], limited[1]).isEqualTo(Message.MAX_NAME_LENGTH);
+        }
+        for (String[] free : new String[][] {{"hello", "token"}, {"relay", "body"}, {"assert", "frame"},
+                {"feedback", "detail"}, {"changed", "ofClass"}, {"ack", "id"}, {"error", "message"}}) {
+            assertThat(member.apply(free[0], free[1]).has("maxLength")).as("%s's %s", free[0], free[1]).isFalse();
+        }
+        assertThat(member.apply("command", "args").path("additionalProperties").has("maxLength")).isFalse();
+    }
 }
