@@ -11,13 +11,18 @@ import org.kicnp.gateway.GatewayServer;
 import org.kicnp.protocol.AgentKind;
 import picocli.CommandLine;
 
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 
 import static org.assertj.core.api.Assertions.assertThat;
@@ -106,31 +111,21 @@ class RobotsCommandTest {
         Path tokens = Files.write(dir.resolve("agents.properties"),
                 List.of("robovie.token = a", "pino.token = b", "scout.token = c", "aibo.token = d"));
         Path output = dir.resolve("robots.out");
-        // A server that accepts but never answers: the first agent waits for its welcome, so start-up cannot finish.
-        List<java.net.Socket> accepted = new java.util.concurrent.CopyOnWriteArrayList<>();
-        try (java.net.ServerSocket silent = new java.net.ServerSocket(0, 50, java.net.InetAddress.getLoopbackAddress())) {
-            Thread.ofVirtual().start(() -> {
-                try {
-                    while (true) {
-                        accepted.add(silent.accept());
-                    }
-                } catch (java.io.IOException e) {
-                    // closed at the end of the test
-                }
-            });
+        // The first agent waits for its welcome from a server that never answers, so start-up cannot finish.
+        try (SilentServer silent = new SilentServer()) {
             String java = ProcessHandle.current().info().command().orElse("java");
             Process robots = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"),
-                    Main.class.getName(), "robots", "--gateway", "127.0.0.1:" + silent.getLocalPort(),
+                    Main.class.getName(), "robots", "--gateway", "127.0.0.1:" + silent.port(),
                     "--tokens", tokens.toString()).redirectErrorStream(true).redirectOutput(output.toFile()).start();
             try {
                 long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(40);
                 // The probe, then robovie's connection.
-                while ((accepted.size() < 2 || !Files.readString(output).contains("Simulator started"))
+                while ((silent.accepted() < 2 || !Files.readString(output).contains("Simulator started"))
                         && System.nanoTime() < deadline) {
                     Thread.sleep(20);
                 }
                 assertThat(Files.readString(output)).contains("Simulator started");
-                assertThat(accepted).hasSizeGreaterThanOrEqualTo(2);
+                assertThat(silent.accepted()).isGreaterThanOrEqualTo(2);
                 List<ProcessHandle> simulator = robots.descendants().toList();
                 assertThat(simulator).isNotEmpty();
 
@@ -143,9 +138,6 @@ class RobotsCommandTest {
             } finally {
                 robots.descendants().forEach(ProcessHandle::destroyForcibly);
                 robots.destroyForcibly();
-                for (java.net.Socket s : accepted) {
-                    s.close();
-                }
             }
         }
     }
@@ -155,38 +147,22 @@ class RobotsCommandTest {
             throws Exception {
         Path tokens = Files.write(dir.resolve("agents.properties"),
                 List.of("robovie.token = a", "pino.token = b", "scout.token = c", "aibo.token = d"));
-        List<java.net.Socket> accepted = new java.util.concurrent.CopyOnWriteArrayList<>();
-        // A server that accepts but never answers: robovie is still waiting to be registered when the simulator dies.
-        try (java.net.ServerSocket silent = new java.net.ServerSocket(0, 50, java.net.InetAddress.getLoopbackAddress())) {
-            Thread.ofVirtual().start(() -> {
-                try {
-                    while (true) {
-                        accepted.add(silent.accept());
-                    }
-                } catch (java.io.IOException e) {
-                    // closed at the end of the test
-                }
-            });
+        // Robovie is still waiting to be registered by a server that never answers when the simulator dies.
+        try (SilentServer silent = new SilentServer()) {
             CompletableFuture<Integer> exit = CompletableFuture.supplyAsync(() -> run("robots",
-                    "--gateway", "127.0.0.1:" + silent.getLocalPort(), "--tokens", tokens.toString()));
-            try {
-                long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
-                while ((accepted.size() < 2 || !out.toString().contains("Simulator started"))
-                        && System.nanoTime() < deadline) {
-                    Thread.sleep(20);
-                }
-                long pid = Long.parseLong(out.toString().replaceAll("(?s).*Simulator started \\(pid (\\d+),.*", "$1"));
-
-                ProcessHandle.of(pid).orElseThrow().destroyForcibly();
-
-                assertThat(exit.get(10, TimeUnit.SECONDS)).isEqualTo(1);
-                assertThat(err.toString()).contains("The simulator is gone").doesNotContain("was not registered");
-                assertThat(out.toString()).contains("Robots stopped.");
-            } finally {
-                for (java.net.Socket s : accepted) {
-                    s.close();
-                }
+                    "--gateway", "127.0.0.1:" + silent.port(), "--tokens", tokens.toString()));
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+            while ((silent.accepted() < 2 || !out.toString().contains("Simulator started"))
+                    && System.nanoTime() < deadline) {
+                Thread.sleep(20);
             }
+            long pid = Long.parseLong(out.toString().replaceAll("(?s).*Simulator started \\(pid (\\d+),.*", "$1"));
+
+            ProcessHandle.of(pid).orElseThrow().destroyForcibly();
+
+            assertThat(exit.get(10, TimeUnit.SECONDS)).isEqualTo(1);
+            assertThat(err.toString()).contains("The simulator is gone").doesNotContain("was not registered");
+            assertThat(out.toString()).contains("Robots stopped.");
         }
     }
 
@@ -256,5 +232,39 @@ class RobotsCommandTest {
     void robots_help_listsItsOptions() {
         assertThat(run("robots", "--help")).isZero();
         assertThat(out.toString()).contains("--gateway").contains("--tokens").contains("--seed").contains("--time-scale");
+    }
+
+    /** A loopback server that accepts connections and never answers them: an agent waits there for its welcome. */
+    private static final class SilentServer implements AutoCloseable {
+        private final ServerSocket server = new ServerSocket(0, 50, InetAddress.getLoopbackAddress());
+        private final List<Socket> accepted = new CopyOnWriteArrayList<>();
+
+        SilentServer() throws IOException {
+            Thread.ofVirtual().start(() -> {
+                try {
+                    while (true) {
+                        accepted.add(server.accept());
+                    }
+                } catch (IOException e) {
+                    // closed by close()
+                }
+            });
+        }
+
+        int port() {
+            return server.getLocalPort();
+        }
+
+        /** The number of connections accepted so far. */
+        int accepted() {
+            return accepted.size();
+        }
+
+        @Override public void close() throws IOException {
+            server.close();
+            for (Socket s : accepted) {
+                s.close();
+            }
+        }
     }
 }
