@@ -26,12 +26,17 @@ final class Activation {
     boolean changed;
 
     Activation(Rule rule, String[] facts, FactView.Fact[] refs, long recency, long seq) {
+        this(rule, facts, refs, recency, seq, new BindingKey(rule.frame(), facts));
+    }
+
+    /** As above, with the binding's key made already ({@code new BindingKey(rule.frame(), facts)}). */
+    Activation(Rule rule, String[] facts, FactView.Fact[] refs, long recency, long seq, BindingKey key) {
         this.rule = rule;
         this.facts = facts;
         this.refs = refs;
         this.recency = recency;
         this.seq = seq;
-        this.key = new BindingKey(rule.frame(), facts);
+        this.key = key;
         this.rank = Agenda.rank(rule);
     }
 

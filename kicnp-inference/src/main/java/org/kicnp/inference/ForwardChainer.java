@@ -394,7 +394,7 @@ final class ForwardChainer {
             trace(new TraceEvent.Blocked(r.frame(), m.binding(), blocked.get()));
             return;
         }
-        Activation a = new Activation(r, bound, refs, recency, ++seq);
+        Activation a = new Activation(r, bound, refs, recency, ++seq, key);
         agenda.add(a);
         if (tracing) {
             trace(new TraceEvent.Activated(r.frame(), m.binding(), agenda.size()));
