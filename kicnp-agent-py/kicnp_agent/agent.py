@@ -406,6 +406,7 @@ class Agent:
         delay = self.options.backoff_initial
         while not self._closed.is_set():
             connection = None
+            fatal = None
             try:
                 connection = Connection.open(self.options)
                 if self._closed.is_set():  # closed while connecting
@@ -414,7 +415,7 @@ class Agent:
                 delay = self.options.backoff_initial
                 self._read_loop(connection)
             except AuthenticationError as e:
-                self._stop(e)
+                fatal = (e, None)
                 return
             except (OSError, ProtocolError) as e:
                 if self._closed.is_set():
@@ -423,13 +424,15 @@ class Agent:
                 LOG.info("Agent '%s' lost its connection to %s:%d (%s); reconnecting.", self.name, self.options.host,
                          self.options.port, self._last_failure)
             except Exception as e:  # a bug in the program (say, in capabilities()) or a server we do not understand
-                self._stop(AgentError("Agent '%s' failed: %s" % (self.name, _sentence("%s: %s" % (type(e).__name__, e)))),
-                           e)
+                fatal = (AgentError("Agent '%s' failed: %s" % (self.name, _sentence("%s: %s" % (type(e).__name__, e)))),
+                         e)
                 return
             finally:
                 if connection is not None:
                     connection.close()
                 self._lost()
+                if fatal is not None:  # only now: whoever sees `stopped` set sees the agent disconnected too
+                    self._stop(*fatal)
             if self._closed.wait(delay / 2 + random.uniform(0, delay / 2)):  # "equal jitter"
                 return
             delay = min(delay * 2, self.options.backoff_max)
