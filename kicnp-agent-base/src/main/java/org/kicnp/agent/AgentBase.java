@@ -398,13 +398,13 @@ public abstract class AgentBase implements AutoCloseable {
     private void supervise() {
         Duration delay = options.backoffInitial();
         while (!closed) {
+            AgentException stop = null;
             try (Connection c = Connection.open(options, codec)) {
                 handshake(c);
                 delay = options.backoffInitial();
                 readLoop(c);
             } catch (AuthenticationException e) {
-                fatal = e;
-                firstOutcome.countDown();
+                stop = e;
                 LOG.error("Agent '{}' stops: {}", name(), e.getMessage());
                 return;
             } catch (IOException | ProtocolException | NotConnectedException e) {
@@ -415,12 +415,15 @@ public abstract class AgentBase implements AutoCloseable {
                 LOG.info("Agent '{}' lost its connection to {}:{} ({}); reconnecting.", name(), options.host(),
                         options.port(), e.getMessage() == null ? e.toString() : e.getMessage());
             } catch (RuntimeException e) { // a bug in a subclass (say, in capabilities()) or a server we do not understand
-                fatal = e instanceof AgentException a ? a : new AgentException("Agent '" + name() + "' stops: " + e, e);
-                firstOutcome.countDown();
+                stop = e instanceof AgentException a ? a : new AgentException("Agent '" + name() + "' stops: " + e, e);
                 LOG.error("Agent '{}' stops.", name(), e);
                 return;
             } finally {
                 lost();
+                if (stop != null) { // only now: whoever sees the agent stopped sees it disconnected too
+                    fatal = stop;
+                    firstOutcome.countDown();
+                }
             }
             try {
                 long ms = delay.toMillis();

@@ -122,6 +122,28 @@ class AgentBaseTest {
         }
     }
 
+    /** An agent replaced by a newer connection under its name stops, and is seen disconnected once it is seen stopped. */
+    @Test
+    void agentReplacedByANewerConnection_stops_andIsNotConnectedOnceStopped() throws Exception {
+        try (FakeGateway server = new FakeGateway(peer -> {
+            peer.register();
+            peer.send(Message.ErrorReply.of(ErrorCode.SUPERSEDED, "Agent 'alice' was replaced by a newer connection."));
+            peer.drain();
+        });
+             UserAgent a = new UserAgent(AgentOptions.of("127.0.0.1", server.port(), "alice", AgentKind.USER, "t")
+                     .withBackoff(Duration.ofMillis(10), Duration.ofMillis(50)))) {
+            a.start();
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+            while (a.stopped().isEmpty() && System.nanoTime() < deadline) {
+                Thread.onSpinWait();
+            }
+            assertThat(a.isConnected()).as("connected when first seen stopped").isFalse();
+            assertThat(a.stopped()).get().extracting(Throwable::getMessage)
+                    .isEqualTo("Agent 'alice' stops: Agent 'alice' was replaced by a newer connection.");
+            assertThat(server.connections()).isEqualTo(1);
+        }
+    }
+
     /** An id-less {@code not_authenticated} answering the hello is a refusal: the agent stops, saying so. */
     @Test
     void notAuthenticatedWithoutId_answeringTheHello_stopsTheAgentWithAuthenticationException() throws Exception {
