@@ -113,8 +113,7 @@ class AgentBaseTest {
                     peer.register();
                     peer.drain();
                 });
-             UserAgent a = new UserAgent(AgentOptions.of("127.0.0.1", server.port(), "alice", AgentKind.USER, "t")
-                     .withBackoff(Duration.ofMillis(10), Duration.ofMillis(50)))) {
+             UserAgent a = new UserAgent(alice(server))) {
             a.startAndAwait(Duration.ofSeconds(10));
             assertThat(a.isConnected()).isTrue();
             assertThat(a.stopped()).isEmpty();
@@ -130,8 +129,7 @@ class AgentBaseTest {
             peer.send(Message.ErrorReply.of(ErrorCode.SUPERSEDED, "Agent 'alice' was replaced by a newer connection."));
             peer.drain();
         });
-             UserAgent a = new UserAgent(AgentOptions.of("127.0.0.1", server.port(), "alice", AgentKind.USER, "t")
-                     .withBackoff(Duration.ofMillis(10), Duration.ofMillis(50)))) {
+             UserAgent a = new UserAgent(alice(server))) {
             a.start();
             long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
             while (a.stopped().isEmpty() && System.nanoTime() < deadline) {
@@ -151,8 +149,7 @@ class AgentBaseTest {
             peer.readSkippingHeartbeats();
             peer.send(Message.ErrorReply.of(ErrorCode.NOT_AUTHENTICATED, "Send 'hello' first."));
         });
-             UserAgent a = new UserAgent(AgentOptions.of("127.0.0.1", server.port(), "alice", AgentKind.USER, "t")
-                     .withBackoff(Duration.ofMillis(10), Duration.ofMillis(50)))) {
+             UserAgent a = new UserAgent(alice(server))) {
             assertThatThrownBy(() -> a.startAndAwait(Duration.ofSeconds(10))).isInstanceOf(AuthenticationException.class)
                     .hasMessage("Server refused agent 'alice': Send 'hello' first.");
             assertThat(server.connections()).isEqualTo(1);
@@ -174,8 +171,7 @@ class AgentBaseTest {
                     peer.send(Message.ErrorReply.to(again.id(), ErrorCode.UNKNOWN_FRAME, "No frame 'Cup' exists."));
                     peer.drain();
                 });
-             Subscriber a = new Subscriber(AgentOptions.of("127.0.0.1", server.port(), "alice", AgentKind.USER, "t")
-                     .withBackoff(Duration.ofMillis(10), Duration.ofMillis(50)))) {
+             Subscriber a = new Subscriber(alice(server))) {
             a.startAndAwait(Duration.ofSeconds(10));
             a.subscribe("Cup");
             RequestRefusedException refusal = a.refused.poll(10, TimeUnit.SECONDS);
@@ -272,5 +268,11 @@ class AgentBaseTest {
             assertThat(c.id()).isEqualTo(ticket.command().id());
             return c.id();
         }
+    }
+
+    /** User agent alice of the fake gateway, retrying quickly. */
+    private static AgentOptions alice(FakeGateway server) {
+        return AgentOptions.of("127.0.0.1", server.port(), "alice", AgentKind.USER, "t")
+                .withBackoff(Duration.ofMillis(10), Duration.ofMillis(50));
     }
 }

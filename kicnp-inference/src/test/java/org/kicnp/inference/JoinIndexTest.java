@@ -90,10 +90,7 @@ class JoinIndexTest {
     @Test
     void join_afterANonReactiveSlotChanged_newFactsAreJoinedOnItsNewValue() {
         Fixture f = new Fixture();
-        f.kb.add(Frame.classFrame("User").slot(Slot.builder("name", DataType.STRING).reactive(false).build()).build());
-        f.kb.add(Frame.classFrame("Order").slot(Slot.builder("who", DataType.STRING).build()).build());
-        f.kb.add(Frame.classFrame("Deliver").slot(Fixture.inst("mUser", "User"))
-                .slot(Fixture.inst("mOrder", "Order", ".who == mUser.name")).build());
+        deliverByName(f);
         InferenceEngine e = f.engine();
         f.assertFact("u1", "User", "name", "Ann");
         e.runToQuiescence();
@@ -156,10 +153,7 @@ class JoinIndexTest {
     @Test
     void waitingActivation_whenANonReactiveChangeBreaksItsJoin_doesNotFire() {
         Fixture f = new Fixture();
-        f.kb.add(Frame.classFrame("User").slot(Slot.builder("name", DataType.STRING).reactive(false).build()).build());
-        f.kb.add(Frame.classFrame("Order").slot(Slot.builder("who", DataType.STRING).build()).build());
-        f.kb.add(Frame.classFrame("Deliver").slot(Fixture.inst("mUser", "User"))
-                .slot(Fixture.inst("mOrder", "Order", ".who == mUser.name")).build());
+        deliverByName(f);
         InferenceEngine e = f.engine();
         f.assertFact("u1", "User", "name", "Ann");
         f.assertFact("oAnn", "Order", "who", "Ann");
@@ -210,6 +204,14 @@ class JoinIndexTest {
         assertThat(e.runToQuiescence()).as("Far read s1.key through h1; 2 != 1 now").isZero();
         assertThat(f.traced(TraceEvent.Blocked.class)).singleElement()
                 .satisfies(b -> assertThat(b.reason()).startsWith("the condition of slot 'mT' no longer holds"));
+    }
+
+    /** User (a non-reactive name), Order (who) and Deliver joining an order to the user it names. */
+    private static void deliverByName(Fixture f) {
+        f.kb.add(Frame.classFrame("User").slot(Slot.builder("name", DataType.STRING).reactive(false).build()).build());
+        f.kb.add(Frame.classFrame("Order").slot(Slot.builder("who", DataType.STRING).build()).build());
+        f.kb.add(Frame.classFrame("Deliver").slot(Fixture.inst("mUser", "User"))
+                .slot(Fixture.inst("mOrder", "Order", ".who == mUser.name")).build());
     }
 
     /** User (a non-reactive age), Mouth, and Talk binding a User of 18 or more to a Mouth. */
