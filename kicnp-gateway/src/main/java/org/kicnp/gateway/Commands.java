@@ -33,6 +33,8 @@ final class Commands implements ActionSink {
     private final Outbound out;
     private final RuntimeFrames runtime;
     private final FeedbackListener listener;
+    /** Set when the gateway shuts down: the robots' connections then close because of that, not of the robots. */
+    private volatile boolean closing;
 
     Commands(AgentRegistry registry, Outbound out, RuntimeFrames runtime, FeedbackListener listener) {
         this.registry = registry;
@@ -138,18 +140,29 @@ final class Commands implements ActionSink {
         deliver(entry, f);
     }
 
+    /**
+     * The gateway is shutting down: from now on a robot's connection that closes fails its commands as the gateway's
+     * doing, and an agent that issued one is not sent that failure, its own connection closing too (its SDK reports the
+     * lost connection, whichever connection the shutdown closes first).
+     */
+    void closing() {
+        closing = true;
+    }
+
     /** Fails every command in flight on a robot connection that closed. */
     void connectionClosed(Session robot) {
         inFlight.forEach((key, entry) -> {
             if (entry.robot() == robot && remove(key, entry)) {
                 Feedback failed = new Feedback(entry.command().id(), robot.agent(), FeedbackStage.FAILED,
-                        Optional.empty(), "agent '" + robot.agent() + "' disconnected");
+                        Optional.empty(), closing ? "the gateway shut down" : "agent '" + robot.agent() + "' disconnected");
                 try {
                     runtime.feedback(entry.command(), failed);
                 } catch (KnowledgeException | IllegalArgumentException e) {
                     LOG.warn("Could not record the failure of command '{}': {}", entry.command().id(), e.getMessage());
                 }
-                deliver(entry, failed);
+                if (!closing || entry.issuer().isEmpty()) {
+                    deliver(entry, failed);
+                }
             }
         });
     }

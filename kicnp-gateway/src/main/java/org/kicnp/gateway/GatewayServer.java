@@ -203,6 +203,7 @@ public final class GatewayServer implements AutoCloseable {
         for (Channel ch : moreListeners) {
             ch.close().awaitUninterruptibly();
         }
+        server.commands().closing();
         connections.close().awaitUninterruptibly();
         boss.shutdownGracefully(0, 1, TimeUnit.SECONDS).syncUninterruptibly();
         workers.shutdownGracefully(0, 1, TimeUnit.SECONDS).syncUninterruptibly();
