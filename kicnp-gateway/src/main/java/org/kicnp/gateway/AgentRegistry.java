@@ -25,6 +25,11 @@ final class AgentRegistry {
         return Optional.ofNullable(byName.get(agent));
     }
 
+    /** As {@link #find}, null when no agent of that name is registered: the relay path's look-up, with no garbage. */
+    Session sessionOf(String agent) {
+        return byName.get(agent);
+    }
+
     List<Session> ofKind(AgentKind kind) {
         return byName.values().stream().filter(s -> s.kind() == kind).toList();
     }

@@ -1,5 +1,6 @@
 package org.kicnp.gateway;
 
+import io.netty.buffer.ByteBuf;
 import io.netty.channel.ChannelHandlerContext;
 import io.netty.channel.ChannelInboundHandlerAdapter;
 import io.netty.handler.codec.CorruptedFrameException;
@@ -19,15 +20,17 @@ import org.kicnp.protocol.Message;
 import org.kicnp.protocol.Message.ErrorReply;
 import org.kicnp.protocol.MessageCodec;
 import org.kicnp.protocol.ProtocolException;
+import org.kicnp.protocol.RelayRoute;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
  * One agent connection: enforces "authenticate first", dispatches each message over the closed set, answers
  * protocol errors and closes that connection only, keeps heartbeats, and cleans up when the connection closes.
- * Reads decoded {@link Message}s and, for plain relays, {@link InboundRelay}s whose frame it forwards or releases.
+ * Reads decoded {@link Message}s, and forwards the plain relays its connection's {@link FrameDecoder} hands it where
+ * they lie in the read buffer.
  */
-final class GatewayHandler extends ChannelInboundHandlerAdapter {
+final class GatewayHandler extends ChannelInboundHandlerAdapter implements FrameDecoder.RelaySink {
     private static final Logger LOG = LoggerFactory.getLogger(GatewayHandler.class);
     private static final Pattern NETTY_TOO_LONG = Pattern.compile("exceeds (\\d+): (\\d+)");
 
@@ -84,13 +87,7 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter {
 
     @Override public void channelRead(ChannelHandlerContext ctx, Object msg) {
         ReadBatch.current().open();
-        if (msg instanceof InboundRelay relay) {
-            try {
-                relay(relay);
-            } finally {
-                relay.frame().release();
-            }
-        } else if (msg instanceof Message message) {
+        if (msg instanceof Message message) {
             read(message);
         } else {
             ctx.fireChannelRead(msg);
@@ -104,18 +101,20 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter {
     }
 
     /**
-     * A plain relay: forwarded as it arrived when it names this connection's agent as its sender (what every
-     * well-behaved agent writes), otherwise decoded in full so the hub stamps the sender it authenticated.
+     * Forwards a plain relay as it arrived, byte for byte, when this connection's agent is authenticated and the
+     * relay names it as its sender (what every well-behaved agent writes); declines it otherwise, and the relay is
+     * decoded in full, so the hub stamps the sender it authenticated ({@link ServerAgent#relay}).
      */
-    private void relay(InboundRelay relay) {
-        if (session.state() == Session.State.AUTHENTICATED || session.state() == Session.State.REGISTERED) {
-            if (relay.route().from().equals(session.agent())) {
-                metrics.received.increment();
-                server.relayFrame(session, relay.route(), relay.frame()).ifPresent(this::reply);
-                return;
-            }
+    @Override public boolean relayNow(RelayRoute route, ByteBuf buffer, int index, int length) {
+        Session.State state = session.state();
+        if ((state != Session.State.AUTHENTICATED && state != Session.State.REGISTERED)
+                || !route.from().equals(session.agent())) {
+            return false;
         }
-        read(relay.decode(codec));
+        ReadBatch.current().open();
+        metrics.received.increment();
+        server.relayFrame(session, route, buffer, index, length).ifPresent(this::reply);
+        return true;
     }
 
     private void read(Message message) {

@@ -5,11 +5,9 @@ import io.netty.channel.ChannelInitializer;
 import io.netty.channel.ChannelPipeline;
 import io.netty.channel.group.ChannelGroup;
 import io.netty.channel.socket.SocketChannel;
-import io.netty.handler.codec.LengthFieldBasedFrameDecoder;
 import io.netty.handler.timeout.IdleStateHandler;
 import java.time.Duration;
 import java.util.concurrent.TimeUnit;
-import org.kicnp.protocol.Framing;
 import org.kicnp.protocol.MessageCodec;
 
 /**
@@ -40,16 +38,16 @@ final class GatewayInitializer extends ChannelInitializer<SocketChannel> {
     void configure(Channel ch) {
         ChannelPipeline p = ch.pipeline();
         config.tls().ifPresent(tls -> p.addLast("tls", tls.newHandler(ch.alloc())));
-        // failFast: an oversize length is refused when read, without waiting for (or buffering) its bytes.
-        p.addLast("frames", new LengthFieldBasedFrameDecoder(config.maxFrameBytes() + Framing.LENGTH_BYTES,
-                0, Framing.LENGTH_BYTES, 0, 0, true)); // the prefix stays: a forwarded relay keeps its frame
+        // Reader idleness only, of the bytes read (a relay the frame decoder forwards reaches no handler after it).
+        // A writer-idle check here would wrap every write in a promise with a listener; the handler sends
+        // heartbeats itself when the connection has been written nothing for a third of the timeout.
+        long timeout = config.heartbeatTimeout().toMillis();
+        p.addLast("idle", new IdleStateHandler(timeout, 0, 0, TimeUnit.MILLISECONDS));
+        GatewayHandler agent = new GatewayHandler(server, metrics, codec, Duration.ofMillis(Math.max(10, timeout / 3)),
+                config.maxFrameBytes());
+        p.addLast("frames", new FrameDecoder(config.maxFrameBytes(), agent)); // the prefix stays in each frame
         p.addLast("decoder", new MessageDecoder(codec));
         p.addLast("encoder", new MessageEncoder(codec, config.maxFrameBytes()));
-        long timeout = config.heartbeatTimeout().toMillis();
-        // Reader idleness only: a writer-idle check here would wrap every write in a promise with a listener.
-        // The handler sends heartbeats itself when the connection has been written nothing for a third of it.
-        p.addLast("idle", new IdleStateHandler(timeout, 0, 0, TimeUnit.MILLISECONDS));
-        p.addLast("agent", new GatewayHandler(server, metrics, codec, Duration.ofMillis(Math.max(10, timeout / 3)),
-                config.maxFrameBytes()));
+        p.addLast("agent", agent);
     }
 }

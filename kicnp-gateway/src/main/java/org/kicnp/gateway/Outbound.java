@@ -28,27 +28,34 @@ final class Outbound {
 
     /** Sends a message; says whether it was handed to the connection (false: closed or shed). */
     boolean send(Session to, Message message) {
-        return admit(to, message);
+        if (!admit(to)) {
+            return false;
+        }
+        to.enqueue(message);
+        return true;
     }
 
     /**
-     * Sends a whole frame as it is (a forwarded relay), taking over the caller's reference to it: the frame is
-     * released here when it is not handed to the connection. The frame's indices are never moved, so one buffer
-     * may go to several connections, each with its own reference.
+     * Sends a whole frame as it is (a forwarded relay): the {@code length} bytes of {@code source} from {@code index},
+     * which the caller keeps (its reference and indices are left as they were). On the receiver's own event loop the
+     * bytes are copied at once ({@link Session#appendNow}); otherwise a retained slice of them is queued.
      */
-    boolean sendFrame(Session to, ByteBuf frame) {
-        boolean sent = false;
-        try {
-            sent = admit(to, frame);
-            return sent;
-        } finally {
-            if (!sent) {
-                frame.release();
-            }
+    boolean forward(Session to, ByteBuf source, int index, int length) {
+        if (!admit(to)) {
+            return false;
         }
+        if (!to.appendNow(source, index, length)) {
+            to.enqueue(source.retainedSlice(index, length));
+        }
+        return true;
     }
 
-    private boolean admit(Session to, Object message) {
+    /**
+     * Whether a message may be handed to the connection now (then it is counted as sent, and the caller hands it
+     * over); when not, a message to a connection above its high mark is counted as shed, and the connection is
+     * dropped after {@code maxShedBeforeDrop} in a row.
+     */
+    private boolean admit(Session to) {
         Channel ch = to.channel();
         if (!ch.isActive() || to.state() == Session.State.CLOSING) {
             return false;
@@ -58,7 +65,6 @@ final class Outbound {
                 to.shedInARow.set(0);
             }
             metrics.sent.increment();
-            to.enqueue(message);
             return true;
         }
         metrics.shed.incrementAndGet();

@@ -158,24 +158,26 @@ final class ServerAgent {
     }
 
     /**
-     * Relays a plain relay's frame as it is, to one agent or to every agent of a kind (not back to the sender); the
-     * caller has checked that the frame names {@code from} as its sender, and keeps its own reference to it. Every
-     * receiver shares the one buffer (a reference each): the outbox copies it out without moving its indices.
+     * Relays a plain relay's frame as it is, to one agent or to every agent of a kind (not back to the sender): the
+     * {@code length} bytes of {@code source} from {@code index}, length prefix included, which the caller keeps (see
+     * {@link Outbound#forward}); the caller has checked that the frame names {@code from} as its sender.
      */
-    Optional<Message> relayFrame(Session from, RelayRoute route, ByteBuf frame) {
+    Optional<Message> relayFrame(Session from, RelayRoute route, ByteBuf source, int index, int length) {
         if (route.toAgent().isPresent()) {
             String to = route.toAgent().get();
-            Optional<Session> target = registry.find(to);
-            if (target.isEmpty()) {
+            Session target = registry.sessionOf(to);
+            if (target == null) {
                 return Optional.of(unknownAgent(route.id(), to));
             }
-            out.sendFrame(target.get(), frame.retain());
+            out.forward(target, source, index, length);
         } else {
             List<Session> targets = othersOfKind(from, route.toKind().orElseThrow());
             if (targets.isEmpty()) {
                 return Optional.of(noneOfKind(route.id(), route.toKind().get()));
             }
-            targets.forEach(target -> out.sendFrame(target, frame.retain()));
+            for (Session target : targets) {
+                out.forward(target, source, index, length);
+            }
         }
         return acked(route.id());
     }

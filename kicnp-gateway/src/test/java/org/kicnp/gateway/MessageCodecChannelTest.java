@@ -4,24 +4,36 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import io.netty.buffer.ByteBuf;
+import io.netty.buffer.ByteBufUtil;
 import io.netty.buffer.Unpooled;
 import io.netty.channel.embedded.EmbeddedChannel;
 import io.netty.handler.codec.DecoderException;
-import io.netty.handler.codec.LengthFieldBasedFrameDecoder;
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
 import org.kicnp.protocol.AgentKind;
 import org.kicnp.protocol.ErrorCode;
 import org.kicnp.protocol.Message;
 import org.kicnp.protocol.ProtocolException;
+import org.kicnp.protocol.RelayRoute;
 
 /** The Netty codec alone: frames split and joined arbitrarily still decode; the encoder writes length + JSON. */
 class MessageCodecChannelTest {
+    /** The plain relays the frame decoder offered its sink, each with the bytes of its frame. */
+    private final List<Map.Entry<RelayRoute, byte[]>> offered = new ArrayList<>();
+    /** Whether the sink takes what it is offered (as the handler does when the relay names its agent). */
+    private boolean taking = true;
+
     private EmbeddedChannel codec() {
         // As in the gateway's pipeline: the frame decoder leaves the length prefix in front of each frame.
-        return new EmbeddedChannel(new LengthFieldBasedFrameDecoder(1 << 20, 0, 4, 0, 0, true),
-                new MessageDecoder(Wire.CODEC), new MessageEncoder(Wire.CODEC));
+        FrameDecoder.RelaySink sink = (route, buffer, index, length) -> {
+            offered.add(Map.entry(route, ByteBufUtil.getBytes(buffer, index, length)));
+            return taking;
+        };
+        return new EmbeddedChannel(new FrameDecoder(1 << 20, sink), new MessageDecoder(Wire.CODEC),
+                new MessageEncoder(Wire.CODEC));
     }
 
     @Test
@@ -38,23 +50,33 @@ class MessageCodecChannelTest {
     }
 
     @Test
-    void decoder_ofPlainRelay_givesItsRouteAndWholeFrame_andAnyOtherRelayDecoded() {
+    void frameDecoder_offersAPlainRelayWithItsRouteAndWholeFrame_andAnyOtherRelayIsDecoded() {
         EmbeddedChannel ch = codec();
         Message.Relay plain = Message.Relay.toAgent("7", "alice", "bob", "say", "hi");
-        ch.writeInbound(Wire.frame(plain));
-        InboundRelay in = ch.readInbound();
-        try {
-            assertThat(in.route()).isEqualTo(new org.kicnp.protocol.RelayRoute("7", "alice", Optional.of("bob"),
-                    Optional.empty()));
-            assertThat(io.netty.buffer.ByteBufUtil.getBytes(in.frame()))
-                    .isEqualTo(io.netty.buffer.ByteBufUtil.getBytes(Wire.frame(plain)));
-            assertThat(in.decode(Wire.CODEC)).isEqualTo(plain);
-        } finally {
-            in.frame().release();
-        }
+        ByteBuf frame = Wire.frame(plain);
+        byte[] bytes = ByteBufUtil.getBytes(frame);
+        ch.writeInbound(frame);
+        assertThat((Object) ch.readInbound()).as("taken by the sink: nothing goes on").isNull();
+        assertThat(offered).hasSize(1);
+        assertThat(offered.getFirst().getKey()).isEqualTo(new RelayRoute("7", "alice", Optional.of("bob"),
+                Optional.empty()));
+        assertThat(offered.getFirst().getValue()).isEqualTo(bytes);
+
         ch.writeInbound(Wire.frame("{\"v\":1,\"type\":\"relay\",\"id\":\"8\",\"from\":\"alice\",\"toAgent\":\"bob\","
                 + "\"subject\":\"s\",\"body\":\"b\",\"extra\":true}"));
         assertThat((Object) ch.readInbound()).isEqualTo(Message.Relay.toAgent("8", "alice", "bob", "s", "b"));
+        assertThat(offered).as("not a plain relay: never offered").hasSize(1);
+        assertThat(ch.finish()).isFalse();
+    }
+
+    @Test
+    void plainRelayTheSinkDeclines_isDecoded() {
+        taking = false;
+        EmbeddedChannel ch = codec();
+        Message.Relay plain = Message.Relay.toAgent("9", "carol", "bob", "say", "hi");
+        ch.writeInbound(Wire.frame(plain));
+        assertThat(offered).hasSize(1);
+        assertThat((Object) ch.readInbound()).isEqualTo(plain);
         assertThat(ch.finish()).isFalse();
     }
 
