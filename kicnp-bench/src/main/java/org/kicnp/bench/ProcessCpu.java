@@ -35,9 +35,15 @@ final class ProcessCpu {
      * are (0 if it could not be read). The busy fields there (user, system, ...) are not used: they are sampled by the
      * scheduler tick, which misses most of a load made of short bursts (the open loop's), while idle and iowait are
      * measured when the cores enter and leave idle (over one open-loop run here the sampled busy fields gave 20 %
-     * where the two processes' threads alone had used 37 % of the machine).
+     * where the two processes' threads alone had used 37 % of the machine). Also the steal ticks: time the
+     * hypervisor ran something else while this machine's cores had work (a virtual machine's cores are not its own);
+     * a steal of a few milliseconds on the hub's core stalls every relay in flight, as a collection does.
      */
-    record MachineIdle(long idleTicks, long nanoTime, int cores) {
+    record MachineIdle(long idleTicks, long nanoTime, int cores, long stealTicks) {
+        MachineIdle(long idleTicks, long nanoTime, int cores) {
+            this(idleTicks, nanoTime, cores, 0);
+        }
+
         static MachineIdle now() {
             long now = System.nanoTime();
             try {
@@ -48,7 +54,8 @@ final class ProcessCpu {
                 String[] f = stat.substring(0, stat.indexOf('\n')).trim().split(" +");
                 int cores = (int) stat.lines().filter(l -> l.startsWith("cpu") && Character.isDigit(l.charAt(3)))
                         .count();
-                return new MachineIdle(Long.parseLong(f[4]) + Long.parseLong(f[5]), now, cores);
+                long steal = f.length > 8 ? Long.parseLong(f[8]) : 0;
+                return new MachineIdle(Long.parseLong(f[4]) + Long.parseLong(f[5]), now, cores, steal);
             } catch (IOException | RuntimeException e) {
                 return new MachineIdle(0, now, 0);
             }
@@ -64,6 +71,18 @@ final class ProcessCpu {
                 return 0;
             }
             return Math.max(0, Math.min(100, 100 * (1 - (idleTicks - before.idleTicks) / capacityTicks)));
+        }
+
+        /**
+         * The share of the machine's CPU time that the hypervisor took (steal) since {@code before}, in %:
+         * 100 × steal time / (elapsed time × cores); 0 when either reading failed.
+         */
+        double stealPercentSince(MachineIdle before) {
+            double capacityTicks = (nanoTime - before.nanoTime) / 1e9 * 100 * cores;
+            if (capacityTicks <= 0 || before.cores == 0) {
+                return 0;
+            }
+            return Math.max(0, Math.min(100, 100 * (stealTicks - before.stealTicks) / capacityTicks));
         }
     }
 }

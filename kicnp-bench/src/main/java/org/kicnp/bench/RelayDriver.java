@@ -209,7 +209,8 @@ final class RelayDriver implements AutoCloseable {
             return null;
         });
         return LatencyFigures.of(rate, all, expected, measure, cpu1.hub() - cpu0.hub(),
-                cpu1.clients() - cpu0.clients(), cpu1.machine().busyPercentSince(cpu0.machine()));
+                cpu1.clients() - cpu0.clients(), cpu1.machine().busyPercentSince(cpu0.machine()),
+                cpu1.machine().stealPercentSince(cpu0.machine()));
     }
 
     private long delivered() throws InterruptedException {

@@ -27,7 +27,9 @@ final class RelayReport {
                   latency: open loop, %,d msgs/s in total at a constant rate released by 1 ms ticks, %d s after %d s
                            warm-up; latency = delivery time - intended send time (coordinated omission corrected);
                            over that window, CPU µs per delivered message of the hub and of the client loops, and
-                           busy = the share of the whole machine's CPU time (all cores, every process) in use
+                           busy = the share of the whole machine's CPU time (all cores, every process) in use,
+                           steal = the share the hypervisor took from this virtual machine (a steal of a few ms on
+                           the hub's core stalls every message in flight: the p99 follows it, for both hubs)
                 """, mosquittoVersion.isEmpty() ? "" : " (" + mosquittoVersion + ")",
                 Runtime.getRuntime().availableProcessors(), loadAverage(), o.clientThreads(), gatewayPlace(o),
                 o.gatewayThreads() > 0 ? String.valueOf(o.gatewayThreads()) : "one per core", o.transport().label(),
@@ -59,12 +61,12 @@ final class RelayReport {
 
     static String table(List<RelayRun> runs, int rate) {
         StringBuilder sb = new StringBuilder(String.format(Locale.ROOT,
-                "%-7s %-10s %7s %12s %8s %8s %10s %9s %9s %9s %9s %7s %8s %8s %7s%n", "agents", "hub", "window",
+                "%-7s %-10s %7s %12s %8s %8s %10s %9s %9s %9s %9s %7s %8s %8s %7s %6s%n", "agents", "hub", "window",
                 "msgs/s", "hub CPU", "cli CPU", "delivered", "p50 ms", "p99 ms", "p99.9 ms", "max ms", "lost",
-                "hub CPU", "cli CPU", "busy"));
-        sb.append(String.format(Locale.ROOT, "%-7s %-10s %7s %12s %8s %8s %10s %-55s %8s %8s %7s%n", "", "", "",
+                "hub CPU", "cli CPU", "busy", "steal"));
+        sb.append(String.format(Locale.ROOT, "%-7s %-10s %7s %12s %8s %8s %10s %-55s %8s %8s %7s %6s%n", "", "", "",
                 "(max)", "µs/msg", "µs/msg", "(open)", "   (open loop at " + String.format(Locale.ROOT, "%,d", rate)
-                        + " msgs/s)", "µs/msg", "µs/msg", "%"));
+                        + " msgs/s)", "µs/msg", "µs/msg", "%", "%"));
         for (RelayRun r : runs) {
             row(sb, r.agents(), "K-ICNP", r.window(), r.kicnp());
             if (r.mosquitto().isPresent()) {
@@ -81,10 +83,10 @@ final class RelayReport {
     private static void row(StringBuilder sb, int agents, String hub, int window, HubFigures f) {
         LatencyFigures l = f.latency();
         sb.append(String.format(Locale.ROOT,
-                "%-7d %-10s %7d %,12.0f %8.1f %8.1f %,10.0f %9.3f %9.3f %9.3f %9.3f %7d %8.1f %8.1f %7.0f%s%n",
+                "%-7d %-10s %7d %,12.0f %8.1f %8.1f %,10.0f %9.3f %9.3f %9.3f %9.3f %7d %8.1f %8.1f %7.0f %6.1f%s%n",
                 agents, hub, window, f.msgsPerSecond(), f.hubCpuMicrosPerMsg(), f.clientCpuMicrosPerMsg(),
                 l.deliveredPerSecond(), l.p50Millis(), l.p99Millis(), l.p999Millis(), l.maxMillis(), l.lost(),
-                l.hubCpuMicrosPerMsg(), l.clientCpuMicrosPerMsg(), l.machineBusyPercent(),
+                l.hubCpuMicrosPerMsg(), l.clientCpuMicrosPerMsg(), l.machineBusyPercent(), l.machineStealPercent(),
                 f.shed() > 0 ? "  (hub shed " + f.shed() + ")" : ""));
     }
 
@@ -133,9 +135,11 @@ final class RelayReport {
                     .append(", \"mosquitto_lost_at_50k\": ").append(m.map(x -> String.valueOf(x.lost())).orElse("null"))
                     .append(", \"kicnp_hub_cpu_us_per_msg_at_50k\": ").append(num(k.hubCpuMicrosPerMsg(), 2))
                     .append(", \"kicnp_busy_pct_at_50k\": ").append(num(k.machineBusyPercent(), 1))
+                    .append(", \"kicnp_steal_pct_at_50k\": ").append(num(k.machineStealPercent(), 2))
                     .append(", \"mosquitto_hub_cpu_us_per_msg_at_50k\": ")
                     .append(opt(m.map(LatencyFigures::hubCpuMicrosPerMsg), 2))
                     .append(", \"mosquitto_busy_pct_at_50k\": ").append(opt(m.map(LatencyFigures::machineBusyPercent), 1))
+                    .append(", \"mosquitto_steal_pct_at_50k\": ").append(opt(m.map(LatencyFigures::machineStealPercent), 2))
                     .append('}');
         }
         return sb.append("], \"offered_msgs_per_s\": ").append(o.rate())

@@ -61,7 +61,9 @@ class GatewayRelayCommandTest {
         assertThat(json.get("runs").get(0).get("kicnp_busy_pct_at_50k").asDouble()).isPositive()
                 .isLessThanOrEqualTo(100);
         assertThat(json.get("runs").get(0).get("mosquitto_busy_pct_at_50k").isNull()).isTrue();
-        assertThat(run.out()).contains("busy = the share of the whole machine");
+        assertThat(json.get("runs").get(0).get("kicnp_steal_pct_at_50k").asDouble()).isBetween(0.0, 100.0);
+        assertThat(json.get("runs").get(0).get("mosquitto_steal_pct_at_50k").isNull()).isTrue();
+        assertThat(run.out()).contains("busy = the share of the whole machine").contains("steal = the share the hypervisor");
     }
 
     @Test

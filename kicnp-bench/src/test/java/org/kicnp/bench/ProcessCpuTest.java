@@ -34,4 +34,24 @@ class ProcessCpuTest {
         assertThat(new ProcessCpu.MachineIdle(0, 1_000_000_000L, 0).busyPercentSince(new ProcessCpu.MachineIdle(0, 0, 0)))
                 .isZero();
     }
+
+    @Test
+    void stealPercentSince_isTheStolenShareOfElapsedTimeTimesCores() {
+        ProcessCpu.MachineIdle start = new ProcessCpu.MachineIdle(1000, 0, 2, 70);
+        // 2 cores for 1 s = 200 ticks of capacity; 6 ticks stolen -> 3 %
+        assertThat(new ProcessCpu.MachineIdle(1050, 1_000_000_000L, 2, 76).stealPercentSince(start))
+                .isCloseTo(3.0, offset(1e-9));
+        assertThat(new ProcessCpu.MachineIdle(1050, 1_000_000_000L, 2, 70).stealPercentSince(start)).isZero();
+        assertThat(new ProcessCpu.MachineIdle(0, 1_000_000_000L, 0, 5).stealPercentSince(new ProcessCpu.MachineIdle(0, 0, 0)))
+                .isZero();
+    }
+
+    @Test
+    void aReadingOfThisMachine_hasItsStealTicks_countingUpOrStill() {
+        ProcessCpu.MachineIdle first = ProcessCpu.MachineIdle.now();
+        ProcessCpu.MachineIdle second = ProcessCpu.MachineIdle.now();
+        assertThat(first.stealTicks()).isNotNegative();
+        assertThat(second.stealTicks()).isGreaterThanOrEqualTo(first.stealTicks());
+        assertThat(second.stealPercentSince(first)).isBetween(0.0, 100.0);
+    }
 }
