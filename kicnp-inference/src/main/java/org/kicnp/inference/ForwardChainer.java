@@ -79,7 +79,8 @@ final class ForwardChainer {
         }
     }
 
-    Optional<Activation> next() {
+    /** The activation whose turn has come, taken off the agenda; null when the agenda is empty. */
+    Activation next() {
         return agenda.poll();
     }
 
@@ -432,7 +433,7 @@ final class ForwardChainer {
             name = made.next(r.frame());
             Derivation d = new Derivation(name, r.frame(), full, checked, firing, trigger, Optional.empty());
             supports.markFired(a.key(), refs);
-            FactView.Fact record = supports.record(d, Optional.of(r), refs);
+            FactView.Fact record = supports.record(d, r, refs);
             Frame.Builder b = Frame.instance(name, r.frame()).provenance(Provenance.RUNTIME);
             if (full.size() == refs.length) { // the required slots, in order: their facts' records are at hand
                 List<String> slots = r.requiredSlots();
