@@ -1,6 +1,7 @@
 package org.kicnp.inference;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collection;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
@@ -27,6 +28,18 @@ final class MatchNetwork {
     private final FactView facts;
     /** Per class, the memories an instance of it enters (its own and its ancestors'); dropped on any class change. */
     private final Map<String, List<AlphaMemory>> entryCache = new HashMap<>();
+    /**
+     * The last {@value #RECENT} classes looked up in {@link #entryCache} and their memories, compared by identity: a
+     * run's facts name their class with a few String objects over and over (the behavior frame's name in everything
+     * a rule derives, one constant per kind of stimulus), and comparing references is cheaper than the map's hashing
+     * for every fact. A class named by another String object of the same text is found in the map as before.
+     * Dropped with the map.
+     */
+    private static final int RECENT = 8;
+    private final String[] recentClasses = new String[RECENT];
+    @SuppressWarnings("unchecked")
+    private final List<AlphaMemory>[] recentEntering = new List[RECENT];
+    private int nextRecent;
     /** Reads the value an index path reaches from a fact (null: none). */
     private final BiFunction<FactView.Fact, List<String>, Value> pathValue;
 
@@ -56,7 +69,7 @@ final class MatchNetwork {
         JoinPlan plan = JoinPlan.of(rule, byPosition);
         mems.values().forEach(m -> m.plan = plan);
         memoriesByRule.put(rule.frame(), mems);
-        entryCache.clear();
+        clearEntering();
         for (AlphaMemory m : mems.values()) {
             byClass.computeIfAbsent(m.pattern().argument(), k -> new ArrayList<>()).add(m);
             for (var f : kb.instancesOf(m.pattern().argument())) {
@@ -75,7 +88,7 @@ final class MatchNetwork {
         if (mems == null) {
             return;
         }
-        entryCache.clear();
+        clearEntering();
         for (AlphaMemory m : mems.values()) {
             byClass.getOrDefault(m.pattern().argument(), new ArrayList<>()).remove(m);
             for (FactView.Fact fact : m.facts()) {
@@ -95,6 +108,11 @@ final class MatchNetwork {
 
     /** The memories an instance of the class may enter: those of its class and its ancestors (cached). */
     private List<AlphaMemory> entering(String className) {
+        for (int i = 0; i < RECENT; i++) {
+            if (recentClasses[i] == className) {
+                return recentEntering[i];
+            }
+        }
         List<AlphaMemory> candidates = entryCache.get(className);
         if (candidates == null) {
             candidates = new ArrayList<>();
@@ -106,7 +124,17 @@ final class MatchNetwork {
             }
             entryCache.put(className, candidates);
         }
+        recentClasses[nextRecent] = className;
+        recentEntering[nextRecent] = candidates;
+        nextRecent = (nextRecent + 1) % RECENT;
         return candidates;
+    }
+
+    /** Drops what {@link #entering} worked out from the rules and the class hierarchy. */
+    private void clearEntering() {
+        entryCache.clear();
+        Arrays.fill(recentClasses, null);
+        Arrays.fill(recentEntering, null);
     }
 
     /**
@@ -128,7 +156,7 @@ final class MatchNetwork {
 
     /** Forgets what it derived from the class hierarchy: call when a class frame was added, changed or removed. */
     void classesChanged() {
-        entryCache.clear();
+        clearEntering();
     }
 
     /** Matches again one fact in one slot of one rule: after a claim or key on it was freed. */
