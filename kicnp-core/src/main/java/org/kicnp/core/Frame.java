@@ -41,6 +41,19 @@ public final class Frame {
         this.priority = b.priority;
     }
 
+    /** An instance frame with no parts or links, of priority 0: see {@link #instance(String, String, Provenance, Slot...)}. */
+    private Frame(String name, String parent, List<Slot> slots, Provenance provenance) {
+        this.name = name;
+        this.kind = FrameKind.INSTANCE;
+        this.parent = parent;
+        this.parts = List.of();
+        this.linksTo = List.of();
+        this.linksFrom = List.of();
+        this.slots = slots;
+        this.provenance = provenance;
+        this.priority = 0;
+    }
+
     /** An immutable copy; most frames have no parts or links, so a builder leaves those lists null until used. */
     private static <T> List<T> copy(List<T> items) {
         return items == null || items.isEmpty() ? List.of() : List.copyOf(items);
@@ -63,6 +76,68 @@ public final class Frame {
     /** Starts an instance frame of the given class. */
     public static Builder instance(String name, String ofClass) {
         return new Builder(name, FrameKind.INSTANCE).parent(ofClass);
+    }
+
+    /**
+     * The instance frame that {@code instance(name, ofClass).provenance(provenance)} with {@code slots} added in
+     * order builds, checked the same way, made without a builder and its copy of the slots: an inference engine
+     * makes one for every firing. Unlike the builder, which keeps the last of two slots of one name, this refuses
+     * them.
+     *
+     * @throws InvalidFrameException for a blank or invalid name, a frame that is its own class, or two slots with one
+     *     name
+     */
+    public static Frame instance(String name, String ofClass, Provenance provenance, Slot... slots) {
+        String n = requireNonNull(name, "name").strip();
+        requireNonNull(ofClass, "parent");
+        requireNonNull(provenance, "provenance");
+        List<Slot> list = List.of(slots); // one or two slots: no array is kept; and no null slot passes
+        check(n, FrameKind.INSTANCE, ofClass, list);
+        return new Frame(n, ofClass, list, provenance);
+    }
+
+    /**
+     * The checks every frame passes when it is built.
+     *
+     * @throws InvalidFrameException for a blank or invalid name, an instance without a class, a frame that is its
+     *     own parent, or two slots with one name
+     */
+    private static void check(String name, FrameKind kind, String parent, List<Slot> slots) {
+        if (name.isEmpty()) {
+            throw new InvalidFrameException("A frame needs a name.");
+        }
+        if (!Names.isFrameName(name)) {
+            throw new InvalidFrameException("'" + name + "' is not a valid frame name: use letters, digits, "
+                    + "'_' and '-', starting with a letter or '_'.");
+        }
+        if (kind == FrameKind.INSTANCE && parent == null) {
+            throw new InvalidFrameException("Instance frame '" + name + "' needs a class in its A-kind-of (ISA).");
+        }
+        if (name.equals(parent)) {
+            throw new InvalidFrameException("Frame '" + name + "' cannot be a kind of itself.");
+        }
+        checkSlotNamesUnique(name, slots);
+    }
+
+    /** Frames have a handful of slots: comparing pairs beats building a hash set for each frame built. */
+    private static void checkSlotNamesUnique(String frame, List<Slot> slots) {
+        int n = slots.size();
+        Set<String> seen = n > 16 ? new HashSet<>() : null;
+        for (int i = 0; i < n; i++) {
+            String slotName = slots.get(i).name();
+            boolean twice;
+            if (seen != null) {
+                twice = !seen.add(slotName);
+            } else {
+                twice = false;
+                for (int j = 0; j < i && !twice; j++) {
+                    twice = slots.get(j).name().equals(slotName);
+                }
+            }
+            if (twice) {
+                throw new InvalidFrameException("Frame '" + frame + "' has two slots named '" + slotName + "'.");
+            }
+        }
     }
 
     public static Builder builder(String name, FrameKind kind) {
@@ -270,42 +345,8 @@ public final class Frame {
          *     parent, or two slots with one name
          */
         public Frame build() {
-            if (name.isEmpty()) {
-                throw new InvalidFrameException("A frame needs a name.");
-            }
-            if (!Names.isFrameName(name)) {
-                throw new InvalidFrameException("'" + name + "' is not a valid frame name: use letters, digits, "
-                        + "'_' and '-', starting with a letter or '_'.");
-            }
-            if (kind == FrameKind.INSTANCE && parent == null) {
-                throw new InvalidFrameException("Instance frame '" + name + "' needs a class in its A-kind-of (ISA).");
-            }
-            if (name.equals(parent)) {
-                throw new InvalidFrameException("Frame '" + name + "' cannot be a kind of itself.");
-            }
-            checkSlotNamesUnique();
+            check(name, kind, parent, slots);
             return new Frame(this);
-        }
-
-        /** Frames have a handful of slots: comparing pairs beats building a hash set for each frame built. */
-        private void checkSlotNamesUnique() {
-            int n = slots.size();
-            Set<String> seen = n > 16 ? new HashSet<>() : null;
-            for (int i = 0; i < n; i++) {
-                String slotName = slots.get(i).name();
-                boolean twice;
-                if (seen != null) {
-                    twice = !seen.add(slotName);
-                } else {
-                    twice = false;
-                    for (int j = 0; j < i && !twice; j++) {
-                        twice = slots.get(j).name().equals(slotName);
-                    }
-                }
-                if (twice) {
-                    throw new InvalidFrameException("Frame '" + name + "' has two slots named '" + slotName + "'.");
-                }
-            }
         }
     }
 }

@@ -3,7 +3,6 @@ package org.kicnp.inference;
 import java.util.Collection;
 import java.util.Comparator;
 import java.util.List;
-import java.util.Optional;
 
 /**
  * The conflict set, in conflict-resolution order: explicit priority (higher first), then specificity (the deeper
@@ -69,12 +68,13 @@ final class Agenda {
         }
     }
 
-    Optional<Activation> poll() {
+    /** Takes the first activation off the agenda; null when it is empty (no Optional per firing). */
+    Activation poll() {
         Activation a = queue.poll();
         if (a != null) {
             forget(a);
         }
-        return Optional.ofNullable(a);
+        return a;
     }
 
     /** Withdraws every activation that binds the fact. */

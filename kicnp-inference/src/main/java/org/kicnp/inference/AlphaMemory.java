@@ -10,7 +10,6 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.NoSuchElementException;
-import java.util.Optional;
 import java.util.function.BiFunction;
 import org.kicnp.core.Value;
 
@@ -99,15 +98,15 @@ final class AlphaMemory {
      * Adds a fact, indexing it under the value each indexed path reaches from it; returns its membership, for the
      * fact to keep and give back to {@link #remove}; null when the fact was a member already.
      */
-    Entry add(FactView.Fact fact, BiFunction<FactView.Fact, List<String>, Optional<Value>> pathValue) {
+    Entry add(FactView.Fact fact, BiFunction<FactView.Fact, List<String>, Value> pathValue) {
         if (fact.entryIn(this) != null) {
             return null;
         }
         Value[] keys = null;
         for (int i = 0; i < paths.size(); i++) {
-            Optional<Value> key = pathValue.apply(fact, paths.get(i));
-            if (key.isPresent()) {
-                Value k = Values.key(key.get());
+            Value key = pathValue.apply(fact, paths.get(i));
+            if (key != null) {
+                Value k = Values.key(key);
                 file(indexes.get(i), k, fact);
                 if (keys == null) {
                     keys = new Value[paths.size()];
@@ -127,14 +126,15 @@ final class AlphaMemory {
      * Files a member again under the keys its indexed paths reach now (a value it is read through changed without
      * the member being matched again); its place in insertion order stays.
      */
-    void rekey(Entry e, BiFunction<FactView.Fact, List<String>, Optional<Value>> pathValue) {
+    void rekey(Entry e, BiFunction<FactView.Fact, List<String>, Value> pathValue) {
         FactView.Fact fact = items[e.at];
         if (fact == null || paths.isEmpty()) {
             return;
         }
         for (int i = 0; i < paths.size(); i++) {
             Value was = e.keys == null ? null : e.keys[i];
-            Value now = pathValue.apply(fact, paths.get(i)).map(Values::key).orElse(null);
+            Value reached = pathValue.apply(fact, paths.get(i));
+            Value now = reached == null ? null : Values.key(reached);
             if (java.util.Objects.equals(was, now)) {
                 continue;
             }

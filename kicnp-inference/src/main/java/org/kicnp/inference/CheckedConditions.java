@@ -3,7 +3,6 @@ package org.kicnp.inference;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
 import org.kicnp.core.Value;
 
 /**
@@ -35,10 +34,10 @@ final class CheckedConditions {
             List<String> path = p.condition().testedPath().orElse(null);
             String value = fact;
             if (path != null) {
-                Optional<Value> v = record != null ? facts.follow(record, path, conditions)
-                        : conditions.follow(Value.ref(fact), path);
-                if (v.isPresent()) {
-                    value = v.get().text();
+                Value v = record != null ? facts.followOrNull(record, path, conditions)
+                        : conditions.follow(Value.ref(fact), path).orElse(null);
+                if (v != null) {
+                    value = v.text();
                 }
             }
             out[count++] = new Derivation.CheckedCondition(p.slot(), p.conditionText(), value);

@@ -193,24 +193,32 @@ final class FactView implements Conditions.Reader {
      * it.
      */
     Optional<Value> follow(Fact fact, List<String> path, Conditions conditions) {
+        return Optional.ofNullable(followOrNull(fact, path, conditions));
+    }
+
+    /**
+     * {@link #follow}, or null where it is empty: matching follows an index path for every fact it files and every
+     * join it looks up, and an Optional per step would be garbage on that path.
+     */
+    Value followOrNull(Fact fact, List<String> path, Conditions conditions) {
         int n = path.size();
         if (n == 0) {
-            return Optional.of(Value.ref(fact.name));
+            return Value.ref(fact.name);
         }
         if (n > Conditions.MAX_PATH) {
-            Optional<Value> first = value(fact, fact.name, path.getFirst());
-            return first.isEmpty() ? first : conditions.follow(first.get(), path, 1);
+            Value first = valueOrNull(fact, fact.name, path.getFirst());
+            return first == null ? null : conditions.follow(first, path, 1).orElse(null);
         }
         Fact cur = fact;
         for (int i = 0; i < n - 1; i++) {
             Fact next = linked(cur, path.get(i));
             if (next == null) {
-                Optional<Value> v = value(cur, cur.name, path.get(i));
-                return v.isEmpty() ? v : conditions.follow(v.get(), path, i + 1);
+                Value v = valueOrNull(cur, cur.name, path.get(i));
+                return v == null ? null : conditions.follow(v, path, i + 1).orElse(null);
             }
             cur = next;
         }
-        return value(cur, cur.name, path.get(n - 1));
+        return valueOrNull(cur, cur.name, path.get(n - 1));
     }
 
     /**
@@ -230,7 +238,7 @@ final class FactView implements Conditions.Reader {
             if (!s.name().equals(slot)) {
                 continue;
             }
-            if (!(s.effectiveValue().orElse(null) instanceof Value.Ref r)) {
+            if (!(s.effectiveValueOrNull() instanceof Value.Ref r)) {
                 return null;
             }
             if (f.linksOf != frame) {
@@ -249,19 +257,24 @@ final class FactView implements Conditions.Reader {
 
     /** As {@link #value(String, String)}, with the instance's record (may be null) at hand. */
     Optional<Value> value(Fact f, String frame, String slot) {
+        return Optional.ofNullable(valueOrNull(f, frame, slot));
+    }
+
+    /** {@link #value(Fact, String, String)}, or null where it is empty (see {@link #followOrNull}). */
+    private Value valueOrNull(Fact f, String frame, String slot) {
         if (f != null && f.frame != null) {
             List<Slot> slots = f.frame.slots();
             for (int i = 0; i < slots.size(); i++) {
                 Slot s = slots.get(i);
                 if (s.name().equals(slot)) {
-                    Optional<Value> v = s.effectiveValue();
-                    if (v.isPresent()) {
+                    Value v = s.effectiveValueOrNull();
+                    if (v != null) {
                         return v;
                     }
                     break;
                 }
             }
         }
-        return kb.contains(frame) ? kb.value(frame, slot) : Optional.empty();
+        return kb.contains(frame) ? kb.value(frame, slot).orElse(null) : null;
     }
 }

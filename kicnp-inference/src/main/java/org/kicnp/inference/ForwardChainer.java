@@ -79,7 +79,8 @@ final class ForwardChainer {
         }
     }
 
-    Optional<Activation> next() {
+    /** The activation whose turn has come, taken off the agenda; null when the agenda is empty. */
+    Activation next() {
         return agenda.poll();
     }
 
@@ -432,18 +433,10 @@ final class ForwardChainer {
             name = made.next(r.frame());
             Derivation d = new Derivation(name, r.frame(), full, checked, firing, trigger, Optional.empty());
             supports.markFired(a.key(), refs);
-            FactView.Fact record = supports.record(d, Optional.of(r), refs);
-            Frame.Builder b = Frame.instance(name, r.frame()).provenance(Provenance.RUNTIME);
-            if (full.size() == refs.length) { // the required slots, in order: their facts' records are at hand
-                List<String> slots = r.requiredSlots();
-                for (int i = 0; i < refs.length; i++) {
-                    b.slot(Slot.ofValue(slots.get(i), DataType.INSTANCE, refs[i].ref()));
-                }
-            } else {
-                full.forEach((slot, fact) -> b.slot(Slot.ofValue(slot, DataType.INSTANCE, Value.ref(fact))));
-            }
+            FactView.Fact record = supports.record(d, r, refs);
+            Slot[] slots = slotsOf(r, full, refs);
             try {
-                Frame instance = b.build();
+                Frame instance = Frame.instance(name, r.frame(), Provenance.RUNTIME, slots);
                 if (full.size() == refs.length) {
                     // Its slots hold the required slots' instances in order: the facts of refs, resolved already.
                     record.links = refs.clone();
@@ -473,6 +466,23 @@ final class ForwardChainer {
                 removeQuietly(List.of(name), "its onInstantiate script failed");
             }
         }
+    }
+
+    /** The slots of a firing's instance: each slot of the binding holding its instance, in the binding's order. */
+    private static Slot[] slotsOf(Rule r, Map<String, String> full, FactView.Fact[] refs) {
+        Slot[] slots = new Slot[full.size()];
+        if (full.size() == refs.length) { // the required slots, in order: their facts' records are at hand
+            List<String> names = r.requiredSlots();
+            for (int i = 0; i < refs.length; i++) {
+                slots[i] = Slot.ofValue(names.get(i), DataType.INSTANCE, refs[i].ref());
+            }
+        } else {
+            int i = 0;
+            for (Map.Entry<String, String> e : full.entrySet()) {
+                slots[i++] = Slot.ofValue(e.getKey(), DataType.INSTANCE, Value.ref(e.getValue()));
+            }
+        }
+        return slots;
     }
 
     /** The bound facts' frames as the engine last saw them (null where it has none): those the new instance names. */

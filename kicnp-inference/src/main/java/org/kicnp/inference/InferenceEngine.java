@@ -208,19 +208,19 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
                 drain();
                 actions.checkTimeouts();
                 drain();
-                Optional<Activation> next = forward.next();
-                if (next.isEmpty()) {
+                Activation next = forward.next();
+                if (next == null) {
                     actions.releaseSynchronized();
                     if (own == null && inbox.isEmpty()) {
                         return count;
                     }
                     continue;
                 }
-                if (!forward.mayFire(next.get())) {
+                if (!forward.mayFire(next)) {
                     continue; // blocked when its turn came: not a firing, so not counted against the limit
                 }
                 count++;
-                perFrame.computeIfAbsent(next.get().rule().frame(), f -> new int[1])[0]++;
+                perFrame.computeIfAbsent(next.rule().frame(), f -> new int[1])[0]++;
                 if (count > options.maxFirings()) {
                     forward.clearAgenda();
                     List<String> top = perFrame.entrySet().stream()
@@ -229,7 +229,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
                     trace(new TraceEvent.LimitReached(options.maxFirings(), top));
                     throw new InferenceLimitException(options.maxFirings(), top);
                 }
-                forward.fire(next.get());
+                forward.fire(next);
             }
         } finally {
             if (outer) {

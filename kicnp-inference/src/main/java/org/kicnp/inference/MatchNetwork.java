@@ -1,12 +1,12 @@
 package org.kicnp.inference;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collection;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
 import java.util.function.BiFunction;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Value;
@@ -18,6 +18,8 @@ import org.kicnp.core.Value;
  * the memories it enters and the bindings it completes, never a scan of every instance. Owned by the engine thread.
  */
 final class MatchNetwork {
+    /** The answer of a change that completes no binding (most do not): shared, so such a change makes no list. */
+    private static final List<Match> NO_MATCHES = List.of();
     private final KnowledgeBase kb;
     private final Conditions conditions;
     private final Map<String, Map<String, AlphaMemory>> memoriesByRule = new HashMap<>();
@@ -26,8 +28,20 @@ final class MatchNetwork {
     private final FactView facts;
     /** Per class, the memories an instance of it enters (its own and its ancestors'); dropped on any class change. */
     private final Map<String, List<AlphaMemory>> entryCache = new HashMap<>();
-    /** Reads the value an index path reaches from a fact. */
-    private final BiFunction<FactView.Fact, List<String>, Optional<Value>> pathValue;
+    /**
+     * The last {@value #RECENT} classes looked up in {@link #entryCache} and their memories, compared by identity: a
+     * run's facts name their class with a few String objects over and over (the behavior frame's name in everything
+     * a rule derives, one constant per kind of stimulus), and comparing references is cheaper than the map's hashing
+     * for every fact. A class named by another String object of the same text is found in the map as before.
+     * Dropped with the map.
+     */
+    private static final int RECENT = 8;
+    private final String[] recentClasses = new String[RECENT];
+    @SuppressWarnings("unchecked")
+    private final List<AlphaMemory>[] recentEntering = new List[RECENT];
+    private int nextRecent;
+    /** Reads the value an index path reaches from a fact (null: none). */
+    private final BiFunction<FactView.Fact, List<String>, Value> pathValue;
 
     MatchNetwork(KnowledgeBase kb, Conditions conditions) {
         this(kb, conditions, new FactView(kb));
@@ -55,16 +69,16 @@ final class MatchNetwork {
         JoinPlan plan = JoinPlan.of(rule, byPosition);
         mems.values().forEach(m -> m.plan = plan);
         memoriesByRule.put(rule.frame(), mems);
-        entryCache.clear();
+        clearEntering();
         for (AlphaMemory m : mems.values()) {
             byClass.computeIfAbsent(m.pattern().argument(), k -> new ArrayList<>()).add(m);
             for (var f : kb.instancesOf(m.pattern().argument())) {
                 offer(m, facts.touch(f.name()));
             }
         }
-        List<Match> out = new ArrayList<>();
+        List<Match> out = NO_MATCHES;
         for (FactView.Fact fact : List.copyOf(byPosition[0].facts())) {
-            complete(byPosition[0], fact, out);
+            out = complete(byPosition[0], fact, out);
         }
         return out;
     }
@@ -74,7 +88,7 @@ final class MatchNetwork {
         if (mems == null) {
             return;
         }
-        entryCache.clear();
+        clearEntering();
         for (AlphaMemory m : mems.values()) {
             byClass.getOrDefault(m.pattern().argument(), new ArrayList<>()).remove(m);
             for (FactView.Fact fact : m.facts()) {
@@ -94,6 +108,11 @@ final class MatchNetwork {
 
     /** The memories an instance of the class may enter: those of its class and its ancestors (cached). */
     private List<AlphaMemory> entering(String className) {
+        for (int i = 0; i < RECENT; i++) {
+            if (recentClasses[i] == className) {
+                return recentEntering[i];
+            }
+        }
         List<AlphaMemory> candidates = entryCache.get(className);
         if (candidates == null) {
             candidates = new ArrayList<>();
@@ -105,25 +124,31 @@ final class MatchNetwork {
             }
             entryCache.put(className, candidates);
         }
+        recentClasses[nextRecent] = className;
+        recentEntering[nextRecent] = candidates;
+        nextRecent = (nextRecent + 1) % RECENT;
         return candidates;
     }
 
-    /** As {@link #insert(String, String)}, with the fact's record at hand. */
+    /** Drops what {@link #entering} worked out from the rules and the class hierarchy. */
+    private void clearEntering() {
+        entryCache.clear();
+        Arrays.fill(recentClasses, null);
+        Arrays.fill(recentEntering, null);
+    }
+
+    /**
+     * As {@link #insert(String, String)}, with the fact's record at hand. Each memory the fact enters is joined from
+     * at once: a binding puts a fact in one slot only ({@link JoinBinding#holds}), so what the fact completes from one
+     * memory does not depend on its being in the others yet, and the bindings come in the same order as when it
+     * entered them all first. Most facts complete nothing (a stimulus waits for its partners): their answer is the
+     * {@link #NO_MATCHES}, with no list made.
+     */
     List<Match> insert(FactView.Fact fact, String className) {
-        List<AlphaMemory> candidates = entering(className);
-        if (candidates.isEmpty()) {
-            return List.of();
-        }
-        List<AlphaMemory> entered = new ArrayList<>(candidates.size());
-        for (AlphaMemory m : candidates) {
-            if (offer(m, fact)) {
-                entered.add(m);
-            }
-        }
-        List<Match> out = new ArrayList<>();
-        for (AlphaMemory m : entered) {
-            if (m.position >= 0) {
-                complete(m, fact, out);
+        List<Match> out = NO_MATCHES;
+        for (AlphaMemory m : entering(className)) {
+            if (offer(m, fact) && m.position >= 0) {
+                out = complete(m, fact, out);
             }
         }
         return out;
@@ -131,7 +156,7 @@ final class MatchNetwork {
 
     /** Forgets what it derived from the class hierarchy: call when a class frame was added, changed or removed. */
     void classesChanged() {
-        entryCache.clear();
+        clearEntering();
     }
 
     /** Matches again one fact in one slot of one rule: after a claim or key on it was freed. */
@@ -142,9 +167,7 @@ final class MatchNetwork {
         if (m == null || m.position < 0 || f == null || !m.contains(f)) {
             return List.of();
         }
-        List<Match> out = new ArrayList<>();
-        complete(m, f, out);
-        return out;
+        return complete(m, f, NO_MATCHES);
     }
 
     /** A complete binding of a rule's required slots: the instances' records in the order of {@link Rule#required()}. */
@@ -213,9 +236,9 @@ final class MatchNetwork {
         return mems == null || !mems.containsKey(slot) ? 0 : mems.get(slot).size();
     }
 
-    /** The value {@code path} reaches from a fact (see {@link FactView#follow}). */
-    private Optional<Value> follow(FactView.Fact fact, List<String> path) {
-        return facts.follow(fact, path, conditions);
+    /** The value {@code path} reaches from a fact, or null (see {@link FactView#followOrNull}). */
+    private Value follow(FactView.Fact fact, List<String> path) {
+        return facts.followOrNull(fact, path, conditions);
     }
 
     /** Enters the fact into the memory when its constant conditions hold; false when not, or when it is in already. */
@@ -232,21 +255,27 @@ final class MatchNetwork {
         return true;
     }
 
-    /** Every complete binding of the rule's required slots with {@code fact} in the slot of memory {@code start}. */
-    private void complete(AlphaMemory start, FactView.Fact fact, List<Match> out) {
+    /**
+     * Adds to {@code out} every complete binding of the rule's required slots with {@code fact} in the slot of memory
+     * {@code start}; returns the list holding them: {@code out}, or a new list when {@code out} was {@link #NO_MATCHES}
+     * and a binding was found.
+     */
+    private List<Match> complete(AlphaMemory start, FactView.Fact fact, List<Match> out) {
         JoinPlan plan = start.plan;
         JoinBinding b = new JoinBinding(plan.slots);
         int at = start.position;
         b.refs[at] = fact;
-        if (joinsHold(plan, at, -1, b)) {
-            extend(plan, b, plan.order[at], 0, out);
-        }
+        return joinsHold(plan, at, -1, b) ? extend(plan, b, plan.order[at], 0, out) : out;
     }
 
-    private void extend(JoinPlan plan, JoinBinding b, int[] todo, int k, List<Match> out) {
+    /** Extends a partial binding over the positions {@code todo} from its {@code k}th; answers as {@link #complete}. */
+    private List<Match> extend(JoinPlan plan, JoinBinding b, int[] todo, int k, List<Match> out) {
         if (k == todo.length) {
+            if (out == NO_MATCHES) {
+                out = new ArrayList<>(2);
+            }
             out.add(new Match(plan.rule, b.refs.clone()));
-            return;
+            return out;
         }
         int at = todo[k];
         AlphaMemory mem = plan.memories[at];
@@ -257,11 +286,11 @@ final class MatchNetwork {
             if (from == null) {
                 continue;
             }
-            Optional<Value> key = follow(from, l.path());
-            if (key.isEmpty()) {
-                return;
+            Value key = follow(from, l.path());
+            if (key == null) {
+                return out;
             }
-            Value k0 = Values.key(key.get());
+            Value k0 = Values.key(key);
             partners = mem.lookup(l.index(), k0);
             decided = Values.exactKey(k0) ? l.answers() : -1;
             break;
@@ -270,7 +299,7 @@ final class MatchNetwork {
             partners = mem.facts();
         }
         if (partners.isEmpty()) {
-            return;
+            return out;
         }
         for (FactView.Fact c : partners) {
             if (b.holds(c)) {
@@ -278,10 +307,11 @@ final class MatchNetwork {
             }
             b.refs[at] = c;
             if (joinsHold(plan, at, decided, b)) {
-                extend(plan, b, todo, k + 1, out);
+                out = extend(plan, b, todo, k + 1, out);
             }
         }
         b.refs[at] = null;
+        return out;
     }
 
     /**

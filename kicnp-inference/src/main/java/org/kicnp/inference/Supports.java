@@ -57,14 +57,15 @@ final class Supports {
 
     /** Records a new derived instance and, for a firing, what its unshared and unique slots now hold. */
     void record(Derivation d, Optional<Rule> rule) {
-        record(d, rule, new FactView.Fact[0]);
+        record(d, rule.orElse(null), new FactView.Fact[0]);
     }
 
     /**
-     * As {@link #record(Derivation, Optional)}, with the records of (some of) the supporting instances already at
-     * hand in {@code known}; the others are looked up. Returns the new instance's record.
+     * As {@link #record(Derivation, Optional)}, with the rule that fired (null: none, a script made the instance) and
+     * the records of (some of) the supporting instances already at hand in {@code known}; the others are looked up.
+     * Returns the new instance's record.
      */
-    FactView.Fact record(Derivation d, Optional<Rule> rule, FactView.Fact[] known) {
+    FactView.Fact record(Derivation d, Rule rule, FactView.Fact[] known) {
         FactView.Fact self = facts.touch(d.instance());
         self.derivation = d;
         Binding b = (Binding) d.binding(); // always one (Derivation makes it); d.supports() without its list
@@ -74,8 +75,13 @@ final class Supports {
             FactView.Fact r = i < known.length && known[i].name == support ? known[i] : recordOf(support, known);
             r.dependent(d.instance());
         }
-        d.createdBy().ifPresent(c -> recordOf(c, known).dependent(d.instance()));
-        rule.filter(r -> r.claims()).ifPresent(r -> claim(r, d));
+        // Plain tests rather than ifPresent with lambdas: each would capture d (and known), an object per firing.
+        if (d.createdBy().isPresent()) {
+            recordOf(d.createdBy().get(), known).dependent(d.instance());
+        }
+        if (rule != null && rule.claims()) {
+            claim(rule, d);
+        }
         return self;
     }
 
