@@ -2,6 +2,7 @@ package org.kicnp.gateway;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import io.netty.buffer.ByteBuf;
 import io.netty.channel.embedded.EmbeddedChannel;
 import java.util.List;
 import java.util.Optional;
@@ -13,7 +14,10 @@ import org.kicnp.protocol.Message;
 
 /**
  * Relays between connections of one event loop are written when the sender's batch of reads ends, not after a
- * whole round of reads; and a batch whose end is never signalled is still drained by the loop's tasks.
+ * whole round of reads; and a batch whose end is never signalled is still drained by the loop's tasks. The frame
+ * decoder's fast path for plain relays ({@link FrameDecoder}): a relay that names its sender is copied from the
+ * sender's read buffer into the receiver's next write, keeping no reference to that buffer; and relays so copied keep
+ * their order with messages that wait in the receiver's outbox.
  */
 class ReadBatchTest {
     private final KnowledgeBase kb = KnowledgeBase.create();
@@ -49,7 +53,7 @@ class ReadBatchTest {
 
         alice.pipeline().fireChannelReadComplete();
         assertThat((Object) bob.readOutbound()).as("written without waiting for a task").isNotNull()
-                .satisfies(b -> ((io.netty.buffer.ByteBuf) b).release());
+                .satisfies(b -> ((ByteBuf) b).release());
     }
 
     @Test
@@ -77,5 +81,59 @@ class ReadBatchTest {
         assertThat((Object) bob.readOutbound()).isNull();
 
         assertThat(Wire.written(bob)).as("the receiver's loop ran its tasks").containsExactly(hi);
+    }
+
+    @Test
+    void plainRelay_isCopiedOutOfTheSendersReadBuffer_beforeTheReceiverIsWritten() {
+        join(alice, "alice", "a");
+        join(bob, "bob", "b");
+        Message.Relay hi = Message.Relay.toAgent("", "alice", "bob", "say", "hi");
+        ByteBuf read = Wire.frame(hi);
+
+        alice.pipeline().fireChannelRead(read);
+
+        assertThat((Object) bob.readOutbound()).as("written when alice's batch of reads ends").isNull();
+        assertThat(read.refCnt()).as("no slice of alice's read buffer waits for bob's write").isZero();
+        alice.pipeline().fireChannelReadComplete();
+        assertThat(Wire.written(bob)).containsExactly(hi);
+        assertThat(metrics.received.sum()).as("hello, register, hello, register, relay").isEqualTo(5);
+    }
+
+    @Test
+    void relaysCopiedAtOnce_andMessagesQueuedMeanwhile_reachTheReceiverInTheOrderTheHubTookThem() {
+        join(alice, "alice", "a");
+        join(bob, "bob", "b");
+        Message.Relay one = Message.Relay.toAgent("", "alice", "bob", "say", "one");
+        // Names another sender: decoded in full and queued in bob's outbox as a message, not copied.
+        Message.Relay two = Message.Relay.toAgent("", "carol", "bob", "say", "two");
+        Message.Relay three = Message.Relay.toAgent("", "alice", "bob", "say", "three");
+
+        alice.pipeline().fireChannelRead(Wire.frame(one));
+        alice.pipeline().fireChannelRead(Wire.frame(two));
+        alice.pipeline().fireChannelRead(Wire.frame(three));
+        alice.pipeline().fireChannelReadComplete();
+
+        assertThat(Wire.written(bob)).containsExactly(one, Message.Relay.toAgent("", "alice", "bob", "say", "two"),
+                three);
+    }
+
+    @Test
+    void severalFramesInOneRead_areTakenInOrder_aroundAMessageThatIsNotARelay() {
+        join(alice, "alice", "a");
+        join(bob, "bob", "b");
+        Message.Relay one = Message.Relay.toAgent("", "alice", "bob", "say", "one");
+        Message.Relay three = Message.Relay.toAgent("7", "alice", "bob", "say", "three");
+        ByteBuf read = alice.alloc().buffer();
+        for (Message m : List.of(one, new Message.Heartbeat(1), three)) {
+            ByteBuf f = Wire.frame(m);
+            read.writeBytes(f);
+            f.release();
+        }
+
+        alice.pipeline().fireChannelRead(read);
+        alice.pipeline().fireChannelReadComplete();
+
+        assertThat(Wire.written(bob)).containsExactly(one, three);
+        assertThat(Wire.written(alice)).containsExactly(new Message.Ack("7"));
     }
 }
