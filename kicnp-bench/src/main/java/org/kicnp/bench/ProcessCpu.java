@@ -66,11 +66,7 @@ final class ProcessCpu {
          * 100 × (1 − idle time / (elapsed time × cores)); 0 when either reading failed.
          */
         double busyPercentSince(MachineIdle before) {
-            double capacityTicks = (nanoTime - before.nanoTime) / 1e9 * 100 * cores; // USER_HZ is 100 on Linux
-            if (capacityTicks <= 0 || before.cores == 0) {
-                return 0;
-            }
-            return Math.max(0, Math.min(100, 100 * (1 - (idleTicks - before.idleTicks) / capacityTicks)));
+            return percentOfCapacity(before, capacity -> capacity - (idleTicks - before.idleTicks));
         }
 
         /**
@@ -78,11 +74,19 @@ final class ProcessCpu {
          * 100 × steal time / (elapsed time × cores); 0 when either reading failed.
          */
         double stealPercentSince(MachineIdle before) {
-            double capacityTicks = (nanoTime - before.nanoTime) / 1e9 * 100 * cores;
+            return percentOfCapacity(before, capacity -> stealTicks - before.stealTicks);
+        }
+
+        /**
+         * 100 × {@code ticks} / the clock ticks of all cores since {@code before} (given that capacity), within
+         * [0, 100]; 0 when either reading failed.
+         */
+        private double percentOfCapacity(MachineIdle before, java.util.function.DoubleUnaryOperator ticks) {
+            double capacityTicks = (nanoTime - before.nanoTime) / 1e9 * 100 * cores; // USER_HZ is 100 on Linux
             if (capacityTicks <= 0 || before.cores == 0) {
                 return 0;
             }
-            return Math.max(0, Math.min(100, 100 * (stealTicks - before.stealTicks) / capacityTicks));
+            return Math.max(0, Math.min(100, 100 * ticks.applyAsDouble(capacityTicks) / capacityTicks));
         }
     }
 }

@@ -22,7 +22,7 @@ final class AgentRegistry {
     }
 
     Optional<Session> find(String agent) {
-        return Optional.ofNullable(byName.get(agent));
+        return Optional.ofNullable(sessionOf(agent));
     }
 
     /** As {@link #find}, null when no agent of that name is registered: the relay path's look-up, with no garbage. */
