@@ -37,6 +37,7 @@ public final class KnowledgeBase {
      * batches that change no class and dropped by any batch that does: adding an instance then costs a look-up.
      */
     private final Map<String, ClassInfo> classes = new HashMap<>();
+    private final PlainInstanceAdd plain = new PlainInstanceAdd(nodes, classes);
     private final Function<String, Frame> lookup = this::frameOrNull;
     /** Scratch list for validation and indexing, used under the write lock. */
     private final List<String> refs = new ArrayList<>();
@@ -307,15 +308,15 @@ public final class KnowledgeBase {
     private ChangeSet apply(List<? extends Change> changes, Frame[] near) {
         requireNonNull(changes, "changes");
         ChangeSet committed;
+        boolean first;
         lock.writeLock().lock();
         try {
             committed = commit(changes, near);
+            first = queue(committed);
         } finally {
             lock.writeLock().unlock();
         }
-        if (!committed.isEmpty()) {
-            deliver();
-        }
+        deliver(committed, first);
         return committed;
     }
 
@@ -371,16 +372,16 @@ public final class KnowledgeBase {
     ChangeSet commitStaged(long stagedAt, Supplier<List<FrameEvent>> finish, PreparedNodes prepared,
             boolean classesUnchanged, Supplier<List<Change>> adds) {
         ChangeSet committed;
+        boolean first;
         lock.writeLock().lock();
         try {
             committed = version == stagedAt ? publish(finish.get(), classesUnchanged, prepared, null)
                     : commit(adds.get(), null);
+            first = queue(committed);
         } finally {
             lock.writeLock().unlock();
         }
-        if (!committed.isEmpty()) {
-            deliver();
-        }
+        deliver(committed, first);
         return committed;
     }
 
@@ -395,15 +396,12 @@ public final class KnowledgeBase {
     private ChangeSet commit(List<? extends Change> changes, Frame[] near) {
         if (shortCuts) {
             // Plain instances (stimuli, sensor readings, derived instances) are checked and indexed without staging.
-            List<FrameEvent> plain = changes.size() == 1
-                    ? PlainInstanceAdd.tryAdd(changes.getFirst(), nodes, classes, near, version + 1)
-                    : PlainInstanceAdd.tryBatch(changes, nodes, classes, version + 1);
-            if (plain != null) {
-                plainAdds += plain.size();
+            List<FrameEvent> added = changes.size() == 1 ? plain.tryAdd(changes.getFirst(), near, version + 1)
+                    : plain.tryBatch(changes, version + 1);
+            if (added != null) {
+                plainAdds += added.size();
                 version++;
-                ChangeSet cs = new ChangeSet(version, plain);
-                undelivered.add(cs);
-                return cs;
+                return new ChangeSet(version, added);
             }
         }
         Batch batch = Batch.stage(changes, nodes);
@@ -417,7 +415,8 @@ public final class KnowledgeBase {
     }
 
     /**
-     * Makes a validated batch's events durable, applies them and queues them for the listeners.
+     * Makes a validated batch's events durable and applies them; the caller {@linkplain #queue queues} them for the
+     * listeners.
      *
      * @param prepared the batch's nodes, built while it was staged, or null to index the events here
      * @param near frames the batch's frames may refer to, at hand for the indexes ({@link Node#find}), or null
@@ -445,9 +444,7 @@ public final class KnowledgeBase {
         } else {
             Indexer.apply(nodes, events, version, refs, near);
         }
-        ChangeSet cs = new ChangeSet(version, events);
-        undelivered.add(cs);
-        return cs;
+        return new ChangeSet(version, events);
     }
 
     /** The events the commit log must keep: those of frames kept on disk before or after the change. */
@@ -467,25 +464,72 @@ public final class KnowledgeBase {
         return out == null ? List.of() : out;
     }
 
-    /** Delivers committed batches in order; a change made by a listener is delivered by the outer loop. */
+    /**
+     * Readies a batch just committed for the listeners, under the write lock, so that batches reach them in commit
+     * order. When this thread can take the delivery lock at once and no batch waits to be delivered, every batch
+     * committed before this one has been delivered: it keeps the delivery lock and answers true, and the caller hands
+     * the batch to the listeners itself once the write lock is released (the common case of one thread making changes,
+     * without a trip through the queue). Otherwise the batch joins the queue and the answer is false. An empty batch
+     * is not delivered.
+     */
+    private boolean queue(ChangeSet cs) {
+        if (cs.isEmpty()) {
+            return false;
+        }
+        if (!delivery.isHeldByCurrentThread() && delivery.tryLock()) {
+            if (undelivered.isEmpty()) {
+                return true;
+            }
+            delivery.unlock();
+        }
+        undelivered.add(cs);
+        return false;
+    }
+
+    /**
+     * After the write lock is released: delivers {@code cs} first when {@link #queue} kept the delivery lock for it
+     * ({@code first}), then every queued batch, in order. A change made by a listener is delivered by the outer loop.
+     */
+    private void deliver(ChangeSet cs, boolean first) {
+        if (first) {
+            try {
+                notifyListeners(cs);
+                drainQueue();
+            } finally {
+                delivery.unlock();
+            }
+        } else if (!cs.isEmpty()) {
+            deliver();
+        }
+    }
+
+    /** Delivers the queued batches in order; a change made by a listener is delivered by the outer loop. */
     private void deliver() {
         if (delivery.isHeldByCurrentThread()) {
             return;
         }
         delivery.lock();
         try {
-            ChangeSet cs;
-            while ((cs = undelivered.poll()) != null) {
-                for (KnowledgeListener l : listeners) {
-                    try {
-                        l.changed(cs);
-                    } catch (RuntimeException e) {
-                        LOG.error("Knowledge listener {} failed on version {}", l, cs.version(), e);
-                    }
-                }
-            }
+            drainQueue();
         } finally {
             delivery.unlock();
+        }
+    }
+
+    private void drainQueue() {
+        ChangeSet cs;
+        while ((cs = undelivered.poll()) != null) {
+            notifyListeners(cs);
+        }
+    }
+
+    private void notifyListeners(ChangeSet cs) {
+        for (KnowledgeListener l : listeners) {
+            try {
+                l.changed(cs);
+            } catch (RuntimeException e) {
+                LOG.error("Knowledge listener {} failed on version {}", l, cs.version(), e);
+            }
         }
     }
 

@@ -32,6 +32,18 @@ public final class NameTable<V> implements Iterable<V> {
         allocate(MIN_CAPACITY);
     }
 
+    /** An empty table with room for {@code expected} names before it first grows. */
+    public NameTable(int expected) {
+        if (expected < 0 || expected > 1 << 29) {
+            throw new IllegalArgumentException("A name table holds 0 to 2^29 names, not " + expected + ".");
+        }
+        int capacity = MIN_CAPACITY;
+        while (capacity < 2 * expected) {
+            capacity <<= 1;
+        }
+        allocate(capacity);
+    }
+
     public int size() {
         return size;
     }

@@ -1,10 +1,9 @@
 package org.kicnp.core;
 
 import java.util.ArrayList;
-import java.util.HashSet;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 
 /**
  * Adds of plain instances — runtime instances of a class already checked, whose slots each hold a value of the type
@@ -21,26 +20,34 @@ import java.util.Set;
  * ({@code PlainInstanceAddTest}). Runs under the write lock.
  */
 final class PlainInstanceAdd {
-    private static final Node[] NO_TARGETS = new Node[0];
+    private final NodeIndex nodes;
+    /** The knowledge base's own memo of checked classes (cleared by any batch that changes a class). */
+    private final Map<String, ClassInfo> classes;
+    /** The nodes of the instance slots' values of the frame being checked, by slot position; reused, for one add. */
+    private Node[] targets = new Node[4];
 
-    private PlainInstanceAdd() {
+    PlainInstanceAdd(NodeIndex nodes, Map<String, ClassInfo> classes) {
+        this.nodes = nodes;
+        this.classes = classes;
     }
 
     /**
      * Makes one change, the add of a plain instance that passes every check, and returns its event; or returns null,
      * having changed nothing, when the change is anything else.
      *
-     * @param classes the knowledge base's own memo of checked classes (cleared by any batch that changes a class)
      * @param near frames the instance may refer to, at hand ({@link Node#find}); nulls allowed; or null
      */
-    static List<FrameEvent> tryAdd(Change change, NodeIndex nodes, Map<String, ClassInfo> classes, Frame[] near,
-            long version) {
-        Checked c = change instanceof Change.Add a ? check(a.frame(), nodes, classes, near) : null;
-        if (c == null) {
+    List<FrameEvent> tryAdd(Change change, Frame[] near, long version) {
+        if (!(change instanceof Change.Add a)) {
             return null;
         }
-        index(c, nodes, version);
-        return List.of(new FrameEvent.Added(c.frame));
+        Frame f = a.frame();
+        Node parent = check(f, near);
+        if (parent == null) {
+            return null;
+        }
+        index(f, parent, targets, version);
+        return List.of(new FrameEvent.Added(f));
     }
 
     /**
@@ -48,47 +55,63 @@ final class PlainInstanceAdd {
      * nothing, unless each one is a plain instance that passes every check on the knowledge base as it was before the
      * batch (so none refers to another of the batch) and no name comes twice.
      */
-    static List<FrameEvent> tryBatch(List<? extends Change> changes, NodeIndex nodes, Map<String, ClassInfo> classes,
-            long version) {
+    List<FrameEvent> tryBatch(List<? extends Change> changes, long version) {
         int n = changes.size();
-        Checked[] checked = new Checked[n];
-        Set<String> names = HashSet.newHashSet(n);
+        Frame[] frames = new Frame[n];
+        Node[] parents = new Node[n];
+        Node[][] targetsOf = new Node[n][];
+        NameTable<Frame> names = new NameTable<>(n);
         for (int i = 0; i < n; i++) {
-            if (!(changes.get(i) instanceof Change.Add a) || !names.add(a.frame().name())) {
+            if (!(changes.get(i) instanceof Change.Add a) || names.put(a.frame().name(), a.frame()) != null) {
                 return null;
             }
-            checked[i] = check(a.frame(), nodes, classes, null);
-            if (checked[i] == null) {
+            frames[i] = a.frame();
+            parents[i] = check(frames[i], null);
+            if (parents[i] == null) {
                 return null;
             }
+            targetsOf[i] = copyOfTargets(frames[i].slots().size());
         }
-        List<FrameEvent> events = new ArrayList<>(n);
-        for (Checked c : checked) {
-            index(c, nodes, version);
-            events.add(new FrameEvent.Added(c.frame));
+        FrameEvent[] events = new FrameEvent[n];
+        for (int i = 0; i < n; i++) {
+            index(frames[i], parents[i], targetsOf[i], version);
+            events[i] = new FrameEvent.Added(frames[i]);
         }
-        return events;
+        return Arrays.asList(events);
     }
 
-    /** A plain instance that passed: its class's node and the nodes its slots' instances have. */
-    private record Checked(Frame frame, Node parent, Node[] targets) {
+    /** The first {@code n} of {@link #targets} for keeping, or null when none of them is set. */
+    private Node[] copyOfTargets(int n) {
+        for (int i = 0; i < n; i++) {
+            if (targets[i] != null) {
+                return Arrays.copyOf(targets, n);
+            }
+        }
+        return null;
     }
 
-    /** The checks of a plain instance against the knowledge base as it is; null when any is not passed. */
-    private static Checked check(Frame f, NodeIndex nodes, Map<String, ClassInfo> classes, Frame[] near) {
+    /**
+     * The checks of a plain instance against the knowledge base as it is: answers its class's node, with the nodes of
+     * its instance slots' values in {@link #targets} (by slot position, null for other slots), when every check is
+     * passed; else null.
+     */
+    private Node check(Frame f, Frame[] near) {
         if (!f.isInstance() || f.provenance().durable() || !f.parts().isEmpty() || !f.linksTo().isEmpty()
                 || !f.linksFrom().isEmpty()) {
             return null;
         }
-        ClassInfo cls = known(nodes, classes, f.parentOrNull());
+        ClassInfo cls = known(f.parentOrNull());
         if (cls == null || nodes.get(f.name()) != null) {
             return null;
         }
         List<Slot> slots = f.slots();
         int n = slots.size();
-        Node[] targets = NO_TARGETS;
+        if (targets.length < n) {
+            targets = new Node[Math.max(n, 2 * targets.length)];
+        }
         Declarations declared = n == 0 ? Declarations.NONE : cls.declarations();
         for (int i = 0; i < n; i++) {
+            targets[i] = null;
             Slot s = slots.get(i);
             if (s.valueOrNull() == null || s.argumentOrNull() != null || s.defaultOrNull() != null
                     || s.frameRelatedOrNull() != null || !s.frameListRelated().isEmpty()
@@ -105,16 +128,12 @@ final class PlainInstanceAdd {
                 case INSTANCE -> {
                     String argument = d == null ? null : d.argument();
                     if (d == null || d.slot().type() != DataType.INSTANCE || argument == null
-                            || known(nodes, classes, argument) == null
-                            || !(s.valueOrNull() instanceof Value.Ref ref)) {
+                            || known(argument) == null || !(s.valueOrNull() instanceof Value.Ref ref)) {
                         return null;
                     }
                     Node target = Node.find(nodes, ref.frame(), near);
-                    if (target == null || !isA(nodes, classes, target.frame, argument)) {
+                    if (target == null || !isA(target.frame, argument)) {
                         return null;
-                    }
-                    if (targets == NO_TARGETS) {
-                        targets = new Node[n];
                     }
                     targets[i] = target;
                 }
@@ -127,10 +146,7 @@ final class PlainInstanceAdd {
         if (parent == null || parent.liveIn != nodes) {
             parent = nodes.get(cls.frame.name()); // a frame shared with another knowledge base points at its node there
         }
-        if (parent == null || parent.frame != cls.frame) {
-            return null;
-        }
-        return new Checked(f, parent, targets);
+        return parent != null && parent.frame == cls.frame ? parent : null;
     }
 
     /**
@@ -138,7 +154,7 @@ final class PlainInstanceAdd {
      * base by a validator of no change (which remembers it in the memo, as any batch's validation would); null when
      * there is no such class or its chain is not complete.
      */
-    private static ClassInfo known(NodeIndex nodes, Map<String, ClassInfo> classes, String name) {
+    private ClassInfo known(String name) {
         if (name == null) {
             return null;
         }
@@ -150,30 +166,35 @@ final class PlainInstanceAdd {
     }
 
     /** Whether {@code target} is {@code ancestor} or lies below it, answered from a checked class; else false. */
-    private static boolean isA(NodeIndex nodes, Map<String, ClassInfo> classes, Frame target, String ancestor) {
+    private boolean isA(Frame target, String ancestor) {
         if (target.name().equals(ancestor)) {
             return true;
         }
-        ClassInfo p = known(nodes, classes, target.parentOrNull());
+        ClassInfo p = known(target.parentOrNull());
         return p != null && p.isA(ancestor);
     }
 
-    /** As {@link Indexer} indexes an added instance: its node, its class's children, every ancestor, referrers. */
-    private static void index(Checked c, NodeIndex nodes, long version) {
-        Frame f = c.frame;
+    /**
+     * As {@link Indexer} indexes an added instance: its node, its class's children, every ancestor, referrers.
+     *
+     * @param targets the nodes of its instance slots' values, nulls allowed; or null when it has none
+     */
+    private void index(Frame f, Node parent, Node[] targets, long version) {
         Node n = new Node(f);
         n.revision = version;
         nodes.put(f.name(), n);
         n.liveIn = nodes;
         f.node = n;
-        n.parent = c.parent;
-        c.parent.children().addNew(n);
-        for (Node a = c.parent; a != null; a = a.parent) {
+        n.parent = parent;
+        parent.children().addNew(n);
+        for (Node a = parent; a != null; a = a.parent) {
             a.instances().addNew(n);
         }
-        for (Node t : c.targets) {
-            if (t != null) {
-                t.referrers().add(n); // a probe: two slots may hold the same instance
+        if (targets != null) {
+            for (int i = 0, k = Math.min(targets.length, f.slots().size()); i < k; i++) {
+                if (targets[i] != null) {
+                    targets[i].referrers().add(n); // a probe: two slots may hold the same instance
+                }
             }
         }
     }

@@ -1,6 +1,7 @@
 package org.kicnp.core;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -43,8 +44,24 @@ class NameTableTest {
 
     @Test
     void putGetAndRemove_inRandomOrder_behaveLikeAHashMap() {
+        putGetAndRemove_inRandomOrder_behaveLikeAHashMap(new NameTable<>());
+    }
+
+    @Test
+    void putGetAndRemove_inRandomOrder_behaveLikeAHashMap_presizedSmallOrLarge() {
+        putGetAndRemove_inRandomOrder_behaveLikeAHashMap(new NameTable<>(0));
+        putGetAndRemove_inRandomOrder_behaveLikeAHashMap(new NameTable<>(5_000));
+    }
+
+    @Test
+    void presizing_refusesANegativeOrHugeSize() {
+        assertThatThrownBy(() -> new NameTable<>(-1)).isInstanceOf(IllegalArgumentException.class)
+                .hasMessage("A name table holds 0 to 2^29 names, not -1.");
+        assertThatThrownBy(() -> new NameTable<>((1 << 29) + 1)).isInstanceOf(IllegalArgumentException.class);
+    }
+
+    private static void putGetAndRemove_inRandomOrder_behaveLikeAHashMap(NameTable<String> table) {
         Random random = new Random(3);
-        NameTable<String> table = new NameTable<>();
         Map<String, String> reference = new HashMap<>();
         List<String> names = new ArrayList<>();
         for (int i = 0; i < 3_000; i++) {
