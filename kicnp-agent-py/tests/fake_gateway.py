@@ -54,6 +54,11 @@ class FakeGateway:
         with self._lock:
             self._conn.sendall(struct.pack(">I", len(payload)) + payload)
 
+    def send_raw(self, data):
+        """Writes bytes as they are, without a length of their own: a length that lies, or a frame cut short."""
+        with self._lock:
+            self._conn.sendall(data)
+
     def drop(self):
         """Closes the agent's current connection, as a crashed server or a cut cable would."""
         with self._lock:

@@ -1,6 +1,7 @@
 """The agent without a gateway: options, feedback rules, refusals before sending, and a stand-in gateway that stays
 silent, drops the connection, closes it with an error or sends what is not the protocol."""
 import socket
+import struct
 import threading
 import unittest
 
@@ -142,6 +143,16 @@ class StandInGatewayTest(unittest.TestCase):
         self.assertEqual(2, len(lost), lost)
         self.assertIn("(The server speaks protocol version 2, not 1.); reconnecting.", lost[0])
         self.assertIn("(The server sent a frame that is not UTF-8 JSON", lost[1])
+
+
+    def test_aLengthOverMaxFrameBytes_dropsTheConnectionAtOnce_notWaitingForThePayload(self):
+        with self.assertLogs("kicnp_agent", "INFO") as logged:
+            self.server.send_raw(struct.pack(">I", 1024 * 1024 + 1) + b'{"v":1,')  # and the rest never comes
+            # Well within server_silence (40 s): the agent did not wait for the 1 MiB to come.
+            eventually("the agent is registered again", lambda: self.server.connections == 2 and self.agent.is_connected,
+                       timeout=5)
+        self.assertIn("(The server sent a frame of 1048577 bytes, more than the 1048576 bytes this agent accepts "
+                      "(max_frame_bytes).); reconnecting.", "\n".join(logged.output))
 
 
 class UnreachableServerTest(unittest.TestCase):

@@ -2,15 +2,61 @@
 import json
 import struct
 import unittest
+from unittest import mock
 
-from kicnp_agent import ProtocolError, Ref, RequestRefusedError
+from kicnp_agent import AgentOptions, ProtocolError, Ref, RequestRefusedError
+from kicnp_agent import wire
+from kicnp_agent.connection import Connection
 from kicnp_agent.messages import value_from_json, value_to_json
-from kicnp_agent.wire import FrameBuffer, decode, encode
+from kicnp_agent.wire import DEFAULT_MAX_FRAME_BYTES, FrameBuffer, decode, encode
+
+CHUNK = 65536  # what one receive of the stand-in transport returns at most, as one recv of the real one
 
 
 def frame(message):
     payload = json.dumps(message).encode("utf-8")
     return struct.pack(">I", len(payload)) + payload
+
+
+def heartbeat(size):
+    """A heartbeat frame whose payload is exactly ``size`` bytes, padded with a member the agent ignores."""
+    bare = len(json.dumps({"v": 1, "type": "heartbeat", "time": 5, "pad": ""}).encode("utf-8"))
+    return frame({"v": 1, "type": "heartbeat", "time": 5, "pad": "x" * (size - bare)})
+
+
+class ChunkedTransport:
+    """Stands in for the socket: each receive returns the next of the chunks given, and is counted."""
+
+    def __init__(self, chunks):
+        self.chunks = list(chunks)
+        self.receives = 0
+        self.sock = None
+
+    def receive(self):
+        self.receives += 1
+        return self.chunks.pop(0) if self.chunks else b""
+
+
+class CountingFrameBuffer(FrameBuffer):
+    """A FrameBuffer that counts the bytes it holds (fed, less the frames it has cut) and the most it has held."""
+
+    made = []
+
+    def __init__(self, max_frame_bytes):
+        super().__init__(max_frame_bytes)
+        self.held = self.most = 0
+        CountingFrameBuffer.made.append(self)
+
+    def feed(self, data):
+        super().feed(data)
+        self.held += len(data)
+        self.most = max(self.most, self.held)
+
+    def next_frame(self):
+        payload = super().next_frame()
+        if payload is not None:
+            self.held -= 4 + len(payload)
+        return payload
 
 
 class WireTest(unittest.TestCase):
@@ -52,6 +98,39 @@ class WireTest(unittest.TestCase):
             with self.assertRaises(ProtocolError) as error:
                 buffer.next_frame()
             self.assertEqual(message, str(error.exception))
+
+    def test_read_refusesALengthOverTheMaximum_asSoonAsItsFourBytesArrive_askingForNoneOfThePayload(self):
+        header = struct.pack(">I", DEFAULT_MAX_FRAME_BYTES + 1)
+        transport = ChunkedTransport([frame({"v": 1, "type": "ack", "id": "1"}) + header[:2],  # the length in two
+                                      header[2:] + b'{"v":1,"type":"ack"'] + [b"x" * CHUNK] * 20)  # never to be read
+        connection = Connection(transport, AgentOptions("scout", "t"))
+        self.assertEqual({"v": 1, "type": "ack", "id": "1"}, connection.read())
+        with self.assertRaises(ProtocolError) as error:
+            connection.read()
+        self.assertEqual("The server sent a frame of 1048577 bytes, more than the 1048576 bytes this agent accepts "
+                         "(max_frame_bytes).", str(error.exception))
+        self.assertEqual(2, transport.receives)  # the chunk with the length's last two bytes, and nothing after it
+
+    def test_read_holdsAtMostOneMaximumFramePlusOneReceive_andAcceptsAFrameOfExactlyTheMaximum(self):
+        largest = DEFAULT_MAX_FRAME_BYTES
+        sizes = [largest, 100, largest - 1, largest, 1000, largest]  # maximum frames straddling the chunks
+        stream = b"".join(heartbeat(size) for size in sizes)
+        tail = struct.pack(">I", largest + 1) + b"x" * (3 * CHUNK)  # a length too long, then payload never to be read
+        transport = ChunkedTransport((stream + tail)[i:i + CHUNK] for i in range(0, len(stream + tail), CHUNK))
+        receives_up_to_the_bad_length = (len(stream) + 3) // CHUNK + 1  # to the chunk with its last byte
+        CountingFrameBuffer.made.clear()
+        with mock.patch.object(wire, "FrameBuffer", CountingFrameBuffer):
+            connection = Connection(transport, AgentOptions("scout", "t"))
+        read = []
+        with self.assertRaises(ProtocolError) as error:
+            while True:
+                read.append(connection.read())
+        self.assertIn("a frame of 1048577 bytes, more than the 1048576 bytes", str(error.exception))
+        self.assertEqual(sizes, [len(json.dumps(m).encode("utf-8")) for m in read])
+        (frames,) = CountingFrameBuffer.made
+        self.assertLessEqual(frames.most, 4 + largest + CHUNK)  # one maximum frame, its length, and one receive
+        self.assertGreater(frames.most, 4 + largest)  # the stream did make it hold that much
+        self.assertEqual(receives_up_to_the_bad_length, transport.receives)
 
     def test_decode_refusesWhatIsNotAMessageForAnAgent_sayingWhat(self):
         cases = [(b"[1]", "The server sent a frame that is not a JSON object: [1]."),

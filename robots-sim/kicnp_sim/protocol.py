@@ -174,7 +174,10 @@ class Dispatcher:
             if not isinstance(req_id, str) or not req_id:
                 req_id = None if not isinstance(req_id, (str, int)) else req_id
                 raise ProtocolError(req_id, "id", "is required and must be a non-empty string")
-            if len(line) > MAX_LINE:  # what it says would come back too long for the platform to read
+            # What it says would come back too long for the platform to read. A line from stdin never gets here that
+            # long (the server's read_lines skips it, unkept, and calls line_too_long instead); this is for a caller
+            # that hands a line in directly.
+            if len(line) > MAX_LINE:
                 raise ProtocolError(req_id, None, f"is a line of {len(line)} characters, longer than the protocol's "
                                                   f"limit of {MAX_LINE} characters; it was not handled")
             rtype = req.get("type")
@@ -189,6 +192,16 @@ class Dispatcher:
         except Exception as exc:  # a bug: report it, log it, keep serving
             log.exception("internal error handling %r", line[:200])
             self.world.emit("error", id=req_id, field=None, message=f"request {req_id!r}: internal error: {exc!r}")
+
+    def line_too_long(self, limit: int) -> None:
+        """Reports a request line longer than ``limit`` characters, which the reader skipped without keeping it.
+
+        Nothing of the line is kept (keeping it is what a line with no end would make unbounded), so its id cannot be
+        known: the error has none, and says so, so that the sender can tell why no request of its own was answered."""
+        message = str(ProtocolError(None, None, f"a line longer than the protocol's limit of {limit} characters was "
+                                                "skipped up to its newline and not handled; its id cannot be known, "
+                                                "as the line was not kept"))
+        self.world.emit("error", id=None, field=None, message=message)
 
     def ack(self, req_id: Any, result: Optional[dict[str, Any]] = None) -> None:
         if result is None:

@@ -3,6 +3,8 @@
 In real time a reader thread feeds stdin lines into a queue, and the main loop steps the world
 so that simulated time follows wall time times the time scale (0 = as fast as possible). Only
 this module reads the wall clock; the world never does. Only protocol JSON goes to stdout.
+Both loops read stdin through ``read_lines``, which never holds more of one line than the
+protocol's limit allows, so a line with no end cannot make the simulator's memory grow.
 """
 
 from __future__ import annotations
@@ -11,14 +13,15 @@ import queue
 import sys
 import threading
 import time
-from typing import IO, Optional
+from typing import IO, Iterator, Optional, Union
 
-from .protocol import Dispatcher, encode
+from .protocol import MAX_LINE, Dispatcher, encode
 
 MAX_CATCH_UP_STEPS = 600  # per loop turn; beyond this the clock is re-anchored (we fell behind)
 FAST_BATCH_STEPS = 20  # steps between input checks when running as fast as possible
 WATCH_WINDOW = 2.0  # wall seconds over which the achieved time scale is measured
 SHORT_FRACTION = 0.8  # below this share of the requested scale, the machine is not keeping up
+SKIP_CHUNK = 65_536  # characters read (and dropped) at a time while skipping the rest of an over-long line
 
 
 class ScaleWatch:
@@ -63,30 +66,80 @@ def flush(disp: Dispatcher, out: IO[str]) -> None:
         out.flush()
 
 
-def run_manual(disp: Dispatcher, inp: IO[str], out: IO[str]) -> int:
-    """Handle lines until EOF or shutdown; the world advances only on 'step' requests."""
-    flush(disp, out)
-    while not disp.shutdown:
-        line = inp.readline()
+class LineTooLong:
+    """Stands, among the lines ``read_lines`` yields, for a line longer than its limit, of which nothing is kept."""
+
+    def __init__(self, limit: int):
+        self.limit = limit
+
+
+Line = Union[str, LineTooLong]
+
+
+def read_lines(inp: IO[str], max_line: int = MAX_LINE) -> Iterator[Line]:
+    """The lines of ``inp`` (each with its newline, the last one perhaps without), read so that no more than
+    ``max_line + 1`` characters of one line are ever held.
+
+    ``readline()`` alone would hold a whole line before anything could check its length, and a line that never ends
+    (a peer that writes no newline) would grow without bound. So each line is read with a limit: a line longer than
+    ``max_line`` characters (before its newline) is yielded as a :class:`LineTooLong` as soon as ``max_line + 1`` of
+    its characters have come, those are dropped, and the rest of it, up to its newline, is read ``SKIP_CHUNK``
+    characters at a time (at most ``max_line + 1``) and dropped too, when the next line is asked for; the line after
+    it is read as usual.
+    """
+    skip = min(SKIP_CHUNK, max_line + 1)
+    while True:
+        line = inp.readline(max_line + 1)
         if not line:
-            break
+            return
+        if len(line) <= max_line or line.endswith("\n"):
+            yield line
+            continue
+        del line  # not kept while the caller reports it, nor while the rest is skipped
+        yield LineTooLong(max_line)
+        while True:
+            rest = inp.readline(skip)
+            if not rest or rest.endswith("\n"):
+                break
+
+
+def _handle(disp: Dispatcher, line: Line) -> None:
+    """One line from ``read_lines``, as both loops handle it."""
+    if isinstance(line, LineTooLong):
+        disp.line_too_long(line.limit)
+    else:
         disp.handle_line(line)
+
+
+def run_manual(disp: Dispatcher, inp: IO[str], out: IO[str], max_line: int = MAX_LINE) -> int:
+    """Handle lines until EOF or shutdown; the world advances only on 'step' requests.
+
+    A line longer than ``max_line`` characters gets an ``error`` and is skipped (see ``read_lines``)."""
+    flush(disp, out)
+    lines = read_lines(inp, max_line)
+    while not disp.shutdown:
+        line = next(lines, None)
+        if line is None:
+            break
+        _handle(disp, line)
         flush(disp, out)
     return 0
 
 
-def _reader(inp: IO[str], q: "queue.Queue[Optional[str]]") -> None:
-    for line in iter(inp.readline, ""):
+def _reader(inp: IO[str], q: "queue.Queue[Optional[Line]]", max_line: int) -> None:
+    for line in read_lines(inp, max_line):
         q.put(line)
     q.put(None)
 
 
-def run_realtime(disp: Dispatcher, inp: IO[str], out: IO[str], err: Optional[IO[str]] = None) -> int:
+def run_realtime(disp: Dispatcher, inp: IO[str], out: IO[str], err: Optional[IO[str]] = None,
+                 max_line: int = MAX_LINE) -> int:
     """Step the world against the wall clock scaled by the time scale, handling input as it comes.
 
-    When the machine cannot keep up with the scale, a warning goes once to ``err`` (default stderr)."""
-    q: "queue.Queue[Optional[str]]" = queue.Queue()
-    threading.Thread(target=_reader, args=(inp, q), daemon=True, name="stdin-reader").start()
+    When the machine cannot keep up with the scale, a warning goes once to ``err`` (default stderr). A line longer
+    than ``max_line`` characters gets an ``error`` and is skipped, as in ``run_manual`` (see ``read_lines``)."""
+    q: "queue.Queue[Optional[Line]]" = queue.Queue()
+    threading.Thread(target=_reader, args=(inp, q, max_line), daemon=True, name="stdin-reader").start()
     world = disp.world
     flush(disp, out)
     scale = disp.time_scale
@@ -120,7 +173,7 @@ def run_realtime(disp: Dispatcher, inp: IO[str], out: IO[str], err: Optional[IO[
         while True:
             if line is None:
                 return 0
-            disp.handle_line(line)
+            _handle(disp, line)
             flush(disp, out)
             if disp.shutdown:
                 return 0

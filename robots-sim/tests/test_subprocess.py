@@ -167,3 +167,40 @@ def test_a_stray_print_in_simulator_code_goes_to_stderr_not_into_the_protocol_st
     assert [e["type"] for e in events if e.get("id") in ("c1", "s1")] == [
         "ack", "action_started", "utterance", "action_ended", "ack"]
     assert "debug: saying Hello" in p.stderr
+
+
+def _peak_rss_kib(pid: int) -> int:
+    """The most resident memory the process has had (VmHWM), in KiB."""
+    with open(f"/proc/{pid}/status") as status:
+        return next(int(line.split()[1]) for line in status if line.startswith("VmHWM:"))
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads the peak memory from /proc")
+@pytest.mark.parametrize("args", [["--manual"], ["--time-scale", "0"]], ids=["manual", "realtime"])
+def test_a_line_far_over_the_limit_is_refused_before_it_ends_and_skipped_without_being_kept(procs: Any,
+                                                                                           args: list[str]) -> None:
+    pr = procs(*args)
+    pr.next()  # hello
+    before = _peak_rss_kib(pr.p.pid)
+    assert pr.p.stdin is not None
+    chunk = "x" * 1_000_000  # the test's own memory stays at one chunk
+    pr.p.stdin.write('{"id":"big","type":"query","pad":"')
+    for _ in range(30):
+        pr.p.stdin.write(chunk)
+    pr.p.stdin.flush()
+    # 30 million characters and no newline yet: the error comes now, not when (or if) the line ends.
+    err = pr.next(timeout=20)
+    assert err == {"type": "error", "t": err["t"], "id": None, "field": None, "message": (
+        "request: a line longer than the protocol's limit of 10000000 characters was skipped up to its newline and "
+        "not handled; its id cannot be known, as the line was not kept")}, err
+    for _ in range(30):
+        pr.p.stdin.write(chunk)
+    pr.send('"}')  # the line ends, 60 million characters long
+    pr.send({"id": "q", "type": "query"})
+    evs = pr.until(lambda e: e["type"] == "state", timeout=20)
+    assert [(e["type"], e["id"]) for e in evs if e["type"] in ("ack", "error", "state")] == [("ack", "q"), ("state", "q")]
+    # Kept whole, the line alone would be 60 MB (the unbounded readline() took over 200 MB). Read with the limit, at
+    # most a line of the limit is held: about 20 MB at the peak, inside readline.
+    grew = _peak_rss_kib(pr.p.pid) - before
+    assert grew < 40_000, f"the simulator's peak memory grew by {grew} KiB reading one over-long line"
+    assert pr.close_and_wait() == 0
