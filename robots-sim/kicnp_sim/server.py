@@ -21,6 +21,7 @@ MAX_CATCH_UP_STEPS = 600  # per loop turn; beyond this the clock is re-anchored 
 FAST_BATCH_STEPS = 20  # steps between input checks when running as fast as possible
 WATCH_WINDOW = 2.0  # wall seconds over which the achieved time scale is measured
 SHORT_FRACTION = 0.8  # below this share of the requested scale, the machine is not keeping up
+INPUT_QUEUE_LINES = 32  # lines read ahead in real-time mode; when full, the reader waits (and so does the writer)
 SKIP_CHUNK = 65_536  # characters read (and dropped) at a time while skipping the rest of an over-long line
 
 
@@ -138,7 +139,9 @@ def run_realtime(disp: Dispatcher, inp: IO[str], out: IO[str], err: Optional[IO[
 
     When the machine cannot keep up with the scale, a warning goes once to ``err`` (default stderr). A line longer
     than ``max_line`` characters gets an ``error`` and is skipped, as in ``run_manual`` (see ``read_lines``)."""
-    q: "queue.Queue[Optional[Line]]" = queue.Queue()
+    # Bounded, so that a writer faster than the loop makes the pipe (and then the writer) wait instead of this
+    # process's memory grow: at most INPUT_QUEUE_LINES lines of at most max_line characters wait here.
+    q: "queue.Queue[Optional[Line]]" = queue.Queue(maxsize=INPUT_QUEUE_LINES)
     threading.Thread(target=_reader, args=(inp, q, max_line), daemon=True, name="stdin-reader").start()
     world = disp.world
     flush(disp, out)

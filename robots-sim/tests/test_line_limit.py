@@ -9,12 +9,13 @@ from __future__ import annotations
 
 import io
 import json
+import time
 from typing import Any, Union
 
 import pytest
 
 from kicnp_sim.protocol import Dispatcher
-from kicnp_sim.server import run_manual, run_realtime
+from kicnp_sim.server import INPUT_QUEUE_LINES, run_manual, run_realtime
 from kicnp_sim.world import World
 
 LIMIT = 200
@@ -109,3 +110,38 @@ def test_no_read_returns_more_than_the_limit_plus_one_characters_of_a_long_line(
     assert run(mode, stream) == [("ack", "q1"), ("state", "q1"), ("error", skipped(LIMIT)), ("ack", "q2"),
                                  ("state", "q2")]
     assert stream.longest == LIMIT + 1  # a reader without a bound would have made the million characters at once
+
+
+def test_realtime_mode_reads_at_most_a_bounded_number_of_lines_ahead_of_the_ones_it_has_handled() -> None:
+    """A writer faster than the loop (here: a stream that is always ready, and a slow handler) is held back by the
+    bounded queue between the reader thread and the loop, instead of the queue growing with everything written."""
+    lines = 300
+    handled = 0
+    ahead = 0
+
+    class Counting(io.StringIO):
+        def readline(self, size: int = -1) -> str:  # type: ignore[override]
+            nonlocal ahead
+            line = super().readline(size)
+            if line:
+                ahead = max(ahead, self.read_so_far - handled)
+                self.read_so_far += 1
+            return line
+
+    stream = Counting("".join(query(f"q{i}") + "\n" for i in range(lines)))
+    stream.read_so_far = 0  # type: ignore[attr-defined]
+    world = World(seed=42)
+    disp = Dispatcher(world, manual=False, time_scale=0.0)
+    disp.hello()
+    handle = disp.handle_line
+
+    def slow(line: str) -> None:
+        nonlocal handled
+        time.sleep(0.001)
+        handle(line)
+        handled += 1
+
+    disp.handle_line = slow  # type: ignore[method-assign]
+    assert run_realtime(disp, stream, io.StringIO(), err=io.StringIO()) == 0
+    assert handled == lines
+    assert ahead <= INPUT_QUEUE_LINES + 2  # the queue, the line the loop holds, the line the reader holds
