@@ -58,7 +58,14 @@ final class NodeIndex {
     }
 
     Node get(String name) {
-        int number = NameTable.numberOf(name);
+        return get(name, NameTable.numberOf(name));
+    }
+
+    /**
+     * As {@link #get(String)}, given the name's {@linkplain NameTable#numberOf number}: a caller that needs it twice
+     * (a look-up, then a put) reads it once.
+     */
+    Node get(String name, int number) {
         if (number >= 0) {
             int k = number & numbered.length - 1;
             Node at = numbered[k];
@@ -74,7 +81,11 @@ final class NodeIndex {
 
     /** Puts a node under a name: at the end of the order, or in the place of the node that name had. */
     void put(String name, Node n) {
-        int number = NameTable.numberOf(name);
+        put(name, NameTable.numberOf(name), n);
+    }
+
+    /** As {@link #put(String, Node)}, given the name's {@linkplain NameTable#numberOf number}. */
+    void put(String name, int number, Node n) {
         if (number >= 0) {
             int k = number & numbered.length - 1;
             Node at = numbered[k];

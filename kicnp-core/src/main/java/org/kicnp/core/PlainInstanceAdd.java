@@ -25,6 +25,8 @@ final class PlainInstanceAdd {
     private final Map<String, ClassInfo> classes;
     /** The nodes of the instance slots' values of the frame being checked, by slot position; reused, for one add. */
     private Node[] targets = new Node[4];
+    /** The {@linkplain NameTable#numberOf number} of the name of the frame last checked, for its index. */
+    private int number;
 
     PlainInstanceAdd(NodeIndex nodes, Map<String, ClassInfo> classes) {
         this.nodes = nodes;
@@ -46,7 +48,7 @@ final class PlainInstanceAdd {
         if (parent == null) {
             return null;
         }
-        index(f, parent, targets, version);
+        index(f, number, parent, targets, version);
         return List.of(new FrameEvent.Added(f));
     }
 
@@ -74,7 +76,7 @@ final class PlainInstanceAdd {
         }
         FrameEvent[] events = new FrameEvent[n];
         for (int i = 0; i < n; i++) {
-            index(frames[i], parents[i], targetsOf[i], version);
+            index(frames[i], NameTable.numberOf(frames[i].name()), parents[i], targetsOf[i], version);
             events[i] = new FrameEvent.Added(frames[i]);
         }
         return Arrays.asList(events);
@@ -101,7 +103,8 @@ final class PlainInstanceAdd {
             return null;
         }
         ClassInfo cls = known(f.parentOrNull());
-        if (cls == null || nodes.get(f.name()) != null) {
+        number = NameTable.numberOf(f.name());
+        if (cls == null || nodes.get(f.name(), number) != null) {
             return null;
         }
         List<Slot> slots = f.slots();
@@ -177,12 +180,13 @@ final class PlainInstanceAdd {
     /**
      * As {@link Indexer} indexes an added instance: its node, its class's children, every ancestor, referrers.
      *
+     * @param number the {@linkplain NameTable#numberOf number} of its name
      * @param targets the nodes of its instance slots' values, nulls allowed; or null when it has none
      */
-    private void index(Frame f, Node parent, Node[] targets, long version) {
+    private void index(Frame f, int number, Node parent, Node[] targets, long version) {
         Node n = new Node(f);
         n.revision = version;
-        nodes.put(f.name(), n);
+        nodes.put(f.name(), number, n);
         n.liveIn = nodes;
         f.node = n;
         n.parent = parent;
