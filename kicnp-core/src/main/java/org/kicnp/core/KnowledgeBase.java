@@ -7,16 +7,11 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import java.util.concurrent.ConcurrentLinkedQueue;
-import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.locks.ReentrantLock;
 import java.util.concurrent.locks.ReentrantReadWriteLock;
 import java.util.function.Consumer;
 import java.util.function.Function;
 import java.util.function.LongConsumer;
 import java.util.function.Supplier;
-import org.slf4j.Logger;
-import org.slf4j.LoggerFactory;
 
 /**
  * The knowledge base (the paper's knowledge manager): every frame, the indexes derived from them, and the one
@@ -28,8 +23,6 @@ import org.slf4j.LoggerFactory;
  * set kept per class, so it costs O(1) per result and never scans.
  */
 public final class KnowledgeBase {
-    private static final Logger LOG = LoggerFactory.getLogger(KnowledgeBase.class);
-
     private final ReentrantReadWriteLock lock = new ReentrantReadWriteLock();
     private final NodeIndex nodes = new NodeIndex();
     /**
@@ -42,9 +35,7 @@ public final class KnowledgeBase {
     /** Scratch list for validation and indexing, used under the write lock. */
     private final List<String> refs = new ArrayList<>();
     private final CommitLog commitLog;
-    private final List<KnowledgeListener> listeners = new CopyOnWriteArrayList<>();
-    private final ConcurrentLinkedQueue<ChangeSet> undelivered = new ConcurrentLinkedQueue<>();
-    private final ReentrantLock delivery = new ReentrantLock();
+    private final Delivery delivery = new Delivery();
     private long version;
     /** Adds made by {@link PlainInstanceAdd}, for tests that must know the short cut was taken. */
     private long plainAdds;
@@ -312,11 +303,11 @@ public final class KnowledgeBase {
         lock.writeLock().lock();
         try {
             committed = commit(changes, near);
-            first = queue(committed);
+            first = delivery.queue(committed);
         } finally {
             lock.writeLock().unlock();
         }
-        deliver(committed, first);
+        delivery.deliver(committed, first);
         return committed;
     }
 
@@ -377,20 +368,20 @@ public final class KnowledgeBase {
         try {
             committed = version == stagedAt ? publish(finish.get(), classesUnchanged, prepared, null)
                     : commit(adds.get(), null);
-            first = queue(committed);
+            first = delivery.queue(committed);
         } finally {
             lock.writeLock().unlock();
         }
-        deliver(committed, first);
+        delivery.deliver(committed, first);
         return committed;
     }
 
     public void addListener(KnowledgeListener listener) {
-        listeners.add(requireNonNull(listener, "listener"));
+        delivery.add(requireNonNull(listener, "listener"));
     }
 
     public void removeListener(KnowledgeListener listener) {
-        listeners.remove(listener);
+        delivery.remove(listener);
     }
 
     private ChangeSet commit(List<? extends Change> changes, Frame[] near) {
@@ -415,7 +406,7 @@ public final class KnowledgeBase {
     }
 
     /**
-     * Makes a validated batch's events durable and applies them; the caller {@linkplain #queue queues} them for the
+     * Makes a validated batch's events durable and applies them; the caller {@linkplain Delivery#queue queues} them for the
      * listeners.
      *
      * @param prepared the batch's nodes, built while it was staged, or null to index the events here
@@ -462,75 +453,6 @@ public final class KnowledgeBase {
             }
         }
         return out == null ? List.of() : out;
-    }
-
-    /**
-     * Readies a batch just committed for the listeners, under the write lock, so that batches reach them in commit
-     * order. When this thread can take the delivery lock at once and no batch waits to be delivered, every batch
-     * committed before this one has been delivered: it keeps the delivery lock and answers true, and the caller hands
-     * the batch to the listeners itself once the write lock is released (the common case of one thread making changes,
-     * without a trip through the queue). Otherwise the batch joins the queue and the answer is false. An empty batch
-     * is not delivered.
-     */
-    private boolean queue(ChangeSet cs) {
-        if (cs.isEmpty()) {
-            return false;
-        }
-        if (!delivery.isHeldByCurrentThread() && delivery.tryLock()) {
-            if (undelivered.isEmpty()) {
-                return true;
-            }
-            delivery.unlock();
-        }
-        undelivered.add(cs);
-        return false;
-    }
-
-    /**
-     * After the write lock is released: delivers {@code cs} first when {@link #queue} kept the delivery lock for it
-     * ({@code first}), then every queued batch, in order. A change made by a listener is delivered by the outer loop.
-     */
-    private void deliver(ChangeSet cs, boolean first) {
-        if (first) {
-            try {
-                notifyListeners(cs);
-                drainQueue();
-            } finally {
-                delivery.unlock();
-            }
-        } else if (!cs.isEmpty()) {
-            deliver();
-        }
-    }
-
-    /** Delivers the queued batches in order; a change made by a listener is delivered by the outer loop. */
-    private void deliver() {
-        if (delivery.isHeldByCurrentThread()) {
-            return;
-        }
-        delivery.lock();
-        try {
-            drainQueue();
-        } finally {
-            delivery.unlock();
-        }
-    }
-
-    private void drainQueue() {
-        ChangeSet cs;
-        while ((cs = undelivered.poll()) != null) {
-            notifyListeners(cs);
-        }
-    }
-
-    private void notifyListeners(ChangeSet cs) {
-        for (KnowledgeListener l : listeners) {
-            try {
-                l.changed(cs);
-            } catch (RuntimeException e) {
-                LOG.error("Knowledge listener {} failed on version {}", l, cs.version(), e);
-            }
-        }
     }
 
     private Node node(String name) {
