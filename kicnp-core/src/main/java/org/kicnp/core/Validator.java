@@ -16,16 +16,10 @@ import java.util.Set;
  * knowledge base's own between batches that change no class), and messages are only built for problems found.
  */
 final class Validator {
-    private static final int CYCLE_CHECK_STEPS = 10_000;
-    /** How many frames of an IS-A cycle a problem names: a cycle may run through thousands. */
-    private static final int CYCLE_TEXT_NAMES = 10;
-
     private final Map<String, Frame> staged;
     private final NodeIndex base;
-    /** Frames known to have an acyclic IS-A chain in the view, by name. */
-    private final Map<String, ClassInfo> classes;
-    /** Frames found to have an IS-A cycle in their chain, so no other frame walks it again; null until one is. */
-    private Set<String> cyclic;
+    /** The knowledge base after the batch, with what is known of its IS-A chains. */
+    private final StagedView view;
     private final List<Problem> problems = new ArrayList<>(0);
     /** Staged frames by parent name, for parents that are missing or instances in the view; null until one is. */
     private Map<String, List<String>> stagedChildren;
@@ -33,8 +27,6 @@ final class Validator {
     private List<Frame> suspects;
     /** Scratch list for the names a frame mentions, the knowledge base's (used under its write lock). */
     private final List<String> refs;
-    /** Frames the batch's frames refer to, at hand ({@link Node#find}); null: none. */
-    private final Frame[] near;
 
     /**
      * @param staged touched names to their frame after the batch, or null where the batch removes the frame
@@ -55,29 +47,8 @@ final class Validator {
             Frame[] near) {
         this.staged = staged;
         this.base = base;
-        this.classes = classes;
+        this.view = new StagedView(staged, base, classes, near);
         this.refs = refs;
-        this.near = near;
-    }
-
-    /** The frame of that name after the batch, or null where there is none. */
-    private Frame view(String name) {
-        Frame f = staged.get(name);
-        if (f != null || staged.containsKey(name)) {
-            return f;
-        }
-        Node n = base.get(name);
-        return n == null ? null : n.frame;
-    }
-
-    /** As {@link #view}, for a name a frame refers to: reached through the frames at hand where one has it. */
-    private Frame viewReferred(String name) {
-        Frame f = staged.get(name);
-        if (f != null || staged.containsKey(name)) {
-            return f;
-        }
-        Node n = Node.find(base, name, near);
-        return n == null ? null : n.frame;
     }
 
     List<Problem> validate() {
@@ -87,7 +58,7 @@ final class Validator {
             Frame f = e.getValue();
             String p = f == null ? null : f.parentOrNull();
             if (p != null) {
-                Frame parent = view(p);
+                Frame parent = view.get(p);
                 parents[i] = parent;
                 if (parent == null || parent.isInstance()) {
                     childOf(p, e.getKey());
@@ -111,7 +82,7 @@ final class Validator {
         Node node = base.get(name);
         List<String> kids = childrenInView(name, node);
         if (!kids.isEmpty()) {
-            boolean instances = kids.stream().map(this::view).allMatch(Frame::isInstance);
+            boolean instances = kids.stream().map(view::get).allMatch(Frame::isInstance);
             problems.add(Problem.of(name, "Frame '" + name + "' cannot be removed: it still has "
                     + (instances ? "instances " : "subclasses or instances ") + quoteList(kids) + "."));
         }
@@ -134,7 +105,7 @@ final class Validator {
     boolean settles(Frame f) {
         int before = problems.size();
         String p = f.parentOrNull();
-        Frame parent = p == null ? null : view(p);
+        Frame parent = p == null ? null : view.get(p);
         if (p != null && (parent == null || parent.isInstance())) {
             if (suspects == null) {
                 suspects = new ArrayList<>();
@@ -154,7 +125,7 @@ final class Validator {
     List<Problem> finish(List<Frame> unsettled) {
         if (suspects != null) {
             for (Frame c : suspects) {
-                Frame parent = view(c.parentOrNull());
+                Frame parent = view.get(c.parentOrNull());
                 if (parent == null || parent.isInstance()) {
                     childOf(c.parentOrNull(), c.name());
                 }
@@ -176,7 +147,7 @@ final class Validator {
             for (Map.Entry<String, Frame> e : staged.entrySet()) {
                 if (recheck.contains(e.getKey())) {
                     Frame f = e.getValue();
-                    checkFrame(f, f.parentOrNull() == null ? null : view(f.parentOrNull()));
+                    checkFrame(f, f.parentOrNull() == null ? null : view.get(f.parentOrNull()));
                 }
             }
         }
@@ -209,10 +180,10 @@ final class Validator {
                 return false;
             }
             // The frame's chain is the parent's plus the frame itself: it has a cycle exactly when the parent's has.
-            above = info(parent);
+            above = view.info(parent);
             if (above == null) {
                 problems.add(Problem.of(name, "Frame '" + name + "' is a kind of '" + p
-                        + "', which makes an IS-A cycle: " + cycleText(f) + "."));
+                        + "', which makes an IS-A cycle: " + view.cycleText(f) + "."));
                 return false;
             }
         }
@@ -258,7 +229,7 @@ final class Validator {
             if (r.equals(f.name()) || refs.subList(0, i).contains(r)) {
                 continue;
             }
-            Frame target = viewReferred(r);
+            Frame target = view.referred(r);
             if (target != null && target.provenance() == Provenance.RUNTIME) {
                 problems.add(Problem.of(f.name(), "Frame '" + f.name() + "' is kept on disk but refers to '" + r
                         + "', which exists only at run time; copy the values it needs instead."));
@@ -317,13 +288,13 @@ final class Validator {
         }
         if (!(own.condition() instanceof Condition.Any)) {
             checkPaths(f, own);
-            problems.addAll(ConditionTypes.problems(this::view, f, own));
+            problems.addAll(ConditionTypes.problems(view::get, f, own));
         }
     }
 
     private void checkPaths(Frame f, Slot own) {
         for (Operand o : own.condition().operands()) {
-            if (o instanceof Operand.Path p && Inheritance.slot(this::view, f, p.head()).isEmpty()) {
+            if (o instanceof Operand.Path p && Inheritance.slot(view::get, f, p.head()).isEmpty()) {
                 problems.add(Problem.of(f.name(), own.name(), where(own.name(), f.name()) + " has a condition on '"
                         + p.text() + "', but frame '" + f.name() + "' has no slot '" + p.head() + "'."));
             }
@@ -362,11 +333,11 @@ final class Validator {
     private void checkRefs(String frame, String slot, Value v, String instanceOf) {
         switch (v) {
             case Value.Ref r -> {
-                Frame target = viewReferred(r.frame());
+                Frame target = view.referred(r.frame());
                 if (target == null) {
                     problems.add(Problem.of(frame, slot, where(slot, frame) + " refers to '" + r.frame()
                             + "', which is not defined."));
-                } else if (instanceOf != null && !isA(target, instanceOf)) {
+                } else if (instanceOf != null && !view.isA(target, instanceOf)) {
                     problems.add(Problem.of(frame, slot, where(slot, frame) + " must hold an instance of '"
                             + instanceOf + "', but '" + r.frame() + "' is not one."));
                 }
@@ -380,40 +351,11 @@ final class Validator {
         }
     }
 
-    private boolean isA(Frame f, String ancestor) {
-        if (f.name().equals(ancestor)) {
-            return true;
-        }
-        String p = f.parentOrNull();
-        ClassInfo known = p == null ? null : knownClass(p);
-        if (known != null) {
-            return known.isA(ancestor); // the common case: an instance of a class checked before
-        }
-        Frame parent = p == null ? null : view(p);
-        if (parent == null) {
-            return false;
-        }
-        if (parent.isClass()) {
-            ClassInfo c = info(parent);
-            if (c != null) {
-                return c.isA(ancestor);
-            }
-        }
-        // A parent that is an instance or a chain with a cycle: reported elsewhere; walk, bounded.
-        int steps = 0;
-        for (Frame x = parent; x != null && steps++ < 100_000; x = parentOf(x)) {
-            if (x.name().equals(ancestor)) {
-                return true;
-            }
-        }
-        return false;
-    }
-
     private void requireClass(String frame, String slot, String cls) {
-        if (knownClass(cls) != null) {
+        if (view.knownClass(cls) != null) {
             return;
         }
-        Frame c = view(cls);
+        Frame c = view.get(cls);
         if (c == null) {
             problems.add(Problem.of(frame, slot, where(slot, frame) + " names class '" + cls
                     + "' as its ARGUMENT, which is not defined."));
@@ -423,133 +365,24 @@ final class Validator {
         }
     }
 
-    private void requireFrame(String frame, String target, String relation) {
-        if (view(target) == null) {
-            problems.add(Problem.of(frame, "Frame '" + frame + "' " + relation + " '" + target
-                    + "', which is not defined."));
-        }
-    }
-
     /**
      * What is known of the class named {@code name} in the view, worked out (and remembered, as any check does) when
      * it is not known yet; null when the view has no class of that name or its IS-A chain has a cycle.
      */
     ClassInfo classInfo(String name) {
-        Frame f = view(name);
-        return f == null || !f.isClass() ? null : info(f);
+        return view.classInfo(name);
     }
 
-    /**
-     * What is known already of the class named {@code name} in the view, without looking it up there: an entry of
-     * {@link #classes} is made only for a class of the view whose IS-A chain ends at a root, and stays true while the
-     * map is in use (the knowledge base's own map is cleared by a batch that changes a class). Null when nothing is
-     * known yet; then the caller reads the view.
-     */
-    private ClassInfo knownClass(String name) {
-        ClassInfo c = classes.get(name);
-        return c != null && c.frame.isClass() ? c : null;
-    }
-
-    /**
-     * What is known of frame {@code x}'s IS-A chain, or null when the chain has a cycle. Walks up only to the first
-     * frame already known, so a load walks each chain once, and remembers every frame on the way.
-     */
-    private ClassInfo info(Frame x) {
-        ClassInfo known = classes.get(x.name());
-        if (known != null) {
-            return known;
+    private void requireFrame(String frame, String target, String relation) {
+        if (view.get(target) == null) {
+            problems.add(Problem.of(frame, "Frame '" + frame + "' " + relation + " '" + target
+                    + "', which is not defined."));
         }
-        String p = x.parentOrNull();
-        ClassInfo up = p == null ? null : classes.get(p);
-        if (p == null || up != null) {
-            // The common case in a load: parents come before their children.
-            ClassInfo c = new ClassInfo(x, up);
-            classes.put(x.name(), c);
-            return c;
-        }
-        if (cyclic != null && cyclic.contains(x.name())) {
-            return null;
-        }
-        List<Frame> path = new ArrayList<>(8);
-        int nextCheck = CYCLE_CHECK_STEPS;
-        ClassInfo top = null;
-        for (Frame y = x; y != null; ) {
-            path.add(y);
-            if (path.size() > nextCheck) {
-                if (repeats(path)) {
-                    return cyclic(path);
-                }
-                nextCheck *= 2;
-            }
-            String yp = y.parentOrNull();
-            if (yp == null) {
-                break;
-            }
-            if (cyclic != null && cyclic.contains(yp)) {
-                return cyclic(path);
-            }
-            top = classes.get(yp);
-            if (top != null) {
-                break;
-            }
-            y = view(yp);
-        }
-        for (int i = path.size() - 1; i >= 0; i--) {
-            top = new ClassInfo(path.get(i), top);
-            // A chain that ends at a parent not defined may be completed by a later part of a staged load.
-            if (top.complete) {
-                classes.put(path.get(i).name(), top);
-            }
-        }
-        return top;
-    }
-
-    /** Remembers that every frame of {@code path} leads into an IS-A cycle (a chain never changes in a view). */
-    private ClassInfo cyclic(List<Frame> path) {
-        if (cyclic == null) {
-            cyclic = new HashSet<>();
-        }
-        for (Frame f : path) {
-            cyclic.add(f.name());
-        }
-        return null;
-    }
-
-    private static boolean repeats(List<Frame> path) {
-        Set<String> seen = new HashSet<>();
-        for (Frame f : path) {
-            if (!seen.add(f.name())) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    private Frame parentOf(Frame f) {
-        String p = f.parentOrNull();
-        return p == null ? null : view(p);
     }
 
     /** Names a slot in problem messages. */
     private static String where(String slot, String frame) {
         return "Slot '" + slot + "' of frame '" + frame + "'";
-    }
-
-    private String cycleText(Frame f) {
-        List<String> path = new ArrayList<>();
-        Set<String> seen = new HashSet<>();
-        Frame x = f;
-        while (x != null && seen.add(x.name())) {
-            if (path.size() == CYCLE_TEXT_NAMES) {
-                return String.join(" -> ", path) + " -> and further frames";
-            }
-            path.add(x.name());
-            x = parentOf(x);
-        }
-        if (x != null) {
-            path.add(x.name());
-        }
-        return String.join(" -> ", path);
     }
 
     private List<String> childrenInView(String name, Node node) {
