@@ -4,28 +4,17 @@ import com.fasterxml.jackson.databind.JsonNode;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
-import java.io.BufferedReader;
-import java.io.IOException;
-import java.io.InputStreamReader;
-import java.io.OutputStreamWriter;
-import java.io.Writer;
-import java.nio.charset.StandardCharsets;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
-import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
-import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorService;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.Executors;
-import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicLong;
@@ -46,20 +35,16 @@ public final class SimWorld implements AutoCloseable {
     public static final String PROTOCOL = "kicnp-sim/1";
 
     private final SimOptions options;
-    private final Process process;
-    private final Writer stdin;
+    private final SimProcess process;
     private final SimCodec codec = new SimCodec();
     private final AtomicLong ids = new AtomicLong();
     private final Map<String, CompletableFuture<Optional<JsonNode>>> pending = new ConcurrentHashMap<>();
     private final Map<String, CompletableFuture<JsonNode>> queries = new ConcurrentHashMap<>();
     private final Map<String, SimAction> actions = new ConcurrentHashMap<>();
-    private final List<Consumer<SimEvent>> listeners = new CopyOnWriteArrayList<>();
-    private final ExecutorService events;
+    /** Where events and action updates go, in stream order, off the reader thread. */
+    private final SimEventThread events = new SimEventThread(actions);
     private final CompletableFuture<SimEvent.Hello> hello = new CompletableFuture<>();
-    private final SimStderr stderr = new SimStderr();
     private final Object deathLock = new Object();
-    /** Lines for the simulator's stdin, written by one thread, so that a simulator that reads nothing blocks no caller. */
-    private final BlockingQueue<String> outbox = new LinkedBlockingQueue<>();
     private volatile String deathReason;
     private volatile boolean closing;
     /** When the simulator last wrote a line; the watchdog pings it when it has been quiet while actions run. */
@@ -67,32 +52,16 @@ public final class SimWorld implements AutoCloseable {
     private final ScheduledExecutorService watchdog =
             Executors.newSingleThreadScheduledExecutor(Thread.ofPlatform().daemon().name("sim-watchdog").factory());
     private CompletableFuture<JsonNode> ping = CompletableFuture.completedFuture(null);
-    private Thread reader;
-    private Thread writer;
 
-    private SimWorld(SimOptions options, Process process) {
+    private SimWorld(SimOptions options, SimProcess process) {
         this.options = options;
         this.process = process;
-        this.stdin = new OutputStreamWriter(process.getOutputStream(), StandardCharsets.UTF_8);
-        this.events = Executors.newSingleThreadExecutor(Thread.ofPlatform().daemon().name("sim-events").factory());
     }
 
     /** Starts the simulator and waits for its {@code hello}. */
     public static SimWorld start(SimOptions options) {
         Objects.requireNonNull(options, "options");
-        SimInstallation sim = SimInstallation.locate(options.repoRoot());
-        List<String> cmd = new ArrayList<>(List.of(sim.python().toString(), "-m", "kicnp_sim",
-                "--seed", Long.toString(options.seed()), "--time-scale", Double.toString(options.timeScale())));
-        if (options.manual()) {
-            cmd.add("--manual");
-        }
-        Process process;
-        try {
-            process = new ProcessBuilder(cmd).directory(sim.simDir().toFile()).start();
-        } catch (IOException e) {
-            throw new SimulatorException("Could not start the simulator '" + String.join(" ", cmd) + "': "
-                    + e.getMessage(), e);
-        }
+        SimProcess process = SimProcess.launch(options);
         SimWorld world = new SimWorld(options, process);
         world.startThreads();
         try {
@@ -101,8 +70,7 @@ public final class SimWorld implements AutoCloseable {
             return world;
         } catch (ExecutionException e) {
             if (!(e.getCause() instanceof SimulatorExitedException)) { // alive, but not speaking the protocol
-                world.process.descendants().forEach(ProcessHandle::destroyForcibly);
-                world.process.destroyForcibly();
+                world.process.killTree();
                 world.close();
                 throw new SimulatorException("The simulator did not start: " + e.getCause().getMessage());
             }
@@ -120,9 +88,7 @@ public final class SimWorld implements AutoCloseable {
     }
 
     private void startThreads() {
-        stderr.follow(process.getErrorStream()); // first: a quick death's reason quotes stderr
-        reader = Thread.ofPlatform().daemon().name("sim-stdout").start(this::readEvents);
-        writer = Thread.ofPlatform().daemon().name("sim-stdin").start(this::writeRequests);
+        process.follow(this::heard, this::die, this::alive, () -> closing);
         if (!options.manual()) { // in manual mode nothing runs between steps, and a long step answers late
             long period = Math.max(50, options.requestTimeout().toMillis() / 4);
             try {
@@ -159,8 +125,7 @@ public final class SimWorld implements AutoCloseable {
     /** Adds a listener for every event, called in order on the event thread; it must not block on this world. */
     public AutoCloseable addListener(Consumer<SimEvent> listener) {
         Objects.requireNonNull(listener, "listener");
-        listeners.add(listener);
-        return () -> listeners.remove(listener);
+        return events.addListener(listener);
     }
 
     /**
@@ -250,7 +215,7 @@ public final class SimWorld implements AutoCloseable {
         }
         String time = waited.toMillis() % 1000 == 0 ? waited.toSeconds() + " s" : waited.toMillis() + " ms";
         die("simulator did not answer within " + time + " and was stopped");
-        process.destroyForcibly();
+        process.kill();
     }
 
     /** Manual mode: advances the world by {@code seconds} (stopping early when idle, if asked) and waits. */
@@ -282,7 +247,7 @@ public final class SimWorld implements AutoCloseable {
                 String reason = e instanceof TimeoutException
                         ? "no answer from the simulator within " + options.requestTimeout().toSeconds() + " s"
                         : e.getMessage();
-                post(() -> deliverSafely(action, new ActionUpdate.Failed(Double.NaN, reason)));
+                events.post(() -> SimEventThread.deliverSafely(action, new ActionUpdate.Failed(Double.NaN, reason)));
             }
         });
         try {
@@ -307,28 +272,7 @@ public final class SimWorld implements AutoCloseable {
     /** Queues a request line; the writer thread sends it, and a broken pipe kills the world there. */
     private void send(String line) {
         failIfDead();
-        outbox.add(line);
-    }
-
-    private void writeRequests() {
-        try {
-            while (deathReason == null) {
-                String line = outbox.poll(200, TimeUnit.MILLISECONDS);
-                if (line == null) {
-                    continue;
-                }
-                stdin.write(line);
-                stdin.write('\n');
-                if (outbox.isEmpty()) {
-                    stdin.flush();
-                }
-                LOG.debug("-> {}", line);
-            }
-        } catch (IOException e) {
-            die(reasonAfterBrokenPipe(e));
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        process.send(line);
     }
 
     private void failIfDead() {
@@ -359,18 +303,11 @@ public final class SimWorld implements AutoCloseable {
         }
     }
 
-    private void readEvents() {
-        try (BufferedReader in = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8))) {
-            String line;
-            while ((line = in.readLine()) != null) {
-                lastHeard = System.nanoTime();
-                LOG.trace("<- {}", line);
-                handleLine(line);
-            }
-        } catch (IOException e) {
-            LOG.debug("Simulator stdout closed: {}", e.getMessage());
-        }
-        die(reasonAfterEof());
+    /** On the reader thread: a line from the simulator's stdout. */
+    private void heard(String line) {
+        lastHeard = System.nanoTime();
+        LOG.trace("<- {}", line);
+        handleLine(line);
     }
 
     private void handleLine(String line) {
@@ -403,16 +340,7 @@ public final class SimWorld implements AutoCloseable {
             case SimEvent.State s -> s.id().map(queries::get).ifPresent(q -> q.complete(s.world()));
             default -> { }
         }
-        post(() -> dispatch(event));
-    }
-
-    /** Runs a task on the event thread, or here once that thread is gone (after death). */
-    private void post(Runnable task) {
-        try {
-            events.execute(task);
-        } catch (RejectedExecutionException e) {
-            task.run();
-        }
+        events.post(() -> events.dispatch(event));
     }
 
     private void complete(String id, Optional<JsonNode> result) {
@@ -434,76 +362,6 @@ public final class SimWorld implements AutoCloseable {
         }
     }
 
-    /** On the event thread: the action's update first, then the listeners. */
-    private void dispatch(SimEvent event) {
-        switch (event) {
-            case SimEvent.ActionStarted s -> toAction(s.id(), new ActionUpdate.Started(s.t(), s.args()));
-            case SimEvent.ActionProgress p -> toAction(p.id(), new ActionUpdate.Progress(p.t(), p.fraction(), p.body()));
-            case SimEvent.ActionEnded e -> toAction(e.id(), new ActionUpdate.Ended(e.t(), e.result()));
-            case SimEvent.ActionFailed f -> toAction(f.id(), new ActionUpdate.Failed(f.t(), f.reason()));
-            case SimEvent.Error err -> err.id().ifPresent(id -> toAction(id, new ActionUpdate.Failed(err.t(), err.message())));
-            case SimEvent.Hello h -> { }
-            case SimEvent.Ack a -> { }
-            case SimEvent.Face f -> { }
-            case SimEvent.Bumper b -> { }
-            case SimEvent.Arrival a -> { }
-            case SimEvent.Fall f -> { }
-            case SimEvent.Utterance u -> { }
-            case SimEvent.State s -> { }
-            case SimEvent.Exited x -> { }
-        }
-        for (Consumer<SimEvent> l : listeners) {
-            try {
-                l.accept(event);
-            } catch (RuntimeException e) {
-                LOG.warn("A simulator listener failed on {}: {}", event.getClass().getSimpleName(), e.toString(), e);
-            }
-        }
-    }
-
-    private void toAction(String id, ActionUpdate update) {
-        SimAction a = actions.get(id);
-        if (a != null) {
-            deliverSafely(a, update);
-        }
-    }
-
-    private static void deliverSafely(SimAction action, ActionUpdate update) {
-        try {
-            action.deliver(update);
-        } catch (RuntimeException e) {
-            LOG.warn("The observer of {} failed: {}", action, e.toString(), e);
-        }
-    }
-
-    private String reasonAfterEof() {
-        try {
-            if (process.waitFor(2, TimeUnit.SECONDS)) {
-                return exitReason(process.exitValue());
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-        process.destroyForcibly();
-        return "simulator closed its output and was stopped";
-    }
-
-    private String reasonAfterBrokenPipe(IOException e) {
-        try {
-            if (process.waitFor(1, TimeUnit.SECONDS)) {
-                return exitReason(process.exitValue());
-            }
-        } catch (InterruptedException ie) {
-            Thread.currentThread().interrupt();
-        }
-        return "simulator pipe broke (" + e.getMessage() + ")";
-    }
-
-    private String exitReason(int code) {
-        stderr.drain();
-        return closing && code == 0 ? "simulator was shut down" : stderr.exitReason(code);
-    }
-
     /** Marks the world dead once: fails everything in flight and tells the listeners. */
     private void die(String reason) {
         synchronized (deathLock) {
@@ -518,14 +376,15 @@ public final class SimWorld implements AutoCloseable {
             LOG.error("Simulator died: {}", reason);
         }
         SimulatorExitedException dead = new SimulatorExitedException("The simulator is not running: " + reason + ".");
-        outbox.clear();
+        process.discardQueued();
         watchdog.shutdownNow();
         hello.completeExceptionally(dead);
         pending.values().forEach(f -> f.completeExceptionally(dead));
         queries.values().forEach(f -> f.completeExceptionally(dead));
-        post(() -> {
-            List.copyOf(actions.values()).forEach(a -> deliverSafely(a, new ActionUpdate.Failed(Double.NaN, reason)));
-            dispatch(new SimEvent.Exited(reason));
+        events.post(() -> {
+            List.copyOf(actions.values())
+                    .forEach(a -> SimEventThread.deliverSafely(a, new ActionUpdate.Failed(Double.NaN, reason)));
+            events.dispatch(new SimEvent.Exited(reason));
         });
         events.shutdown();
     }
@@ -542,16 +401,9 @@ public final class SimWorld implements AutoCloseable {
                 Thread.currentThread().interrupt();
             }
         }
+        process.awaitExit();
         try {
-            if (!process.waitFor(3, TimeUnit.SECONDS)) {
-                process.destroyForcibly().waitFor(3, TimeUnit.SECONDS);
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            process.destroyForcibly();
-        }
-        try {
-            reader.join(Duration.ofSeconds(3));
+            process.joinReader(Duration.ofSeconds(3));
             events.awaitTermination(2, TimeUnit.SECONDS);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
