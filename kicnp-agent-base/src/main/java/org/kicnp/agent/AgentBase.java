@@ -2,35 +2,19 @@ package org.kicnp.agent;
 
 import static java.util.Objects.requireNonNull;
 
-import java.io.IOException;
 import java.time.Duration;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
-import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
-import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ThreadLocalRandom;
-import java.util.concurrent.TimeUnit;
-import java.util.concurrent.TimeoutException;
-import java.util.concurrent.atomic.AtomicLong;
-import java.util.function.Supplier;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Value;
 import org.kicnp.protocol.AgentKind;
-import org.kicnp.protocol.ErrorCode;
-import org.kicnp.protocol.FeedbackStage;
 import org.kicnp.protocol.FrameText;
 import org.kicnp.protocol.Message;
 import org.kicnp.protocol.Message.Command;
-import org.kicnp.protocol.MessageCodec;
-import org.kicnp.protocol.ProtocolException;
-import org.slf4j.Logger;
-import org.slf4j.LoggerFactory;
 
 /**
  * The base class of every K-ICNP agent (the paper's "Agent Base Classes"). A subclass overrides what it needs —
@@ -45,16 +29,13 @@ import org.slf4j.LoggerFactory;
  * reader wait: when it is full the oldest relay or change is dropped and counted ({@link #eventsDropped()}).
  */
 public abstract class AgentBase implements AutoCloseable {
-    private static final Logger LOG = LoggerFactory.getLogger(AgentBase.class);
-
     private final AgentOptions options;
-    private final MessageCodec codec = new MessageCodec();
-    private final Map<String, CompletableFuture<Message>> pending = new ConcurrentHashMap<>();
-    private final Map<String, CommandTicket> tickets = new ConcurrentHashMap<>();
+    /** The answers and command feedback this agent awaits, by id; also where request ids come from. */
+    private final PendingRequests pending;
     /** The commands this (robot) agent runs, each through {@link #onCommand} and, on a cancel, {@link #onCancel}. */
     private final CommandRunner commands;
+    /** The classes this agent subscribed to; the supervisor renews them after a reconnect. */
     private final Set<String> subscriptions = ConcurrentHashMap.newKeySet();
-    private final AtomicLong ids = new AtomicLong();
     /**
      * Part of this agent object's command ids (its start time, base 36), so that the commands of two runs of one agent
      * — two {@code kicnp agent command} in a row — never share an id while the first is still in flight at the robot.
@@ -62,21 +43,15 @@ public abstract class AgentBase implements AutoCloseable {
     private final String commandIds = Long.toString(System.currentTimeMillis(), 36);
     /** Relays, changes and life-cycle callbacks, in order; never blocks the reader (the oldest are dropped). */
     private final EventQueue events;
-    private final CountDownLatch firstOutcome = new CountDownLatch(1);
-    private volatile Connection connection;
-    private volatile boolean registered;
-    /** Why the last connection attempt (or connection) failed, for a timeout's message; null: none failed. */
-    private volatile String lastFailure;
-    private volatile boolean closed;
-    private volatile AgentException fatal;
-    /** The error, answering no request, with which the server announced it closes the current connection. */
-    private volatile Message.ErrorReply closing;
-    private volatile Thread supervisor;
+    /** The connection's life: connect, register, heartbeats, read, reconnect. */
+    private final Supervisor supervisor;
 
     protected AgentBase(AgentOptions options) {
         this.options = requireNonNull(options, "options");
+        this.pending = new PendingRequests(options.requestTimeout());
         this.events = new EventQueue(options.name());
         this.commands = new CommandRunner(options.name(), this::onCommand, this::onCancel, this::send);
+        this.supervisor = new Supervisor(this, options, pending, commands, events, subscriptions);
     }
 
     // ---- what a subclass overrides ----
@@ -131,10 +106,7 @@ public abstract class AgentBase implements AutoCloseable {
 
     /** Starts connecting in the background; returns at once. Use {@link #awaitConnected} to wait. */
     public final synchronized void start() {
-        if (supervisor != null) {
-            throw new IllegalStateException("Agent '" + name() + "' was already started.");
-        }
-        supervisor = Thread.ofVirtual().name("agent-" + name()).start(this::supervise);
+        supervisor.start();
     }
 
     /** Starts the agent and waits until it is registered. */
@@ -150,24 +122,7 @@ public abstract class AgentBase implements AutoCloseable {
      * @throws AgentTimeoutException when it is not registered within {@code timeout}
      */
     public final void awaitConnected(Duration timeout) {
-        long deadline = System.nanoTime() + timeout.toNanos();
-        try {
-            firstOutcome.await(timeout.toMillis(), TimeUnit.MILLISECONDS);
-            while (!registered && fatal == null && !closed && System.nanoTime() < deadline) {
-                Thread.sleep(10);
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-        if (fatal != null) {
-            throw fatal;
-        }
-        if (!registered) {
-            String last = lastFailure;
-            throw new AgentTimeoutException("Agent '" + name() + "' was not registered with " + options.host() + ":"
-                    + options.port() + " within " + words(timeout) + (last == null ? "." : "; the last attempt failed: "
-                    + last + (last.endsWith(".") ? "" : ".")));
-        }
+        supervisor.awaitConnected(timeout);
     }
 
     public final String name() {
@@ -175,7 +130,7 @@ public abstract class AgentBase implements AutoCloseable {
     }
 
     /** A timeout as people write it: "15 s", "300 ms". */
-    private static String words(Duration d) {
+    static String words(Duration d) {
         long ms = d.toMillis();
         return ms % 1000 == 0 ? ms / 1000 + " s" : ms + " ms";
     }
@@ -186,7 +141,7 @@ public abstract class AgentBase implements AutoCloseable {
 
     /** Whether the agent is registered right now. */
     public final boolean isConnected() {
-        return registered;
+        return supervisor.isRegistered();
     }
 
     /**
@@ -208,26 +163,13 @@ public abstract class AgentBase implements AutoCloseable {
      * or empty while it runs or is reconnecting.
      */
     public final Optional<AgentException> stopped() {
-        return Optional.ofNullable(fatal);
+        return supervisor.stopped();
     }
 
     @Override public void close() {
-        closed = true;
-        Connection c = connection;
-        if (c != null) {
-            c.close();
-        }
-        Thread t = supervisor;
-        if (t != null) {
-            t.interrupt();
-            try {
-                t.join(Duration.ofSeconds(2));
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }
+        supervisor.close();
         events.close();
-        failPending(() -> new NotConnectedException("Agent '" + name() + "' was closed."));
+        pending.failAll(() -> new NotConnectedException("Agent '" + name() + "' was closed."));
     }
 
     // ---- what an agent can do ----
@@ -362,11 +304,11 @@ public abstract class AgentBase implements AutoCloseable {
     public final CommandTicket command(String robot, String action, Map<String, String> args) {
         Command c = new Command(commandId(), robot, action, args);
         CommandTicket ticket = new CommandTicket(c);
-        tickets.put(c.id(), ticket);
+        pending.track(ticket);
         try {
             request(c);
         } catch (AgentException e) {
-            tickets.remove(c.id());
+            pending.untrack(c.id());
             throw e;
         }
         return ticket;
@@ -395,281 +337,17 @@ public abstract class AgentBase implements AutoCloseable {
 
     // ---- internals ----
 
-    private void supervise() {
-        Duration delay = options.backoffInitial();
-        while (!closed) {
-            AgentException stop = null;
-            try (Connection c = Connection.open(options, codec)) {
-                handshake(c);
-                delay = options.backoffInitial();
-                readLoop(c);
-            } catch (AuthenticationException e) {
-                stop = e;
-                LOG.error("Agent '{}' stops: {}", name(), e.getMessage());
-                return;
-            } catch (IOException | ProtocolException | NotConnectedException e) {
-                if (closed) {
-                    return;
-                }
-                lastFailure = e.getMessage() == null ? e.toString() : e.getMessage();
-                LOG.info("Agent '{}' lost its connection to {}:{} ({}); reconnecting.", name(), options.host(),
-                        options.port(), e.getMessage() == null ? e.toString() : e.getMessage());
-            } catch (RuntimeException e) { // a bug in a subclass (say, in capabilities()) or a server we do not understand
-                stop = e instanceof AgentException a ? a : new AgentException("Agent '" + name() + "' stops: " + e, e);
-                LOG.error("Agent '{}' stops.", name(), e);
-                return;
-            } finally {
-                lost();
-                if (stop != null) { // only now: whoever sees the agent stopped sees it disconnected too
-                    fatal = stop;
-                    firstOutcome.countDown();
-                }
-            }
-            try {
-                long ms = delay.toMillis();
-                Thread.sleep(ms / 2 + ThreadLocalRandom.current().nextLong(ms / 2 + 1)); // "equal jitter"
-            } catch (InterruptedException e) {
-                return;
-            }
-            delay = delay.multipliedBy(2).compareTo(options.backoffMax()) > 0 ? options.backoffMax() : delay.multipliedBy(2);
-        }
-    }
-
-    private void handshake(Connection c) throws IOException {
-        c.send(new Message.Hello("hello", name(), kind(), options.token()));
-        Message auth = awaitDirect(c, "hello");
-        if (auth instanceof Message.AuthResult r && !r.accepted()) {
-            String reason = r.reason().orElse("no reason given");
-            throw new AuthenticationException("Server refused agent '" + name() + "': " + reason
-                    + (reason.endsWith(".") ? "" : "."));
-        }
-        if (!(auth instanceof Message.AuthResult)) {
-            throw new AgentException("Expected auth_result, got " + auth + ".");
-        }
-        c.send(new Message.Register("register", FrameText.toXml(capabilities())));
-        if (awaitDirect(c, "register") instanceof Message.ErrorReply e) {
-            throw new AuthenticationException("Server refused to register agent '" + name() + "': " + e.message());
-        }
-        connection = c;
-        for (String ofClass : subscriptions) {
-            resubscribe(c, ofClass);
-        }
-        registered = true;
-        firstOutcome.countDown();
-        startHeartbeats(c);
-        LOG.info("Agent '{}' registered with {}:{}.", name(), options.host(), options.port());
-        events.callback(this::onConnected);
-    }
-
-    /**
-     * Renews a subscription on a new connection without waiting for the answer (the read loop, which reads it, has
-     * not started yet); a refusal ends the subscription, logged and reported through {@link #onSubscriptionRefused}.
-     */
-    private void resubscribe(Connection c, String ofClass) throws IOException {
-        String id = "resubscribe-" + nextId();
-        CompletableFuture<Message> answer = new CompletableFuture<>();
-        pending.put(id, answer);
-        answer.thenAccept(m -> {
-            if (m instanceof Message.ErrorReply e) {
-                subscriptions.remove(ofClass);
-                LOG.warn("Agent '{}': the server refused to renew its subscription to '{}' after a reconnect ({}): {}",
-                        name(), ofClass, e.code().name().toLowerCase(Locale.ROOT), e.message());
-                RequestRefusedException reason = new RequestRefusedException(e.code(), e.message());
-                events.callback(() -> onSubscriptionRefused(ofClass, reason));
-            }
-        });
-        c.send(new Message.Subscribe(id, ofClass));
-    }
-
-    private Message awaitDirect(Connection c, String id) throws IOException {
-        while (true) {
-            Message m = c.read();
-            switch (m) {
-                case Message.AuthResult r when r.id().equals(id) -> {
-                    return r;
-                }
-                case Message.Ack a when a.id().equals(id) -> {
-                    return a;
-                }
-                case Message.ErrorReply e when e.id().isEmpty() -> handshakeError(e, id);
-                case Message.ErrorReply e when e.id().get().equals(id) -> {
-                    if (id.equals("hello")) {
-                        throw new AuthenticationException("Server refused agent '" + name() + "': " + e.message());
-                    }
-                    return e;
-                }
-                default -> { } // heartbeats before registration
-            }
-        }
-    }
-
-    /**
-     * An error answering no request while the agent says hello or registers. Only {@code not_authenticated} refuses
-     * the agent, which then stops; any other is about this connection (a heartbeat timeout, an overloaded or failing
-     * server): it is logged, and when the server closes the connection over it the agent connects again, as after
-     * any lost connection, rather than stopping for good over something a retry may not meet.
-     *
-     * @throws AuthenticationException on {@code not_authenticated}
-     * @throws NotConnectedException on an error that closes the connection
-     */
-    private void handshakeError(Message.ErrorReply e, String awaiting) {
-        if (e.code() == ErrorCode.NOT_AUTHENTICATED) {
-            throw new AuthenticationException("Server refused agent '" + name() + "': " + e.message());
-        }
-        String code = e.code().name().toLowerCase(Locale.ROOT);
-        LOG.warn("Agent '{}': server says {} while awaiting the answer to its {}: {}", name(), code, awaiting,
-                e.message());
-        if (e.code().closesConnection()) {
-            throw new NotConnectedException("Agent '" + name() + "' was not registered: the server closed the "
-                    + "connection (" + code + "): " + e.message());
-        }
-    }
-
-    private void startHeartbeats(Connection c) {
-        Thread.ofVirtual().name("agent-heartbeat-" + name()).start(() -> {
-            try {
-                while (c.isOpen() && !closed) {
-                    Thread.sleep(options.heartbeatInterval());
-                    c.send(new Message.Heartbeat(System.currentTimeMillis()));
-                }
-            } catch (IOException | InterruptedException e) {
-                // The connection is gone; the read loop notices and reconnects.
-            }
-        });
-    }
-
-    private void readLoop(Connection c) throws IOException {
-        while (!closed) {
-            Message m = c.read();
-            switch (m) {
-                case Message.Command cmd -> commands.command(cmd);
-                case Message.Feedback f -> {
-                    CommandTicket t = f.stage().terminal() ? tickets.remove(f.id()) : tickets.get(f.id());
-                    if (t != null) {
-                        t.received(f);
-                    }
-                }
-                case Message.Relay r -> events.deliver(() -> onRelay(r));
-                case Message.Changed ch -> events.deliver(() -> onChanged(ch));
-                case Message.Heartbeat h -> { }
-                case Message.ErrorReply e when e.code() == ErrorCode.SUPERSEDED ->
-                        throw new AuthenticationException("Agent '" + name() + "' stops: " + e.message());
-                case Message.ErrorReply e when e.id().isEmpty() -> {
-                    LOG.warn("Agent '{}': server says {}: {}", name(), e.code(), e.message());
-                    if (e.code().closesConnection()) {
-                        closing = e;
-                    }
-                }
-                case Message.ErrorReply e -> complete(e.id().get(), e);
-                case Message.Ack a -> complete(a.id(), a);
-                case Message.Frames f -> complete(f.id(), f);
-                case Message.Answer a -> complete(a.id(), a);
-                case Message.Proofs p -> complete(p.id(), p);
-                case Message.Explained x -> complete(x.id(), x);
-                case Message.NotFired x -> complete(x.id(), x);
-                case Message.AuthResult a -> complete(a.id(), a);
-                case Message.Hello h -> LOG.warn("Agent '{}' ignores an unexpected {}.", name(), h);
-                case Message.Register x -> LOG.warn("Agent '{}' ignores an unexpected register.", name());
-                case Message.SensorSignal x -> LOG.warn("Agent '{}' ignores an unexpected sensor signal.", name());
-                case Message.Query x -> LOG.warn("Agent '{}' ignores an unexpected query.", name());
-                case Message.Ask x -> LOG.warn("Agent '{}' ignores an unexpected ask.", name());
-                case Message.Assert x -> LOG.warn("Agent '{}' ignores an unexpected assert.", name());
-                case Message.Destroy x -> LOG.warn("Agent '{}' ignores an unexpected destroy.", name());
-                case Message.Subscribe x -> LOG.warn("Agent '{}' ignores an unexpected subscribe.", name());
-                case Message.Unsubscribe x -> LOG.warn("Agent '{}' ignores an unexpected unsubscribe.", name());
-                case Message.Push x -> LOG.warn("Agent '{}' ignores an unexpected push.", name());
-                case Message.Pull x -> LOG.warn("Agent '{}' ignores an unexpected pull.", name());
-                case Message.Cancel x -> commands.cancel(x);
-                case Message.Prove x -> LOG.warn("Agent '{}' ignores an unexpected prove.", name());
-                case Message.Why x -> LOG.warn("Agent '{}' ignores an unexpected why.", name());
-                case Message.WhyNot x -> LOG.warn("Agent '{}' ignores an unexpected why_not.", name());
-            }
-        }
-    }
-
-    private void complete(String id, Message answer) {
-        CompletableFuture<Message> f = pending.remove(id);
-        if (f != null) {
-            f.complete(answer);
-        }
-    }
-
-    private void lost() {
-        boolean was = registered;
-        registered = false;
-        connection = null;
-        Message.ErrorReply why = closing;
-        closing = null;
-        if (why != null && why.code() == ErrorCode.FRAME_TOO_LARGE) {
-            // The request in flight was too long for the server, which said so and closed: that is its answer.
-            failPending(() -> new RequestRefusedException(why.code(), why.message()));
-        } else {
-            String reason = "Agent '" + name() + "' lost its connection"
-                    + (why == null ? "." : ": the server closed it (" + why.code().name().toLowerCase(Locale.ROOT)
-                    + "): " + why.message());
-            failPending(() -> new NotConnectedException(reason));
-        }
-        // The server sends feedback to the connection that issued a command; a new connection will not hear it.
-        tickets.forEach((id, t) -> t.received(new Message.Feedback(id, t.command().robot(), FeedbackStage.FAILED,
-                Optional.empty(), "the connection to the gateway was lost before command '" + id + "' ended")));
-        tickets.clear();
-        // The server fails the commands this robot runs, too: cancel them, so that the robot stops and its program hears.
-        commands.connectionLost(closed ? "agent '" + name() + "' was closed" : "the connection to the gateway was lost");
-        if (was && !closed) {
-            events.callback(() -> onDisconnected("connection lost"));
-        }
-    }
-
-    private void failPending(Supplier<AgentException> failure) {
-        pending.forEach((id, f) -> f.completeExceptionally(failure.get()));
-        pending.clear();
-    }
-
-    /**
-     * Sends a message that expects no answer.
-     *
-     * @throws NotConnectedException when the agent is not connected, or the connection fails while sending (it is
-     *     then closed, and the agent reconnects)
-     */
+    /** Sends a message that expects no answer; see {@link Supervisor#send}. */
     private void send(Message m) {
-        Connection c = connection;
-        if (c == null) {
-            throw new NotConnectedException("Agent '" + name() + "' is not connected; " + m.getClass().getSimpleName()
-                    + " not sent.");
-        }
-        try {
-            c.send(m);
-        } catch (IOException e) {
-            c.close();
-            throw new NotConnectedException("Agent '" + name() + "' could not send: " + e.getMessage());
-        }
+        supervisor.send(m);
     }
 
     private Message request(Message.Request r) {
-        CompletableFuture<Message> answer = new CompletableFuture<>();
-        pending.put(r.id(), answer);
-        try {
-            send(r);
-            Message m = answer.get(options.requestTimeout().toMillis(), TimeUnit.MILLISECONDS);
-            if (m instanceof Message.ErrorReply e) {
-                throw new RequestRefusedException(e.code(), e.message());
-            }
-            return m;
-        } catch (TimeoutException e) {
-            throw new AgentTimeoutException("The server did not answer " + r.getClass().getSimpleName() + " '" + r.id()
-                    + "' within " + words(options.requestTimeout()) + ".");
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new AgentException("Interrupted while waiting for the answer to '" + r.id() + "'.", e);
-        } catch (ExecutionException e) {
-            throw e.getCause() instanceof AgentException a ? a : new AgentException(e.getCause().getMessage(), e);
-        } finally {
-            pending.remove(r.id());
-        }
+        return pending.request(r, this::send);
     }
 
     private String nextId() {
-        return Long.toString(ids.incrementAndGet());
+        return pending.nextId();
     }
 
     /**
