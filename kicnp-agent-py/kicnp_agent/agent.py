@@ -1,27 +1,20 @@
 """The agent: the Python counterpart of org.kicnp.agent.AgentBase, the paper's "Agent Base Classes"."""
-import functools
 import itertools
 import logging
-import random
 import threading
 import time
 
 from .actions import CommandRunner, CommandTicket
-from .connection import Connection
 from .dispatch import EventQueue, PendingRequests
-from .errors import (AgentError, AgentTimeoutError, AuthenticationError, NotConnectedError, ProtocolError,
-                     RequestRefusedError)
+from .errors import AgentError, AgentTimeoutError, NotConnectedError, ProtocolError, RequestRefusedError
 from .frames import Frame
-from .messages import (Changed, Command, Feedback, NotFired, ProofNode, Reason, Relay, value_from_json,
-                       value_to_json)
+from .messages import Command, Feedback, NotFired, ProofNode, Reason, value_from_json, value_to_json
 from .options import AgentKind, AgentOptions
+from .supervisor import Supervisor, _sentence
 from .wire import MAX_NAME_LENGTH, check_lengths, length
 
 LOG = logging.getLogger("kicnp_agent")
 _MAX_TTL_MS = 86400000
-# Errors after which the server closes the connection (docs/protocol.md, "Error codes").
-_CLOSING = {"frame_too_large", "bad_json", "unsupported_version", "unknown_type", "bad_message", "not_authenticated",
-            "heartbeat_timeout", "overloaded", "superseded", "internal"}
 
 
 class Agent:
@@ -54,11 +47,8 @@ class Agent:
                                      self._send_feedback)
         self._closed = threading.Event()
         self._events = EventQueue(name, self._closed)
-        self._connection = None
-        self._registered = threading.Event()
-        self._fatal = None
-        self._closing_error = None
-        self._last_failure = None
+        # The connection's life: connect, register, heartbeats, read, reconnect (see supervisor.py).
+        self._supervisor = Supervisor(self, self._pending, self._events, self._runner, self._closed, self._ids)
         self._threads = []
 
     # ---- what a program registers or overrides ----
@@ -117,7 +107,7 @@ class Agent:
     @property
     def is_connected(self):
         """Whether the agent is registered right now."""
-        return self._registered.is_set()
+        return self._supervisor.registered.is_set()
 
     @property
     def commands_in_flight(self):
@@ -127,13 +117,13 @@ class Agent:
     @property
     def stopped(self):
         """Why the agent stopped for good (refused, or replaced by a newer connection), or None while it runs."""
-        return self._fatal
+        return self._supervisor.fatal
 
     def start(self):
         """Starts connecting in the background and returns at once; see :meth:`wait_connected`."""
         if self._threads:
             raise RuntimeError("Agent '%s' was already started." % self.name)
-        for name, target in (("agent-" + self.name, self._supervise), ("agent-events-" + self.name, self._events.run)):
+        for name, target in (("agent-" + self.name, self._supervisor.run), ("agent-events-" + self.name, self._events.run)):
             thread = threading.Thread(target=target, name=name, daemon=True)
             self._threads.append(thread)
             thread.start()
@@ -142,16 +132,17 @@ class Agent:
     def wait_connected(self, timeout):
         """Waits until the agent is registered; raises :class:`AuthenticationError` when the server refused it,
         :class:`AgentTimeoutError` (naming the last failure) when it is not registered within ``timeout`` seconds."""
+        supervisor = self._supervisor
         deadline = time.monotonic() + timeout
-        while not self._registered.is_set() and self._fatal is None and not self._closed.is_set():
+        while not supervisor.registered.is_set() and supervisor.fatal is None and not self._closed.is_set():
             remaining = deadline - time.monotonic()
             if remaining <= 0:
                 break
-            self._registered.wait(min(0.05, remaining))
-        if self._fatal is not None:
-            raise self._fatal
-        if not self._registered.is_set():
-            last = self._last_failure
+            supervisor.registered.wait(min(0.05, remaining))
+        if supervisor.fatal is not None:
+            raise supervisor.fatal
+        if not supervisor.registered.is_set():
+            last = supervisor.last_failure
             raise AgentTimeoutError("Agent '%s' was not registered with %s:%d within %g s%s"
                                     % (self.name, self.options.host, self.options.port, timeout,
                                        "." if last is None else "; the last attempt failed: " + _sentence(last)))
@@ -168,8 +159,8 @@ class Agent:
             self.start()
         try:
             while not self._closed.wait(0.5):
-                if self._fatal is not None:
-                    raise self._fatal
+                if self._supervisor.fatal is not None:
+                    raise self._supervisor.fatal
         except KeyboardInterrupt:
             LOG.info("Agent '%s' interrupted; closing.", self.name)
         finally:
@@ -178,7 +169,7 @@ class Agent:
     def close(self):
         """Disconnects for good: commands in flight are cancelled and requests waiting fail with NotConnectedError."""
         self._closed.set()
-        connection = self._connection
+        connection = self._supervisor.connection
         if connection is not None:
             connection.close()
         current = threading.current_thread()
@@ -376,7 +367,7 @@ class Agent:
 
     def _send(self, message):
         """Sends a message that expects no answer; NotConnectedError when there is no connection or it fails."""
-        connection = self._connection
+        connection = self._supervisor.connection
         if connection is None:
             raise NotConnectedError("Agent '%s' is not connected; the %s message was not sent."
                                     % (self.name, message["type"]))
@@ -402,132 +393,6 @@ class Agent:
             raise ProtocolError("The server answered %s with a %s message, not %s." % (what, answer["type"], expected))
         return answer
 
-    def _supervise(self):
-        delay = self.options.backoff_initial
-        while not self._closed.is_set():
-            connection = None
-            fatal = None
-            try:
-                connection = Connection.open(self.options)
-                if self._closed.is_set():  # closed while connecting
-                    return
-                self._handshake(connection)
-                delay = self.options.backoff_initial
-                self._read_loop(connection)
-            except AuthenticationError as e:
-                fatal = (e, None)
-                return
-            except (OSError, ProtocolError) as e:
-                if self._closed.is_set():
-                    return
-                self._last_failure = str(e) or type(e).__name__
-                LOG.info("Agent '%s' lost its connection to %s:%d (%s); reconnecting.", self.name, self.options.host,
-                         self.options.port, self._last_failure)
-            except Exception as e:  # a bug in the program (say, in capabilities()) or a server we do not understand
-                fatal = (AgentError("Agent '%s' failed: %s" % (self.name, _sentence("%s: %s" % (type(e).__name__, e)))),
-                         e)
-                return
-            finally:
-                if connection is not None:
-                    connection.close()
-                self._lost()
-                if fatal is not None:  # only now: whoever sees `stopped` set sees the agent disconnected too
-                    self._stop(*fatal)
-            if self._closed.wait(delay / 2 + random.uniform(0, delay / 2)):  # "equal jitter"
-                return
-            delay = min(delay * 2, self.options.backoff_max)
-
-    def _stop(self, error, cause=None):
-        self._fatal = error
-        LOG.error("%s The agent stops.", error, exc_info=cause)
-
-    def _handshake(self, connection):
-        connection.send({"type": "hello", "id": "hello", "agent": self.name, "kind": self.kind.value,
-                         "token": self.options.token})
-        auth = self._await_direct(connection, "hello")
-        if auth["type"] == "error" or not auth["accepted"]:
-            reason = auth.get("message") or auth.get("reason") or "no reason given"
-            raise AuthenticationError("The server refused agent '%s' (kind %s): %s"
-                                      % (self.name, self.kind.value, _sentence(reason)))
-        connection.send({"type": "register", "id": "register", "capabilities": self.capabilities()})
-        registered = self._await_direct(connection, "register")
-        if registered["type"] == "error":
-            raise AuthenticationError("The server refused to register agent '%s' (%s): %s"
-                                      % (self.name, registered["code"], _sentence(registered["message"])))
-        self._connection = connection
-        with self._lock:
-            subscriptions = list(self._subscriptions)
-        for of_class in subscriptions:
-            connection.send({"type": "subscribe", "id": "resubscribe-%d" % next(self._ids), "ofClass": of_class})
-        self._registered.set()
-        self._start_heartbeats(connection)
-        LOG.info("Agent '%s' registered with %s:%d.", self.name, self.options.host, self.options.port)
-        self._events.put(self.on_connected)
-
-    def _await_direct(self, connection, request_id):
-        while True:
-            message = connection.read()
-            if message["type"] in ("auth_result", "ack") and message["id"] == request_id:
-                return message
-            if message["type"] == "error" and message.get("id", request_id) in (request_id, ""):
-                return message
-            # heartbeats may come before registration
-
-    def _start_heartbeats(self, connection):
-        interval = self.options.heartbeat_interval
-
-        def beat():
-            while connection.is_open and not self._closed.is_set():
-                quiet = time.monotonic() - connection.last_sent
-                if self._closed.wait(max(0.0, interval - quiet)):
-                    return
-                if connection.is_open and time.monotonic() - connection.last_sent >= interval:
-                    try:
-                        connection.send({"type": "heartbeat", "time": int(time.time() * 1000)})
-                    except OSError:
-                        return  # the connection is gone; the read loop notices and reconnects
-
-        threading.Thread(target=beat, name="agent-heartbeat-" + self.name, daemon=True).start()
-
-    def _read_loop(self, connection):
-        while not self._closed.is_set():
-            m = connection.read()
-            kind = m["type"]
-            if kind == "command":
-                self._runner.command(Command(m["id"], m["robot"], m["action"], dict(m["args"])))
-            elif kind == "cancel":
-                self._runner.cancel(m["command"], m["reason"])
-            elif kind == "feedback":
-                self._feedback(Feedback(m["id"], m["robot"], m["stage"], m["detail"], m.get("progress")))
-            elif kind == "relay":
-                relay = Relay(m["id"], m["from"], m["subject"], m["body"], m.get("toAgent"), m.get("toKind"))
-                self._events.put(functools.partial(self.on_relay, relay))
-            elif kind == "changed":
-                values = m.get("values")
-                change = Changed(m["ofClass"], m["change"], m["name"], m.get("frame"),
-                                 None if values is None else value_from_json(values))
-                self._events.put(functools.partial(self._changed, change))
-            elif kind == "error":
-                self._error(m)
-            elif kind != "heartbeat":
-                self._complete(m)
-
-    def _error(self, m):
-        if m["code"] == "superseded":
-            raise AuthenticationError("Agent '%s' was replaced by a newer connection under its name: %s"
-                                      % (self.name, _sentence(m["message"])))
-        if m.get("id"):
-            self._complete(m)
-            return
-        LOG.warning("Agent '%s': the server says %s: %s", self.name, m["code"], m["message"])
-        if m["code"] in _CLOSING:
-            self._closing_error = m
-
-    def _complete(self, answer):
-        if not self._pending.answer(answer) and answer["type"] == "error":
-            LOG.warning("Agent '%s': request '%s' was refused (%s): %s", self.name, answer["id"], answer["code"],
-                        answer["message"])
-
     def _feedback(self, feedback):
         with self._lock:
             ticket = self._tickets.pop(feedback.id, None) if feedback.terminal else self._tickets.get(feedback.id)
@@ -539,35 +404,18 @@ class Agent:
             callback = self._callbacks.get(change.of_class)
         (callback or self.on_changed)(change)
 
-    def _lost(self):
-        was = self._registered.is_set()
-        self._registered.clear()
-        self._connection = None
-        why, self._closing_error = self._closing_error, None
-        if self._closed.is_set():
-            self._pending.fail_all(NotConnectedError("Agent '%s' was closed." % self.name))
-        elif why is not None and why["code"] == "frame_too_large":
-            # The request in flight was too long for the server, which said so and closed: that is its answer.
-            self._pending.fail_all(RequestRefusedError(why["code"], why["message"]))
-        else:
-            self._pending.fail_all(NotConnectedError(
-                "Agent '%s' lost its connection%s" % (self.name, "." if why is None else ": the server closed it (%s): %s"
-                                                       % (why["code"], _sentence(why["message"])))))
+    def _subscribed(self):
+        """The classes subscribed to, for the supervisor to renew on a new connection."""
+        with self._lock:
+            return list(self._subscriptions)
+
+    def _commands_lost(self):
+        """The connection is lost: the server sends feedback to the connection that sent a command, so each fails."""
         with self._lock:
             tickets, self._tickets = self._tickets, {}
-        for command_id, ticket in tickets.items():  # the server sends feedback to the connection that sent a command
+        for command_id, ticket in tickets.items():
             ticket._received(Feedback(command_id, ticket.command.robot, "failed",
                                       "the connection to the gateway was lost before command '%s' ended" % command_id))
-        self._runner.connection_lost("agent '%s' was closed" % self.name if self._closed.is_set()
-                                     else "the connection to the gateway was lost")
-        if was and not self._closed.is_set():
-            self._events.put(lambda: self.on_disconnected("connection lost"))
-
-
-def _sentence(text):
-    """Text as the end of a sentence: with a full stop, unless it has one."""
-    text = text.strip()
-    return text if text.endswith((".", "!", "?")) else text + "."
 
 
 def _base36(number):
