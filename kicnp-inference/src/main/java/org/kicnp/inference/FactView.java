@@ -31,7 +31,10 @@ final class FactView implements Conditions.Reader {
         long stamp;
         /** The fact's memberships of alpha memories (null: none). */
         List<AlphaMemory.Entry> entries;
-        /** A short list, turned into a hash set when it grows past {@value #SMALL} (removal must stay cheap). */
+        /**
+         * A short list, turned into a hash set when it grows past {@value #SMALL} (removal must stay cheap); null or
+         * an empty list when the fact waits in none (the agenda keeps an emptied list for the next).
+         */
         Collection<Activation> activations;
         /** The bindings with this fact that have fired (refraction); a short list or, past {@value #SMALL}, a set. */
         Collection<BindingKey> fired;
@@ -111,6 +114,15 @@ final class FactView implements Conditions.Reader {
             if (!dependents.contains(instance)) {
                 dependents.add(instance);
             }
+        }
+
+        /**
+         * As {@link #dependent}, for an instance a firing has just named: its name comes from the engine's counter and
+         * was never used, and a binding holds each fact once, so the look-up for it in the list is skipped.
+         */
+        void newDependent(String instance) {
+            dependents = grown(dependents);
+            dependents.add(instance);
         }
 
         void fired(BindingKey k) {

@@ -439,7 +439,8 @@ final class ForwardChainer {
                 Frame instance = Frame.instance(name, r.frame(), Provenance.RUNTIME, slots);
                 if (full.size() == refs.length) {
                     // Its slots hold the required slots' instances in order: the facts of refs, resolved already.
-                    record.links = refs.clone();
+                    // The activation's array is shared, not copied: the activation has left the agenda for good.
+                    record.links = refs;
                     record.linksOf = instance;
                 }
                 kb.add(instance, framesOf(refs));
