@@ -154,11 +154,9 @@ final class AlphaMemory {
 
     /** Files a fact under a key: a short list, a set once the bucket grows past {@link #SMALL}. */
     private static void file(Map<Value, Collection<FactView.Fact>> index, Value key, FactView.Fact fact) {
-        Collection<FactView.Fact> bucket = index.get(key);
-        if (bucket == null) {
-            bucket = new ArrayList<>(2);
-            index.put(key, bucket);
-        } else if (bucket.size() == SMALL && bucket instanceof ArrayList) {
+        // One hash look-up whether the key is new or not (a get, then a put for a new key, hashed it twice).
+        Collection<FactView.Fact> bucket = index.computeIfAbsent(key, k -> new ArrayList<>(2));
+        if (bucket.size() == SMALL && bucket instanceof ArrayList) {
             bucket = new LinkedHashSet<>(bucket);
             index.put(key, bucket);
         }

@@ -112,8 +112,9 @@ final class ForwardChainer {
     /** Applies one committed batch to the network, the agenda and the truth maintenance records. */
     void process(ChangeSet cs) {
         List<String> classesRemoved = new ArrayList<>(0);
-        for (FrameEvent e : cs.events()) {
-            switch (e) {
+        List<FrameEvent> events = cs.events();
+        for (int i = 0; i < events.size(); i++) { // by index: an iterator per change set (per firing) is garbage
+            switch (events.get(i)) {
                 case FrameEvent.Added a -> {
                     if (a.frame().isInstance()) {
                         factAdded(a.frame());

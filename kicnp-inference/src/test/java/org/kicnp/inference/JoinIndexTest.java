@@ -46,6 +46,20 @@ class JoinIndexTest {
     }
 
     @Test
+    void join_whenMoreFactsShareAKeyThanAShortBucketHolds_findsEveryOneOfThem() {
+        Fixture f = floats();
+        InferenceEngine e = f.engine();
+        for (int i = 0; i < 40; i++) { // past the 16 of a short bucket, which then becomes a set
+            reading(f, "a" + i, "A", 7.0);
+        }
+        assertThat(e.runToQuiescence()).isZero();
+
+        reading(f, "b1", "B", 7.0);
+
+        assertThat(e.runToQuiescence()).isEqualTo(40);
+    }
+
+    @Test
     void join_whenNegativeZeroMeetsZero_holds_fromEitherSide() {
         Fixture f = floats();
         InferenceEngine e = f.engine();
