@@ -1,6 +1,5 @@
 package org.kicnp.inference;
 
-import java.util.ArrayList;
 import java.util.Collection;
 import java.util.Comparator;
 import java.util.List;
@@ -117,17 +116,11 @@ final class Agenda {
         return queue.inOrder();
     }
 
-    /**
-     * Takes an activation out of its facts' lists. A short list left empty is kept for the fact's next activation (a
-     * fact takes part in a few in turn: a stimulus in a pair, then in what is made from that pair); a set, grown for
-     * a fact in many, is dropped. A fact's lists go when it leaves ({@link #withdrawFact}).
-     */
     private void forget(Activation a) {
         for (FactView.Fact f : a.refs()) {
-            Collection<Activation> as = f.activations;
-            if (as != null) {
-                as.remove(a);
-                if (as.isEmpty() && !(as instanceof ArrayList)) {
+            if (f.activations != null) {
+                f.activations.remove(a);
+                if (f.activations.isEmpty()) {
                     f.activations = null;
                 }
             }

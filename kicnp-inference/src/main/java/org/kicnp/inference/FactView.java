@@ -31,10 +31,7 @@ final class FactView implements Conditions.Reader {
         long stamp;
         /** The fact's memberships of alpha memories (null: none). */
         List<AlphaMemory.Entry> entries;
-        /**
-         * A short list, turned into a hash set when it grows past {@value #SMALL} (removal must stay cheap); null or
-         * an empty list when the fact waits in none (the agenda keeps an emptied list for the next).
-         */
+        /** A short list, turned into a hash set when it grows past {@value #SMALL} (removal must stay cheap). */
         Collection<Activation> activations;
         /** The bindings with this fact that have fired (refraction); a short list or, past {@value #SMALL}, a set. */
         Collection<BindingKey> fired;
