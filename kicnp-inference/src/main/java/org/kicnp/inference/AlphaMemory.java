@@ -38,16 +38,44 @@ final class AlphaMemory {
     JoinPlan plan;
     int position = -1;
 
-    /** One fact's membership: where it sits, and the index keys it is filed under (null where a path reached nothing). */
+    /**
+     * One fact's membership: where it sits, and the index keys it is filed under (null where a path reached nothing).
+     * The key under the first index is a field: most memories have one index (one equality join reads the slot), and
+     * an array per membership for it was an object per fact and memory.
+     */
     static final class Entry {
         final AlphaMemory memory;
-        Value[] keys;
+        private Value firstKey;
+        /** The keys under the other indexes, by index number less one; null until one is set. */
+        private Value[] otherKeys;
         int at;
 
-        private Entry(AlphaMemory memory, Value[] keys, int at) {
+        private Entry(AlphaMemory memory, int at) {
             this.memory = memory;
-            this.keys = keys;
             this.at = at;
+        }
+
+        /** The key it is filed under in index {@code index}; null: none. */
+        Value key(int index) {
+            if (index == 0) {
+                return firstKey;
+            }
+            return otherKeys == null ? null : otherKeys[index - 1];
+        }
+
+        /** Sets the key of index {@code index} of the {@code count} the memory has. */
+        void key(int index, Value key, int count) {
+            if (index == 0) {
+                firstKey = key;
+                return;
+            }
+            if (otherKeys == null) {
+                if (key == null) {
+                    return;
+                }
+                otherKeys = new Value[count - 1];
+            }
+            otherKeys[index - 1] = key;
         }
     }
 
@@ -102,24 +130,21 @@ final class AlphaMemory {
         if (fact.entryIn(this) != null) {
             return null;
         }
-        Value[] keys = null;
-        for (int i = 0; i < paths.size(); i++) {
+        if (end == items.length) {
+            makeRoom();
+        }
+        Entry e = new Entry(this, end);
+        for (int i = 0, n = paths.size(); i < n; i++) {
             Value key = pathValue.apply(fact, paths.get(i));
             if (key != null) {
                 Value k = Values.key(key);
                 file(indexes.get(i), k, fact);
-                if (keys == null) {
-                    keys = new Value[paths.size()];
-                }
-                keys[i] = k;
+                e.key(i, k, n);
             }
         }
-        if (end == items.length) {
-            makeRoom();
-        }
-        items[end] = fact;
+        items[end++] = fact;
         size++;
-        return new Entry(this, keys, end++);
+        return e;
     }
 
     /**
@@ -132,7 +157,7 @@ final class AlphaMemory {
             return;
         }
         for (int i = 0; i < paths.size(); i++) {
-            Value was = e.keys == null ? null : e.keys[i];
+            Value was = e.key(i);
             Value reached = pathValue.apply(fact, paths.get(i));
             Value now = reached == null ? null : Values.key(reached);
             if (java.util.Objects.equals(was, now)) {
@@ -145,20 +170,15 @@ final class AlphaMemory {
             if (now != null) {
                 file(index, now, fact);
             }
-            if (e.keys == null) {
-                e.keys = new Value[paths.size()];
-            }
-            e.keys[i] = now;
+            e.key(i, now, paths.size());
         }
     }
 
     /** Files a fact under a key: a short list, a set once the bucket grows past {@link #SMALL}. */
     private static void file(Map<Value, Collection<FactView.Fact>> index, Value key, FactView.Fact fact) {
-        Collection<FactView.Fact> bucket = index.get(key);
-        if (bucket == null) {
-            bucket = new ArrayList<>(2);
-            index.put(key, bucket);
-        } else if (bucket.size() == SMALL && bucket instanceof ArrayList) {
+        // One hash look-up whether the key is new or not (a get, then a put for a new key, hashed it twice).
+        Collection<FactView.Fact> bucket = index.computeIfAbsent(key, k -> new ArrayList<>(2));
+        if (bucket.size() == SMALL && bucket instanceof ArrayList) {
             bucket = new LinkedHashSet<>(bucket);
             index.put(key, bucket);
         }
@@ -184,11 +204,10 @@ final class AlphaMemory {
         }
         items[e.at] = null;
         size--;
-        if (e.keys != null) {
-            for (int i = 0; i < e.keys.length; i++) {
-                if (e.keys[i] != null) {
-                    unfile(indexes.get(i), e.keys[i], fact);
-                }
+        for (int i = 0, n = paths.size(); i < n; i++) {
+            Value key = e.key(i);
+            if (key != null) {
+                unfile(indexes.get(i), key, fact);
             }
         }
         if (size == 0) {

@@ -1,48 +1,86 @@
 package org.kicnp.inference;
 
+import java.util.AbstractList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
+import java.util.RandomAccess;
 import org.kicnp.core.Value;
 
 /**
  * The condition part of an explanation: for each bound slot of a firing, its condition and the value it was tested
  * on (the candidate's value along the condition's left path, or the instance itself), taken when the frame fires so
  * that a later change does not rewrite history.
+ *
+ * <p>What a firing takes is the values themselves ({@link Value}s are immutable, and an instance's name is a
+ * string); the {@link Derivation.CheckedCondition} records and the values' texts are made when the list is read. Every
+ * firing takes its conditions, and few are ever explained: a record, a list and a text per slot and firing was most
+ * of the cost.
  */
-final class CheckedConditions {
-    private CheckedConditions() {
+final class CheckedConditions extends AbstractList<Derivation.CheckedCondition> implements RandomAccess {
+    private final List<SlotPattern> patterns;
+    /** Which of {@link #patterns} were checked, by index; null: all of them, in order. */
+    private final int[] which;
+    /** The value each checked pattern was tested on: a {@link Value}, or an instance's name. */
+    private final Object[] tested;
+
+    private CheckedConditions(List<SlotPattern> patterns, int[] which, Object[] tested) {
+        this.patterns = patterns;
+        this.which = which;
+        this.tested = tested;
     }
 
     /**
      * The checked conditions of a firing of {@code r} with {@code binding} (slot → instance); {@code refs} are the
      * records of the facts bound to the required slots, in the rule's order, so their values are read without a
-     * look-up by name.
+     * look-up by name. An immutable list.
      */
     static List<Derivation.CheckedCondition> of(Rule r, Map<String, String> binding, FactView.Fact[] refs,
             FactView facts, Conditions conditions) {
         List<SlotPattern> patterns = r.patterns(); // the required slots in order, then the optional ones
-        Derivation.CheckedCondition[] out = new Derivation.CheckedCondition[patterns.size()];
+        int n = patterns.size();
+        Object[] tested = new Object[n];
+        int[] which = null;
         int count = 0;
-        for (int i = 0, n = patterns.size(); i < n; i++) {
+        for (int i = 0; i < n; i++) {
             SlotPattern p = patterns.get(i);
             FactView.Fact record = i < refs.length ? refs[i] : null; // refs follow the required slots' order
             String fact = record != null ? record.name : binding.get(p.slot());
             if (fact == null) {
+                if (which == null) { // an optional slot left unbound: from here on, say which were checked
+                    which = new int[n];
+                    for (int j = 0; j < count; j++) {
+                        which[j] = j;
+                    }
+                }
                 continue;
             }
             List<String> path = p.condition().testedPath().orElse(null);
-            String value = fact;
+            Object value = fact;
             if (path != null) {
                 Value v = record != null ? facts.followOrNull(record, path, conditions)
                         : conditions.follow(Value.ref(fact), path).orElse(null);
                 if (v != null) {
-                    value = v.text();
+                    value = v;
                 }
             }
-            out[count++] = new Derivation.CheckedCondition(p.slot(), p.conditionText(), value);
+            if (which != null) {
+                which[count] = i;
+            }
+            tested[count++] = value;
         }
-        return count == out.length ? List.of(out) : List.of(Arrays.copyOf(out, count));
+        return which == null ? new CheckedConditions(patterns, null, tested)
+                : new CheckedConditions(patterns, Arrays.copyOf(which, count), Arrays.copyOf(tested, count));
     }
 
+    @Override public Derivation.CheckedCondition get(int index) {
+        Object value = tested[index]; // throws for an index out of range, as a list does
+        SlotPattern p = patterns.get(which == null ? index : which[index]);
+        return new Derivation.CheckedCondition(p.slot(), p.conditionText(),
+                value instanceof Value v ? v.text() : (String) value);
+    }
+
+    @Override public int size() {
+        return tested.length;
+    }
 }

@@ -19,7 +19,8 @@ public record Derivation(String instance, String frame, Map<String, String> bind
         requireNonNull(instance, "instance");
         requireNonNull(frame, "frame");
         binding = Binding.copyOf(binding);
-        conditions = List.copyOf(conditions);
+        // A firing's own list is immutable already, and copying it would make every record it defers at once.
+        conditions = conditions instanceof CheckedConditions ? conditions : List.copyOf(conditions);
         requireNonNull(trigger, "trigger");
         requireNonNull(createdBy, "createdBy");
     }

@@ -113,6 +113,15 @@ final class FactView implements Conditions.Reader {
             }
         }
 
+        /**
+         * As {@link #dependent}, for an instance a firing has just named: its name comes from the engine's counter and
+         * was never used, and a binding holds each fact once, so the look-up for it in the list is skipped.
+         */
+        void newDependent(String instance) {
+            dependents = grown(dependents);
+            dependents.add(instance);
+        }
+
         void fired(BindingKey k) {
             fired = grown(fired);
             if (!fired.contains(k)) {

@@ -112,8 +112,8 @@ final class ForwardChainer {
     /** Applies one committed batch to the network, the agenda and the truth maintenance records. */
     void process(ChangeSet cs) {
         List<String> classesRemoved = new ArrayList<>(0);
-        for (FrameEvent e : cs.events()) {
-            switch (e) {
+        for (int i = 0; i < cs.events().size(); i++) { // by index: an iterator per change set (per firing) is garbage
+            switch (cs.events().get(i)) {
                 case FrameEvent.Added a -> {
                     if (a.frame().isInstance()) {
                         factAdded(a.frame());
@@ -438,8 +438,8 @@ final class ForwardChainer {
             try {
                 Frame instance = Frame.instance(name, r.frame(), Provenance.RUNTIME, slots);
                 if (full.size() == refs.length) {
-                    // Its slots hold the required slots' instances in order: the facts of refs, resolved already.
-                    record.links = refs.clone();
+                    // Its slots hold the required slots' facts in order: refs (shared: the activation is done with).
+                    record.links = refs;
                     record.linksOf = instance;
                 }
                 kb.add(instance, framesOf(refs));

@@ -27,6 +27,11 @@ final class JoinPlan {
     final int[][] joins;
     /** For each position, the lookups that can find its partners (tried in order). */
     final Lookup[][] lookups;
+    /**
+     * The binding that joining a new fact builds, made once for the rule rather than once per fact: the match network
+     * is owned by the engine thread, binds positions as it goes, and leaves every position unbound when it is done.
+     */
+    final JoinBinding binding;
 
     /**
      * A hash-index look-up for the partners of one slot: from the fact bound at {@code from}, follow {@code path}
@@ -48,6 +53,7 @@ final class JoinPlan {
         order = new int[n][];
         joins = new int[n][];
         lookups = new Lookup[n][];
+        binding = new JoinBinding(slots);
         for (int i = 0; i < n; i++) {
             int[] o = new int[n - 1];
             for (int j = 0, k = 0; j < n; j++) {

@@ -199,7 +199,7 @@ final class MatchNetwork {
         }
         for (AlphaMemory m : entering(className)) {
             SlotPattern p = m.pattern();
-            boolean fits = !p.alpha() || conditions.holds(p.condition(), Value.ref(f.name), m.rule().frame(), Map.of());
+            boolean fits = !p.alpha() || conditions.holds(p.condition(), f.ref(), m.rule().frame(), Map.of());
             AlphaMemory.Entry e = f.entryIn(m);
             if (e != null && !fits) {
                 m.remove(e);
@@ -244,7 +244,7 @@ final class MatchNetwork {
     /** Enters the fact into the memory when its constant conditions hold; false when not, or when it is in already. */
     private boolean offer(AlphaMemory m, FactView.Fact fact) {
         SlotPattern p = m.pattern();
-        if (p.alpha() && !conditions.holds(p.condition(), Value.ref(fact.name), m.rule().frame(), Map.of())) {
+        if (p.alpha() && !conditions.holds(p.condition(), fact.ref(), m.rule().frame(), Map.of())) {
             return false;
         }
         AlphaMemory.Entry e = m.add(fact, pathValue);
@@ -262,10 +262,14 @@ final class MatchNetwork {
      */
     private List<Match> complete(AlphaMemory start, FactView.Fact fact, List<Match> out) {
         JoinPlan plan = start.plan;
-        JoinBinding b = new JoinBinding(plan.slots);
+        JoinBinding b = plan.binding; // joining reads facts and conditions only: it never joins again inside
         int at = start.position;
         b.refs[at] = fact;
-        return joinsHold(plan, at, -1, b) ? extend(plan, b, plan.order[at], 0, out) : out;
+        try {
+            return joinsHold(plan, at, -1, b) ? extend(plan, b, plan.order[at], 0, out) : out;
+        } finally {
+            Arrays.fill(b.refs, null); // also after a condition that threw: the next join starts unbound
+        }
     }
 
     /** Extends a partial binding over the positions {@code todo} from its {@code k}th; answers as {@link #complete}. */
@@ -327,7 +331,7 @@ final class MatchNetwork {
                     || !allBound(js, b)) {
                 continue;
             }
-            if (!conditions.holds(required.get(i).condition(), Value.ref(b.refs[i].name), plan.rule.frame(), b)) {
+            if (!conditions.holds(required.get(i).condition(), b.refs[i].ref(), plan.rule.frame(), b)) {
                 return false;
             }
         }

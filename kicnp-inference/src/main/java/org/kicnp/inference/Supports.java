@@ -63,7 +63,9 @@ final class Supports {
     /**
      * As {@link #record(Derivation, Optional)}, with the rule that fired (null: none, a script made the instance) and
      * the records of (some of) the supporting instances already at hand in {@code known}; the others are looked up.
-     * Returns the new instance's record.
+     * A firing's instance has a name never used before (the engine's counter) and its binding holds each instance
+     * once, so it is added to each support's dependents without looking for it there first. Returns the new
+     * instance's record.
      */
     FactView.Fact record(Derivation d, Rule rule, FactView.Fact[] known) {
         FactView.Fact self = facts.touch(d.instance());
@@ -73,7 +75,11 @@ final class Supports {
             String support = b.factAt(i);
             // A firing's known records are its required slots' facts, in the binding's order: usually no search.
             FactView.Fact r = i < known.length && known[i].name == support ? known[i] : recordOf(support, known);
-            r.dependent(d.instance());
+            if (rule != null) {
+                r.newDependent(d.instance());
+            } else {
+                r.dependent(d.instance());
+            }
         }
         // Plain tests rather than ifPresent with lambdas: each would capture d (and known), an object per firing.
         if (d.createdBy().isPresent()) {

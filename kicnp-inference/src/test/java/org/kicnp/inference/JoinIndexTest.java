@@ -46,6 +46,45 @@ class JoinIndexTest {
     }
 
     @Test
+    void join_whenMoreFactsShareAKeyThanAShortBucketHolds_findsEveryOneOfThem() {
+        Fixture f = floats();
+        InferenceEngine e = f.engine();
+        for (int i = 0; i < 40; i++) { // past the 16 of a short bucket, which then becomes a set
+            reading(f, "a" + i, "A", 7.0);
+        }
+        assertThat(e.runToQuiescence()).isZero();
+
+        reading(f, "b1", "B", 7.0);
+
+        assertThat(e.runToQuiescence()).isEqualTo(40);
+    }
+
+    @Test
+    void join_whenOneSlotIsReadByTwoEqualityJoins_filesEachFactUnderBothKeys_andTakesItOutOfBoth() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("A").slot(Slot.builder("x", DataType.INTEGER).build())
+                .slot(Slot.builder("y", DataType.INTEGER).build()).build());
+        f.kb.add(Frame.classFrame("B").slot(Slot.builder("x", DataType.INTEGER).build()).build());
+        f.kb.add(Frame.classFrame("C").slot(Slot.builder("y", DataType.INTEGER).build()).build());
+        f.kb.add(Frame.classFrame("R").slot(Fixture.inst("mA", "A")).slot(Fixture.inst("mB", "B", ".x == mA.x"))
+                .slot(Fixture.inst("mC", "C", ".y == mA.y")).build()); // mA's memory: an index on x, one on y
+        InferenceEngine e = f.engine();
+        f.assertFact("a1", "A", "x", 1, "y", 5);
+        f.assertFact("b1", "B", "x", 1);
+        assertThat(e.runToQuiescence()).isZero();
+        f.kb.remove("a1");
+        assertThat(e.runToQuiescence()).isZero();
+
+        f.assertFact("c1", "C", "y", 5); // finds mA's partners under y = 5: a1 has left that index too
+
+        assertThat(e.runToQuiescence()).isZero();
+        f.assertFact("a2", "A", "x", 1, "y", 5);
+        assertThat(e.runToQuiescence()).isEqualTo(1);
+        assertThat(f.instancesOf("R")).singleElement()
+                .satisfies(i -> assertThat(f.kb.value(i, "mA")).contains(Value.ref("a2")));
+    }
+
+    @Test
     void join_whenNegativeZeroMeetsZero_holds_fromEitherSide() {
         Fixture f = floats();
         InferenceEngine e = f.engine();

@@ -1,0 +1,123 @@
+package org.kicnp.inference;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+import org.junit.jupiter.api.Test;
+import org.kicnp.core.Condition;
+import org.kicnp.core.ConditionParser;
+import org.kicnp.core.DataType;
+import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Slot;
+
+/**
+ * What a firing leaves behind, kept in the lean forms the engine uses per firing: the checked conditions (values
+ * taken at firing, texts made when read) and the supports' lists of dependents (a firing's new instance added without
+ * a search); and the facts' activation lists, which a taken activation leaves.
+ */
+class FiringRecordsTest {
+
+    private static Rule rule(String frame, String... slots) {
+        List<SlotPattern> required = new java.util.ArrayList<>();
+        for (int i = 0; i < slots.length; i++) {
+            required.add(new SlotPattern(i, slots[i], "C", Condition.ANY, "COND_ANY", true, true, false, false,
+                    Set.of(), Optional.empty()));
+        }
+        return Rule.of(frame, 0, 1, 0, required, List.of(), Optional.empty());
+    }
+
+    @Test
+    void checkedConditions_withAnOptionalSlotLeftEmptyBeforeABoundOne_nameEachBoundSlotWithItsConditionAndValue() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Camera", null).cls("Mic", null);
+        f.kb.add(Frame.classFrame("Watch").slot(Fixture.inst("mUser", "User"))
+                .slot(Slot.builder("mCam", DataType.INSTANCE).argument("Camera").build())
+                .slot(Slot.builder("mMic", DataType.INSTANCE).argument("Mic")
+                        .condition(ConditionParser.parse(".level > 3")).build()).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("mic", "Mic", "level", 5);
+        f.assertFact("u1", "User");
+        e.runToQuiescence();
+
+        Derivation d = e.derivation(f.instancesOf("Watch").getFirst()).orElseThrow();
+
+        assertThat(d.binding()).containsOnlyKeys("mUser", "mMic");
+        assertThat(d.conditions()).containsExactly(new Derivation.CheckedCondition("mUser", "COND_ANY", "u1"),
+                new Derivation.CheckedCondition("mMic", ".level > 3", "5"));
+        assertThatThrownBy(() -> d.conditions().add(d.conditions().getFirst()))
+                .isInstanceOf(UnsupportedOperationException.class);
+    }
+
+    @Test
+    void checkedConditions_afterTheTestedValueChanges_stillGiveTheValueTestedWhenTheFrameFired() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Order", null);
+        f.kb.add(Frame.classFrame("Deliver").slot(Fixture.inst("mUser", "User"))
+                .slot(Fixture.inst("mOrder", "Order", ".cups > 1")).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("o1", "Order", "cups", 2);
+        f.assertFact("u1", "User");
+        e.runToQuiescence();
+        String made = f.instancesOf("Deliver").getFirst();
+
+        f.kb.replace(f.kb.require("o1").withSlot(Fixture.num("cups", 3))); // still more than one: the instance stays
+        e.runToQuiescence();
+
+        assertThat(f.instancesOf("Deliver")).containsExactly(made);
+        assertThat(e.derivation(made).orElseThrow().conditions()).extracting(Derivation.CheckedCondition::value)
+                .containsExactly("u1", "2");
+    }
+
+    @Test
+    void supports_aFiringsInstance_isListedOnceUnderEachSupport_andLeavesEveryListWhenReleased() {
+        KnowledgeBase kb = KnowledgeBase.create();
+        FactView facts = new FactView(kb);
+        Supports supports = new Supports(facts);
+        Rule r = rule("R", "mA", "mB");
+        FactView.Fact[] refs = {facts.touch("a"), facts.touch("b")};
+        Derivation d = new Derivation("R-1", "R", Activation.bindingOf(r, new String[] {"a", "b"}), List.of(), 1, "b",
+                Optional.empty());
+
+        supports.record(d, r, refs);
+        supports.record(new Derivation("R-2", "R", Activation.bindingOf(r, new String[] {"a", "c"}), List.of(), 2,
+                "c", Optional.empty()), r, new FactView.Fact[] {refs[0], facts.touch("c")});
+
+        assertThat(supports.dependentsOf("a")).containsExactly("R-1", "R-2");
+        assertThat(supports.dependentsOf("b")).containsExactly("R-1");
+        supports.release("R-1");
+        assertThat(supports.dependentsOf("a")).containsExactly("R-2");
+        assertThat(supports.dependentsOf("b")).isEmpty();
+        assertThat(supports.closure("a")).containsExactly("R-2");
+    }
+
+    @Test
+    void agenda_anActivationTaken_leavesItsFactsLists_andTheNextOneWithThoseFactsIsFoundAndWithdrawn() {
+        KnowledgeBase kb = KnowledgeBase.create();
+        FactView facts = new FactView(kb);
+        Agenda agenda = new Agenda(facts);
+        Rule r = rule("R", "mA", "mB");
+        FactView.Fact[] refs = {facts.touch("a"), facts.touch("b")};
+        String[] bound = {"a", "b"};
+        BindingKey key = new BindingKey("R", bound);
+        agenda.add(new Activation(r, bound, refs, 2, 1, key));
+
+        Activation first = agenda.poll();
+
+        assertThat(first).isNotNull();
+        assertThat(agenda.contains(key, refs)).as("a taken activation is no longer waiting").isFalse();
+        assertThat(refs[0].activations).isNull();
+
+        Activation again = new Activation(r, bound, refs, 2, 2, key); // the binding matched again, say
+        agenda.add(again);
+        assertThat(agenda.contains(key, refs)).isTrue();
+        assertThat(refs[1].activations).containsExactly(again);
+        agenda.withdrawFact("a");
+        assertThat(agenda.size()).isZero();
+        assertThat(agenda.poll()).isNull();
+        assertThat(agenda.contains(key, refs)).isFalse();
+    }
+}
