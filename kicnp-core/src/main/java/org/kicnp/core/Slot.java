@@ -45,6 +45,22 @@ public final class Slot {
         this.demons = b.demons;
     }
 
+    /** This slot with {@code value} in place of its own: same name, type and facets (a copy, not a builder). */
+    private Slot(Slot s, Value value) {
+        this.name = s.name;
+        this.type = s.type;
+        this.flags = s.flags;
+        this.value = value;
+        this.defaultValue = s.defaultValue;
+        this.condition = s.condition;
+        this.argument = s.argument;
+        this.role = s.role;
+        this.from = s.from;
+        this.frameRelated = s.frameRelated;
+        this.frameListRelated = s.frameListRelated;
+        this.demons = s.demons;
+    }
+
     /** Starts a slot with the paper's defaults: not required, shared, not unique, reactive, condition ANY. */
     public static Builder builder(String name, DataType type) {
         return new Builder(name, type);
@@ -57,6 +73,44 @@ public final class Slot {
 
     public Builder toBuilder() {
         return new Builder(this);
+    }
+
+    /**
+     * This slot holding {@code value}, everything else the same: what {@code toBuilder().value(value).build()} makes,
+     * with the same checks, without a builder (an inference engine fills a rule's slots this way at every firing).
+     *
+     * @throws InvalidFrameException when the slot has a default, or the value does not fit the type
+     */
+    public Slot withValue(Value value) {
+        requireNonNull(value, "value");
+        if (defaultValue != null) {
+            throw bothValueAndDefault(name);
+        }
+        checkFits(name, type, value, "value");
+        return new Slot(this, value);
+    }
+
+    private static InvalidFrameException bothValueAndDefault(String name) {
+        return new InvalidFrameException("Slot '" + name + "' has both a value and a default; "
+                + "the paper allows one or the other (Table 2).");
+    }
+
+    private static void checkFits(String name, DataType type, Value v, String what) {
+        if (v == null) {
+            return;
+        }
+        boolean fits = switch (type) {
+            case INSTANCE, FRAME -> v instanceof Value.Ref;
+            case STRING -> v instanceof Value.Str;
+            case INTEGER -> v instanceof Value.Int;
+            case FLOAT -> v instanceof Value.Real || v instanceof Value.Int;
+            case BOOLEAN -> v instanceof Value.Bool;
+            case LIST -> v instanceof Value.Lst;
+        };
+        if (!fits) {
+            throw new InvalidFrameException("The " + what + " '" + v.text() + "' of slot '" + name
+                    + "' is not of its type " + type.xmlName() + ".");
+        }
     }
 
     public String name() {
@@ -321,30 +375,11 @@ public final class Slot {
                         + "s.name, so use letters, digits, '_' and '$', starting with a letter, '_' or '$'.");
             }
             if (value != null && defaultValue != null) {
-                throw new InvalidFrameException("Slot '" + name + "' has both a value and a default; "
-                        + "the paper allows one or the other (Table 2).");
+                throw bothValueAndDefault(name);
             }
-            checkFits(value, "value");
-            checkFits(defaultValue, "default");
+            checkFits(name, type, value, "value");
+            checkFits(name, type, defaultValue, "default");
             return new Slot(this);
-        }
-
-        private void checkFits(Value v, String what) {
-            if (v == null) {
-                return;
-            }
-            boolean fits = switch (type) {
-                case INSTANCE, FRAME -> v instanceof Value.Ref;
-                case STRING -> v instanceof Value.Str;
-                case INTEGER -> v instanceof Value.Int;
-                case FLOAT -> v instanceof Value.Real || v instanceof Value.Int;
-                case BOOLEAN -> v instanceof Value.Bool;
-                case LIST -> v instanceof Value.Lst;
-            };
-            if (!fits) {
-                throw new InvalidFrameException("The " + what + " '" + v.text() + "' of slot '" + name
-                        + "' is not of its type " + type.xmlName() + ".");
-            }
         }
     }
 }

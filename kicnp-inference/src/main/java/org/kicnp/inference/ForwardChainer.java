@@ -472,9 +472,9 @@ final class ForwardChainer {
     private static Slot[] slotsOf(Rule r, Map<String, String> full, FactView.Fact[] refs) {
         Slot[] slots = new Slot[full.size()];
         if (full.size() == refs.length) { // the required slots, in order: their facts' records are at hand
-            List<String> names = r.requiredSlots();
+            List<Slot> templates = r.requiredTemplates();
             for (int i = 0; i < refs.length; i++) {
-                slots[i] = Slot.ofValue(names.get(i), DataType.INSTANCE, refs[i].ref());
+                slots[i] = templates.get(i).withValue(refs[i].ref());
             }
         } else {
             int i = 0;

@@ -1,0 +1,73 @@
+package org.kicnp.core;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/** {@link Slot#withValue} makes what {@code toBuilder().value(v).build()} makes, refusing what it refuses. */
+class SlotWithValueTest {
+
+    private static final List<Slot> SLOTS = List.of(
+            Slot.builder("mUser", DataType.INSTANCE).argument("User").required(true).unique(true).shared(false)
+                    .condition(ConditionParser.parse(".age > 3")).role("listener").from("Robovie").build(),
+            Slot.builder("text", DataType.STRING).frameRelated("Speech").frameListRelated(List.of("A", "B"))
+                    .reactive(false).onNeeded("1").onAdded("2").onRemoved("3").value(Value.of("hi")).build(),
+            Slot.builder("count", DataType.INTEGER).defaultValue(Value.of(2)).build(),
+            Slot.builder("speed", DataType.FLOAT).build(),
+            Slot.builder("done", DataType.BOOLEAN).build());
+
+    private static final List<Value> VALUES = List.of(Value.ref("ken"), Value.of("hello"), Value.of(7),
+            Value.of(0.5), Value.of(true));
+
+    @Test
+    void withValue_isTheBuildersSlot_forEveryValueThatFits() {
+        int compared = 0;
+        for (Slot s : SLOTS) {
+            for (Value v : VALUES) {
+                Slot built;
+                try {
+                    built = s.toBuilder().value(v).build();
+                } catch (InvalidFrameException e) {
+                    continue; // the refusals are compared below
+                }
+                Slot filled = s.withValue(v);
+                assertThat(filled).as("%s with %s", s, v).isEqualTo(built);
+                assertThat(filled.valueOrNull()).isEqualTo(v);
+                assertThat(filled.onNeeded()).isEqualTo(built.onNeeded());
+                assertThat(filled.role()).isEqualTo(built.role());
+                compared++;
+            }
+        }
+        assertThat(compared).isEqualTo(5); // its own type's value to each slot but the one with a default; FLOAT an integer too
+    }
+
+    @Test
+    void withValue_refusesNull_asTheBuilderDoes() {
+        assertThatThrownBy(() -> SLOTS.get(3).withValue(null)).isInstanceOf(NullPointerException.class);
+        assertThatThrownBy(() -> SLOTS.get(3).toBuilder().value(null)).isInstanceOf(NullPointerException.class);
+    }
+
+    @Test
+    void withValue_refusesWithTheBuildersMessage_aValueOfAnotherTypeOrBesideADefault() {
+        int refused = 0;
+        for (Slot s : SLOTS) {
+            for (Value v : VALUES) {
+                String expected;
+                try {
+                    s.toBuilder().value(v).build();
+                    continue;
+                } catch (InvalidFrameException e) {
+                    expected = e.getMessage();
+                }
+                assertThatThrownBy(() -> s.withValue(v)).as("%s with %s", s, v)
+                        .isInstanceOf(InvalidFrameException.class).hasMessage(expected);
+                refused++;
+            }
+        }
+        assertThat(refused).isEqualTo(VALUES.size() * SLOTS.size() - 5);
+        assertThatThrownBy(() -> SLOTS.get(2).withValue(Value.of(3)))
+                .hasMessage("Slot 'count' has both a value and a default; the paper allows one or the other (Table 2).");
+    }
+}
