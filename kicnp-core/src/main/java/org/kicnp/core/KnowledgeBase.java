@@ -389,7 +389,7 @@ public final class KnowledgeBase {
             // Plain instances (stimuli, sensor readings, derived instances) are checked and indexed without staging.
             List<FrameEvent> added = changes.size() == 1 ? plain.tryAdd(changes.getFirst(), near, version + 1)
                     : plain.tryBatch(changes, version + 1);
-            if (added != null) {
+            if (added != null && !added.isEmpty()) { // an empty batch changes nothing: the general path says so
                 plainAdds += added.size();
                 version++;
                 return new ChangeSet(version, added);
@@ -406,8 +406,8 @@ public final class KnowledgeBase {
     }
 
     /**
-     * Makes a validated batch's events durable and applies them; the caller {@linkplain Delivery#queue queues} them for the
-     * listeners.
+     * Makes a validated batch's events durable and applies them; the caller {@linkplain Delivery#queue queues} them
+     * for the listeners.
      *
      * @param prepared the batch's nodes, built while it was staged, or null to index the events here
      * @param near frames the batch's frames may refer to, at hand for the indexes ({@link Node#find}), or null

@@ -320,6 +320,18 @@ class KnowledgeBaseTest {
     }
 
     @Test
+    void apply_ofAnEmptyBatch_makesNoVersionAndTellsNoListener() {
+        KnowledgeBase kb = figure1();
+        long v = kb.version();
+        List<ChangeSet> heard = new ArrayList<>();
+        kb.addListener(heard::add);
+        assertThat(kb.apply(List.of()).events()).isEmpty();
+        assertThat(kb.version()).isEqualTo(v);
+        kb.add(Frame.instance("ken", "KnownUser").provenance(Provenance.RUNTIME).build());
+        assertThat(heard).extracting(ChangeSet::version).containsExactly(v + 1);
+    }
+
+    @Test
     void listeners_hearBatchesInCommitOrder_includingChangesMadeByAListener() {
         KnowledgeBase kb = figure1();
         List<String> heard = new ArrayList<>();
