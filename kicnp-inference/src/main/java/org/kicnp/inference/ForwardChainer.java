@@ -1,7 +1,6 @@
 package org.kicnp.inference;
 
 import java.util.ArrayList;
-import java.util.Collection;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -10,28 +9,20 @@ import java.util.Optional;
 import java.util.Set;
 import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
-import java.util.function.Function;
-import org.kicnp.core.Change;
 import org.kicnp.core.ChangeSet;
-import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
 import org.kicnp.core.FrameEvent;
 import org.kicnp.core.KnowledgeBase;
-import org.kicnp.core.KnowledgeException;
-import org.kicnp.core.Provenance;
 import org.kicnp.core.Slot;
-import org.kicnp.core.UnknownFrameException;
 import org.kicnp.core.Value;
-import org.slf4j.Logger;
-import org.slf4j.LoggerFactory;
 
 /**
  * Forward chaining and truth maintenance on the engine thread: turns knowledge base events into match network
  * updates and agenda entries, fires activations, and retracts what no longer holds. {@link InferenceEngine} owns
- * the loop and the lock; this class owns the network, the agenda and the rules.
+ * the loop and the lock; this class owns the network, the agenda and the rules. What a firing does is {@link Firing};
+ * how instances are taken out with what rests on them is {@link Retractions}.
  */
 final class ForwardChainer {
-    private static final Logger LOG = LoggerFactory.getLogger(ForwardChainer.class);
     private final KnowledgeBase kb;
     private final Conditions conditions;
     private final RuleCompiler compiler;
@@ -44,10 +35,10 @@ final class ForwardChainer {
     private final FactView facts;
     private final Map<String, Rule> rules = new LinkedHashMap<>();
     private final MadeInstances made;
-    private final DerivationCheck check;
+    private final Retractions retractions;
+    private final Firing firing;
     private long stampCounter;
     private long seq;
-    private long firings;
 
     ForwardChainer(KnowledgeBase kb, FactView facts, Conditions conditions, Supports supports, ScriptCalls scripts,
                    Consumer<TraceEvent> tracer, BooleanSupplier tracing) {
@@ -62,7 +53,10 @@ final class ForwardChainer {
         this.scripts = scripts;
         this.tracer = tracer;
         this.made = new MadeInstances(kb);
-        this.check = new DerivationCheck(kb, conditions, scripts, supports, rules);
+        DerivationCheck check = new DerivationCheck(kb, conditions, scripts, supports, rules);
+        this.retractions = new Retractions(kb, supports, check, tracer);
+        this.firing = new Firing(kb, facts, conditions, network, supports, scripts, made, check, retractions, tracer,
+                tracing);
     }
 
     /** Stamps the instances there are and installs every behavior frame, matching what is already there. */
@@ -106,7 +100,7 @@ final class ForwardChainer {
     }
 
     long firings() {
-        return firings;
+        return firing.firings();
     }
 
     /** Applies one committed batch to the network, the agenda and the truth maintenance records. */
@@ -197,7 +191,7 @@ final class ForwardChainer {
                 d.get().binding().forEach((slot, fact) -> network.rematch(r.frame(), slot, fact).forEach(this::reconsider));
             }
         }
-        removeQuietly(orphans, "it rests on '" + name + "', which was removed");
+        retractions.removeQuietly(orphans, "it rests on '" + name + "', which was removed");
         facts.remove(name);
     }
 
@@ -294,8 +288,8 @@ final class ForwardChainer {
         agenda.withdrawFact(name);
         for (String dep : supports.dependentsOf(name)) {
             supports.derivation(dep).filter(d -> d.binding().containsValue(name)).ifPresent(d ->
-                    retractIfFailing(dep, d, slot -> "the condition of slot '" + slot + "' of '" + d.frame()
-                            + "' no longer holds after " + why));
+                    retractions.retractIfFailing(dep, d, slot -> "the condition of slot '" + slot + "' of '"
+                            + d.frame() + "' no longer holds after " + why));
         }
         facts.touch(name).stamp = ++stampCounter;
         network.insert(name, now.get().parent().orElseThrow()).forEach(this::consider);
@@ -342,11 +336,11 @@ final class ForwardChainer {
             conflicts.forEach((i, why) -> {
                 Set<String> all = new LinkedHashSet<>(List.of(i));
                 all.addAll(supports.closure(i));
-                removeQuietly(all, "frame '" + frame + "' changed and its " + why);
+                retractions.removeQuietly(all, "frame '" + frame + "' changed and its " + why);
             });
         });
         for (String dep : derived) {
-            supports.derivation(dep).ifPresent(d -> retractIfFailing(dep, d, slot -> "frame '" + frame
+            supports.derivation(dep).ifPresent(d -> retractions.retractIfFailing(dep, d, slot -> "frame '" + frame
                     + "' changed and the condition of slot '" + slot + "' no longer holds"));
         }
     }
@@ -403,190 +397,28 @@ final class ForwardChainer {
     }
 
     /**
-     * Whether an activation whose turn has come may still fire: an earlier firing may have claimed one of its
-     * instances or taken its key since it was made, or a non-reactive change to one of them made a condition false
-     * (then it is traced as blocked, and it is not a firing). Conditions are checked again only after such a change.
+     * Whether an activation whose turn has come may still fire ({@link Firing#mayFire}); a blocked one is traced and
+     * is not a firing.
      */
     boolean mayFire(Activation a) {
-        Optional<String> blocked = supports.blocked(a.rule(), a.facts(), a.refs()[0], a.key());
-        if (blocked.isEmpty() && a.changed) {
-            blocked = check.failing(a.rule(), a.binding())
-                    .map(why -> why + ": a bound instance changed while the binding waited on the agenda");
-        }
-        if (blocked.isPresent()) {
-            trace(new TraceEvent.Blocked(a.rule().frame(), a.binding(), blocked.get()));
-            return false;
-        }
-        return true;
+        return firing.mayFire(a);
     }
 
-    /** Fires one activation that {@link #mayFire may fire}: creates the instance and runs its onInstantiate script. */
+    /** Fires one activation that {@link #mayFire may fire} ({@link Firing#fire}). */
     void fire(Activation a) {
-        Rule r = a.rule();
-        Map<String, String> full = r.optional().isEmpty() ? a.binding() : withOptional(r, a.binding());
-        FactView.Fact[] refs = a.refs();
-        String trigger = newest(refs, full);
-        List<Derivation.CheckedCondition> checked = CheckedConditions.of(r, full, refs, facts, conditions);
-        long firing = ++firings;
-        String name;
-        while (true) {
-            name = made.next(r.frame());
-            Derivation d = new Derivation(name, r.frame(), full, checked, firing, trigger, Optional.empty());
-            supports.markFired(a.key(), refs);
-            FactView.Fact record = supports.record(d, r, refs);
-            Slot[] slots = slotsOf(r, full, refs);
-            try {
-                Frame instance = Frame.instance(name, r.frame(), Provenance.RUNTIME, slots);
-                if (full.size() == refs.length) {
-                    // Its slots hold the required slots' facts in order: refs (shared: the activation is done with).
-                    record.links = refs;
-                    record.linksOf = instance;
-                }
-                kb.add(instance, framesOf(refs));
-                made.added(record);
-                break;
-            } catch (KnowledgeException e) {
-                supports.release(name);
-                if (kb.contains(name)) {
-                    continue; // a frame the engine did not make has this name: take the next one
-                }
-                trace(new TraceEvent.Blocked(r.frame(), full, "the instance could not be created: " + e.getMessage()));
-                return;
-            }
-        }
-        if (tracing.getAsBoolean()) {
-            trace(new TraceEvent.Fired(r.frame(), name, full, firings));
-        }
-        Optional<String> script = r.onInstantiate();
-        if (script.isPresent()) {
-            boolean ok = scripts.run(r.frame(), "onInstantiate", script.get(), new FrameView(kb, name, 0), name,
-                    Optional.of(name));
-            if (!ok) {
-                supports.markFailed(name);
-                removeQuietly(List.of(name), "its onInstantiate script failed");
-            }
-        }
-    }
-
-    /** The slots of a firing's instance: each slot of the binding holding its instance, in the binding's order. */
-    private static Slot[] slotsOf(Rule r, Map<String, String> full, FactView.Fact[] refs) {
-        Slot[] slots = new Slot[full.size()];
-        if (full.size() == refs.length) { // the required slots, in order: their facts' records are at hand
-            List<Slot> templates = r.requiredTemplates();
-            for (int i = 0; i < refs.length; i++) {
-                slots[i] = templates.get(i).withValue(refs[i].ref());
-            }
-        } else {
-            int i = 0;
-            for (Map.Entry<String, String> e : full.entrySet()) {
-                slots[i++] = Slot.ofValue(e.getKey(), DataType.INSTANCE, Value.ref(e.getValue()));
-            }
-        }
-        return slots;
-    }
-
-    /** The bound facts' frames as the engine last saw them (null where it has none): those the new instance names. */
-    private static Frame[] framesOf(FactView.Fact[] refs) {
-        Frame[] out = new Frame[refs.length];
-        for (int i = 0; i < refs.length; i++) {
-            out[i] = refs[i].frame;
-        }
-        return out;
-    }
-
-    /** The most recently asserted instance of a binding: the required slots' records, then any optional ones. */
-    private String newest(FactView.Fact[] refs, Map<String, String> full) {
-        String trigger = null;
-        long newest = -1;
-        for (FactView.Fact f : refs) {
-            if (f.stamp > newest) {
-                newest = f.stamp;
-                trigger = f.name;
-            }
-        }
-        if (full.size() > refs.length) {
-            for (String f : full.values()) {
-                long st = facts.stamp(f);
-                if (st > newest) {
-                    newest = st;
-                    trigger = f;
-                }
-            }
-        }
-        return trigger;
-    }
-
-    /** The binding with each optional slot bound to the newest instance that fits it, where one does. */
-    private Binding withOptional(Rule r, Binding required) {
-        Map<String, String> full = new LinkedHashMap<>(required);
-        for (SlotPattern p : r.optional()) {
-            String best = null;
-            for (String c : network.candidates(r.frame(), p.slot())) {
-                if (full.containsValue(c) || (p.claims() && supports.consumed(r.frame(), p.slot(), c))) {
-                    continue;
-                }
-                Map<String, String> trial = new LinkedHashMap<>(full);
-                trial.put(p.slot(), c);
-                if (conditions.holds(p.condition(), Value.ref(c), r.frame(), trial)
-                        && (best == null || facts.stamp(c) > facts.stamp(best))) {
-                    best = c;
-                }
-            }
-            if (best != null) {
-                full.put(p.slot(), best);
-            }
-        }
-        return Binding.copyOf(full);
-    }
-
-    /**
-     * Retracts a derived instance, with what rests on it, when a slot of its derivation no longer holds; its binding
-     * may then fire again. {@code reason} words the retraction from the failing slot.
-     */
-    private void retractIfFailing(String instance, Derivation d, Function<String, String> reason) {
-        check.failingSlot(d).ifPresent(slot -> {
-            check.unmarkFired(d);
-            Set<String> all = new LinkedHashSet<>(List.of(instance));
-            all.addAll(supports.closure(instance));
-            removeQuietly(all, reason.apply(slot));
-        });
+        firing.fire(a);
     }
 
     // ---- truth maintenance ----
 
     /** Removes an instance and every live instance resting on it, in one batch; returns the names. */
     Set<String> destroyNow(String instance, String reason) {
-        return destroyNow(instance, reason, Change.ANY_REVISION);
+        return retractions.destroyNow(instance, reason);
     }
 
     /** As {@link #destroyNow(String, String)}, only while the instance is at {@code expectedRevision}. */
     Set<String> destroyNow(String instance, String reason, long expectedRevision) {
-        Frame target = kb.frame(instance).orElseThrow(() -> new UnknownFrameException(instance));
-        if (!target.isInstance()) {
-            throw new KnowledgeException("Frame '" + instance + "' is a class frame; only instances can be destroyed.");
-        }
-        Set<String> all = new LinkedHashSet<>(List.of(instance));
-        all.addAll(supports.closure(instance));
-        all.removeIf(n -> !kb.contains(n));
-        kb.apply(all.stream().map(n -> new Change.Remove(n, n.equals(instance) ? expectedRevision
-                : Change.ANY_REVISION)).toList());
-        all.forEach(n -> trace(new TraceEvent.Retracted(n, n.equals(instance) ? reason
-                : "it rests on '" + instance + "', which was " + reason)));
-        return all;
-    }
-
-    /** Retracts the instances that are still there, in one batch, tracing each with the reason; a refusal is logged. */
-    private void removeQuietly(Collection<String> names, String reason) {
-        List<String> live = names.stream().filter(kb::contains).toList();
-        if (live.isEmpty()) {
-            return;
-        }
-        try {
-            kb.apply(live.stream().map(Change.Remove::new).toList());
-            live.forEach(n -> trace(new TraceEvent.Retracted(n, reason)));
-        } catch (KnowledgeException e) {
-            LOG.error("Could not retract {} ({}): {}", live, reason, e.getMessage());
-        }
+        return retractions.destroyNow(instance, reason, expectedRevision);
     }
 
     /** The next {@code Prefix-N} name that no frame has now (for instances that scripts create). */
