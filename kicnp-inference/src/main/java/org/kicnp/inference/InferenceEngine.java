@@ -3,28 +3,19 @@ package org.kicnp.inference;
 import static java.util.Objects.requireNonNull;
 
 import java.util.ArrayList;
-import java.util.Comparator;
-import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
-import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.Executor;
-import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.locks.ReentrantLock;
 import org.kicnp.core.Change;
-import org.kicnp.core.ChangeSet;
-import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.KnowledgeException;
 import org.kicnp.core.KnowledgeListener;
-import org.kicnp.core.Provenance;
-import org.kicnp.core.Slot;
 import org.kicnp.core.StaleRevisionException;
 import org.kicnp.core.UnknownFrameException;
 import org.kicnp.core.Value;
@@ -53,30 +44,21 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
     private final ScriptCalls scripts;
     private final ForwardChainer forward;
     private final List<TraceListener> tracers = new CopyOnWriteArrayList<>();
-    private final ConcurrentLinkedQueue<Runnable> inbox = new ConcurrentLinkedQueue<>();
+    /** Held by every call that reads or changes the engine; {@link RunLoop} runs under it too. */
     private final ReentrantLock lock = new ReentrantLock();
-    private final KnowledgeListener listener = this::changed;
-    private final Optional<Executor> runner;
-    private final AtomicBoolean scheduled = new AtomicBoolean();
-    /** Whether {@link #runToQuiescence()} is running on the thread that holds {@link #lock}; read under it only. */
-    private boolean running;
-    /**
-     * A change set of the engine's own commit during a run (a firing's instance), held for the run's next drain
-     * instead of going through {@link #inbox}: nothing was queued before it, and the run drains it before anything
-     * queued after it. Null: none. Read and written under {@link #lock} only.
-     */
-    private ChangeSet own;
+    private final RunLoop loop;
+    private final KnowledgeListener listener;
     private long actionIds;
 
     private InferenceEngine(KnowledgeBase kb, EngineOptions options, ScriptHost host, ActionSink sink, Clock clock,
                             Optional<Executor> runner) {
         this.kb = kb;
         this.options = options;
-        this.runner = runner;
         FactView facts = new FactView(kb);
         this.supports = new Supports(facts);
         Conditions conditions = new Conditions(facts);
-        this.actions = new ActionCoordinator(kb, sink, clock, options.actionTimeout(), this::trace, this::assertFeedback);
+        this.actions = new ActionCoordinator(kb, sink, clock, options.actionTimeout(), this::trace,
+                new ActionFeedbackFrames(kb)::assertFeedback);
         ScriptApi api = new ScriptApi(kb, new ScriptApi.Services() {
             @Override public String newName(String prefix) {
                 return forward.freshName(prefix);
@@ -105,6 +87,8 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
         });
         this.forward = new ForwardChainer(kb, facts, conditions, supports, scripts, this::trace, () -> !tracers.isEmpty());
         this.backward = new BackwardChainer(kb, options, supports, forward::rules);
+        this.loop = new RunLoop(lock, options, forward, actions, this::trace, runner);
+        this.listener = loop::changed;
     }
 
     /** Starts building an engine over the knowledge base. */
@@ -168,7 +152,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
                 kb.add(feedbackClass());
             }
             kb.addListener(listener);
-            inbox.clear();
+            loop.clearInbox();
             forward.start();
             scripts.prepare(forward.rules());
         } finally {
@@ -197,51 +181,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
      * @throws InferenceLimitException when the run exceeds the configured number of firings; the agenda is cleared
      */
     public int runToQuiescence() {
-        lock.lock();
-        boolean outer = !running;
-        running = true;
-        try {
-            int count = 0;
-            // Firings per frame, for the limit's message: a counter each, not an Integer boxed per firing.
-            Map<String, int[]> perFrame = new HashMap<>();
-            while (true) {
-                drain();
-                actions.checkTimeouts();
-                drain();
-                Activation next = forward.next();
-                if (next == null) {
-                    actions.releaseSynchronized();
-                    if (own == null && inbox.isEmpty()) {
-                        return count;
-                    }
-                    continue;
-                }
-                if (!forward.mayFire(next)) {
-                    continue; // blocked when its turn came: not a firing, so not counted against the limit
-                }
-                count++;
-                perFrame.computeIfAbsent(next.rule().frame(), f -> new int[1])[0]++;
-                if (count > options.maxFirings()) {
-                    forward.clearAgenda();
-                    List<String> top = perFrame.entrySet().stream()
-                            .sorted(Comparator.comparingInt((Map.Entry<String, int[]> e) -> e.getValue()[0]).reversed())
-                            .limit(3).map(Map.Entry::getKey).toList();
-                    trace(new TraceEvent.LimitReached(options.maxFirings(), top));
-                    throw new InferenceLimitException(options.maxFirings(), top);
-                }
-                forward.fire(next);
-            }
-        } finally {
-            if (outer) {
-                running = false;
-                if (own != null) { // a run that ended by an exception: the change set waits in the queue as any other
-                    ChangeSet cs = own;
-                    own = null;
-                    submit(() -> forward.process(cs));
-                }
-            }
-            lock.unlock();
-        }
+        return loop.run();
     }
 
     /**
@@ -249,14 +189,14 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
      * times out overdue actions; call it from a timer. On a hand-driven engine, {@link #runToQuiescence()} does this.
      */
     public void tick() {
-        submit(() -> { });
+        loop.submit(() -> { });
     }
 
     /** Activations waiting on the agenda (after the queued changes are processed). */
     public int agendaSize() {
         lock.lock();
         try {
-            drain();
+            loop.drain();
             return forward.agendaSize();
         } finally {
             lock.unlock();
@@ -270,50 +210,10 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
     public List<AgendaEntry> agenda() {
         lock.lock();
         try {
-            drain();
+            loop.drain();
             return forward.agenda().stream().map(AgendaEntry::of).toList();
         } finally {
             lock.unlock();
-        }
-    }
-
-    private void changed(ChangeSet cs) {
-        if (lock.isHeldByCurrentThread() && running && own == null && inbox.isEmpty()) {
-            own = cs; // the run's own commit: its next drain takes it first, with no queue between
-            return;
-        }
-        submit(() -> forward.process(cs));
-    }
-
-    private void submit(Runnable work) {
-        inbox.add(work);
-        runner.ifPresent(ex -> {
-            if (scheduled.compareAndSet(false, true)) {
-                ex.execute(() -> {
-                    scheduled.set(false);
-                    try {
-                        runToQuiescence();
-                    } catch (RuntimeException e) {
-                        LOG.error("Inference run failed: {}", e.getMessage(), e);
-                    }
-                });
-            }
-        });
-    }
-
-    private void drain() {
-        while (true) {
-            if (own != null) { // nothing is queued before it (see changed)
-                ChangeSet cs = own;
-                own = null;
-                forward.process(cs);
-                continue;
-            }
-            Runnable r = inbox.poll();
-            if (r == null) {
-                return;
-            }
-            r.run();
         }
     }
 
@@ -341,7 +241,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
     public Set<String> destroy(String instance, long expectedRevision, String reason) {
         lock.lock();
         try {
-            drain();
+            loop.drain();
             Set<String> removed = forward.destroyNow(instance, reason, expectedRevision);
             runToQuiescence();
             return removed;
@@ -356,7 +256,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
     public Explanation why(String instance) {
         lock.lock();
         try {
-            drain();
+            loop.drain();
             return why(instance, new HashSet<>());
         } finally {
             lock.unlock();
@@ -395,7 +295,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
     public List<Answer> ask(String className, Map<String, Value> partialBindings) {
         lock.lock();
         try {
-            drain();
+            loop.drain();
             return backward.ask(className, partialBindings);
         } finally {
             lock.unlock();
@@ -419,7 +319,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
         requireNonNull(partialBindings, "partialBindings");
         lock.lock();
         try {
-            drain();
+            loop.drain();
             Frame f = kb.frame(frame).orElseThrow(() -> new UnknownFrameException(frame));
             Rule r = forward.rule(frame).orElseThrow(() -> new IllegalArgumentException("Frame '" + frame + "' is "
                     + (f.isInstance() ? "an instance" : "not a behavior frame: it has no required instance slot")
@@ -446,7 +346,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
     public Optional<Value> read(String instance, String slot) {
         lock.lock();
         try {
-            drain();
+            loop.drain();
             return scripts.read(instance, slot);
         } finally {
             lock.unlock();
@@ -456,15 +356,15 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
     // ---- actions ----
 
     @Override public void actionStarted(String actionId) {
-        submit(() -> actions.started(actionId));
+        loop.submit(() -> actions.started(actionId));
     }
 
     @Override public void actionEnded(String actionId, String result) {
-        submit(() -> actions.ended(actionId, result));
+        loop.submit(() -> actions.ended(actionId, result));
     }
 
     @Override public void actionFailed(String actionId, String reason) {
-        submit(() -> actions.failed(actionId, reason));
+        loop.submit(() -> actions.failed(actionId, reason));
     }
 
     /**
@@ -476,7 +376,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
     public boolean cancelAction(String actionId, String reason) {
         lock.lock();
         try {
-            drain();
+            loop.drain();
             boolean cancelled = actions.cancel(actionId, reason);
             runToQuiescence();
             return cancelled;
@@ -489,7 +389,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
     public Optional<Action.Status> actionStatus(String actionId) {
         lock.lock();
         try {
-            drain();
+            loop.drain();
             return actions.status(actionId);
         } finally {
             lock.unlock();
@@ -506,33 +406,12 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
         }
     }
 
-    private void assertFeedback(ActionCoordinator.Tracked t) {
-        Action a = t.action;
-        Frame f = Frame.instance(FEEDBACK_CLASS + "-" + a.id(), FEEDBACK_CLASS).provenance(Provenance.RUNTIME)
-                .slot(str("action", a.id())).slot(str("robot", a.robot())).slot(str("name", a.name()))
-                .slot(str("status", t.status.name().toLowerCase(Locale.ROOT))).slot(str("result", t.detail))
-                .slot(str("frame", a.frame())).slot(str("issuedBy", a.instance())).build();
-        try {
-            kb.put(f);
-        } catch (KnowledgeException e) {
-            LOG.warn("Could not record feedback for action '{}': {}", a.id(), e.getMessage());
-        }
-    }
-
     /**
      * The {@value #FEEDBACK_CLASS} class frame the engine adds when it is missing. Knowledge bases whose frames
      * match on feedback declare it (or add this frame) before those frames load.
      */
     public static Frame feedbackClass() {
-        Frame.Builder b = Frame.classFrame(FEEDBACK_CLASS);
-        for (String s : List.of("action", "robot", "name", "status", "result", "frame", "issuedBy")) {
-            b.slot(Slot.builder(s, DataType.STRING).build());
-        }
-        return b.build();
-    }
-
-    private static Slot str(String name, String value) {
-        return Slot.ofValue(name, DataType.STRING, Value.of(value));
+        return ActionFeedbackFrames.classFrame();
     }
 
     // ---- helpers ----

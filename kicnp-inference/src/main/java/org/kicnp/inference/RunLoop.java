@@ -1,0 +1,151 @@
+package org.kicnp.inference;
+
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.Executor;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.Consumer;
+import org.kicnp.core.ChangeSet;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * How work reaches the engine and when it runs: change sets and action reports from any thread wait in a queue, and
+ * a run drains it and fires activations in agenda order until nothing more fires, failing loudly past the firing
+ * limit; on an engine that runs by itself, an arrival schedules the run on its executor. Kept apart from
+ * {@link InferenceEngine}, the public front (building, questions, actions), so that one class decides when and on
+ * which thread work happens. It shares the engine's lock: every front-end call drains the queue under it first.
+ */
+final class RunLoop {
+    /** Logged under the engine's name: the public class is the one users configure logging for. */
+    private static final Logger LOG = LoggerFactory.getLogger(InferenceEngine.class);
+
+    private final ReentrantLock lock;
+    private final EngineOptions options;
+    private final ForwardChainer forward;
+    private final ActionCoordinator actions;
+    private final Consumer<TraceEvent> tracer;
+    private final Optional<Executor> runner;
+    private final ConcurrentLinkedQueue<Runnable> inbox = new ConcurrentLinkedQueue<>();
+    private final AtomicBoolean scheduled = new AtomicBoolean();
+    /** Whether {@link #run()} is running on the thread that holds {@link #lock}; read under it only. */
+    private boolean running;
+    /**
+     * A change set of the engine's own commit during a run (a firing's instance), held for the run's next drain
+     * instead of going through {@link #inbox}: nothing was queued before it, and the run drains it before anything
+     * queued after it. Null: none. Read and written under {@link #lock} only.
+     */
+    private ChangeSet own;
+
+    RunLoop(ReentrantLock lock, EngineOptions options, ForwardChainer forward, ActionCoordinator actions,
+            Consumer<TraceEvent> tracer, Optional<Executor> runner) {
+        this.lock = lock;
+        this.options = options;
+        this.forward = forward;
+        this.actions = actions;
+        this.tracer = tracer;
+        this.runner = runner;
+    }
+
+    /** {@link InferenceEngine#runToQuiescence()}: drains the queue and fires until nothing more fires. */
+    int run() {
+        lock.lock();
+        boolean outer = !running;
+        running = true;
+        try {
+            int count = 0;
+            // Firings per frame, for the limit's message: a counter each, not an Integer boxed per firing.
+            Map<String, int[]> perFrame = new HashMap<>();
+            while (true) {
+                drain();
+                actions.checkTimeouts();
+                drain();
+                Activation next = forward.next();
+                if (next == null) {
+                    actions.releaseSynchronized();
+                    if (own == null && inbox.isEmpty()) {
+                        return count;
+                    }
+                    continue;
+                }
+                if (!forward.mayFire(next)) {
+                    continue; // blocked when its turn came: not a firing, so not counted against the limit
+                }
+                count++;
+                perFrame.computeIfAbsent(next.rule().frame(), f -> new int[1])[0]++;
+                if (count > options.maxFirings()) {
+                    forward.clearAgenda();
+                    List<String> top = perFrame.entrySet().stream()
+                            .sorted(Comparator.comparingInt((Map.Entry<String, int[]> e) -> e.getValue()[0]).reversed())
+                            .limit(3).map(Map.Entry::getKey).toList();
+                    tracer.accept(new TraceEvent.LimitReached(options.maxFirings(), top));
+                    throw new InferenceLimitException(options.maxFirings(), top);
+                }
+                forward.fire(next);
+            }
+        } finally {
+            if (outer) {
+                running = false;
+                if (own != null) { // a run that ended by an exception: the change set waits in the queue as any other
+                    ChangeSet cs = own;
+                    own = null;
+                    submit(() -> forward.process(cs));
+                }
+            }
+            lock.unlock();
+        }
+    }
+
+    /** Forgets what was queued before the engine attached: {@link ForwardChainer#start} sees it all. */
+    void clearInbox() {
+        inbox.clear();
+    }
+
+    /** A committed batch of the knowledge base, from any thread (the engine's listener). */
+    void changed(ChangeSet cs) {
+        if (lock.isHeldByCurrentThread() && running && own == null && inbox.isEmpty()) {
+            own = cs; // the run's own commit: its next drain takes it first, with no queue between
+            return;
+        }
+        submit(() -> forward.process(cs));
+    }
+
+    /** Queues work for the engine thread and, on an engine that runs by itself, schedules a run. */
+    void submit(Runnable work) {
+        inbox.add(work);
+        runner.ifPresent(ex -> {
+            if (scheduled.compareAndSet(false, true)) {
+                ex.execute(() -> {
+                    scheduled.set(false);
+                    try {
+                        run();
+                    } catch (RuntimeException e) {
+                        LOG.error("Inference run failed: {}", e.getMessage(), e);
+                    }
+                });
+            }
+        });
+    }
+
+    /** Runs what waits, the run's own commit first; called under the lock, before anything reads the engine. */
+    void drain() {
+        while (true) {
+            if (own != null) { // nothing is queued before it (see changed)
+                ChangeSet cs = own;
+                own = null;
+                forward.process(cs);
+                continue;
+            }
+            Runnable r = inbox.poll();
+            if (r == null) {
+                return;
+            }
+            r.run();
+        }
+    }
+}
