@@ -425,8 +425,4 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
             }
         }
     }
-
-    private static String message(Throwable e) {
-        return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
-    }
 }

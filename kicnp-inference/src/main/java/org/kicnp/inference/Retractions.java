@@ -20,7 +20,8 @@ import org.slf4j.LoggerFactory;
  * {@code onInstantiate}, an edited frame, a destroy through the engine) goes the same way, whoever asks for it.
  */
 final class Retractions {
-    private static final Logger LOG = LoggerFactory.getLogger(Retractions.class);
+    /** Logged under the forward chainer's name, where these lines were before they moved here. */
+    private static final Logger LOG = LoggerFactory.getLogger(ForwardChainer.class);
     private final KnowledgeBase kb;
     private final Supports supports;
     private final DerivationCheck check;
