@@ -25,8 +25,6 @@ final class PlainInstanceAdd {
     private final Map<String, ClassInfo> classes;
     /** The nodes of the instance slots' values of the frame being checked, by slot position; reused, for one add. */
     private Node[] targets = new Node[4];
-    /** The {@linkplain NameTable#numberOf number} of the name of the frame last checked, for its index. */
-    private int number;
 
     PlainInstanceAdd(NodeIndex nodes, Map<String, ClassInfo> classes) {
         this.nodes = nodes;
@@ -44,7 +42,8 @@ final class PlainInstanceAdd {
             return null;
         }
         Frame f = a.frame();
-        Node parent = check(f, near);
+        int number = NameTable.numberOf(f.name());
+        Node parent = check(f, number, near);
         if (parent == null) {
             return null;
         }
@@ -61,6 +60,7 @@ final class PlainInstanceAdd {
         int n = changes.size();
         Frame[] frames = new Frame[n];
         Node[] parents = new Node[n];
+        int[] numbers = new int[n];
         Node[][] targetsOf = new Node[n][];
         NameTable<Frame> names = new NameTable<>(n);
         for (int i = 0; i < n; i++) {
@@ -68,7 +68,8 @@ final class PlainInstanceAdd {
                 return null;
             }
             frames[i] = a.frame();
-            parents[i] = check(frames[i], null);
+            numbers[i] = NameTable.numberOf(frames[i].name());
+            parents[i] = check(frames[i], numbers[i], null);
             if (parents[i] == null) {
                 return null;
             }
@@ -76,7 +77,7 @@ final class PlainInstanceAdd {
         }
         FrameEvent[] events = new FrameEvent[n];
         for (int i = 0; i < n; i++) {
-            index(frames[i], NameTable.numberOf(frames[i].name()), parents[i], targetsOf[i], version);
+            index(frames[i], numbers[i], parents[i], targetsOf[i], version);
             events[i] = new FrameEvent.Added(frames[i]);
         }
         return Arrays.asList(events);
@@ -95,15 +96,15 @@ final class PlainInstanceAdd {
     /**
      * The checks of a plain instance against the knowledge base as it is: answers its class's node, with the nodes of
      * its instance slots' values in {@link #targets} (by slot position, null for other slots), when every check is
-     * passed; else null.
+     * passed; else null. {@code number} is the {@linkplain NameTable#numberOf number} of its name, which the caller
+     * reads once for this look-up and the index's put.
      */
-    private Node check(Frame f, Frame[] near) {
+    private Node check(Frame f, int number, Frame[] near) {
         if (!f.isInstance() || f.provenance().durable() || !f.parts().isEmpty() || !f.linksTo().isEmpty()
                 || !f.linksFrom().isEmpty()) {
             return null;
         }
         ClassInfo cls = known(f.parentOrNull());
-        number = NameTable.numberOf(f.name());
         if (cls == null || nodes.get(f.name(), number) != null) {
             return null;
         }
