@@ -29,11 +29,31 @@ final class Indexer {
         new Indexer(nodes, refs, near).apply(events, version);
     }
 
+    /** Grows the name index once for a batch's adds (a loader's thousands of frames), not step by step. */
+    private void makeRoom(List<FrameEvent> events) {
+        if (events.size() < 64) {
+            return;
+        }
+        int hashed = 0;
+        int numbered = 0;
+        for (FrameEvent e : events) {
+            if (e instanceof FrameEvent.Added a) {
+                if (NameTable.numberOf(a.name()) < 0) {
+                    hashed++;
+                } else {
+                    numbered++;
+                }
+            }
+        }
+        nodes.ensureRoom(hashed, numbered);
+    }
+
     private void apply(List<FrameEvent> events, long version) {
         List<Node> attach = new ArrayList<>(events.size());
         List<Node> touched = new ArrayList<>(events.size());
         /* Nodes made by this batch cannot be members of any set yet: they are added without a membership probe. */
         Set<Node> reattached = null;
+        makeRoom(events);
         for (FrameEvent e : events) {
             switch (e) {
                 case FrameEvent.Removed r -> {

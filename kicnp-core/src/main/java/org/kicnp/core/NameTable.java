@@ -34,6 +34,23 @@ public final class NameTable<V> implements Iterable<V> {
 
     /** An empty table with room for {@code expected} names before it first grows. */
     public NameTable(int expected) {
+        allocate(capacityFor(expected));
+    }
+
+    /**
+     * Makes room for {@code expected} names in all before the table next grows: a caller about to put a batch of
+     * names in (a knowledge base's batch of instances, an engine's batch of events) grows the table once, instead
+     * of doubling it step by step and re-placing every name at each step.
+     */
+    public void ensureCapacity(int expected) {
+        int capacity = capacityFor(expected);
+        if (capacity > hashes.length) {
+            allocate(capacity);
+        }
+    }
+
+    /** The least capacity that holds {@code expected} names at most half full. */
+    private static int capacityFor(int expected) {
         if (expected < 0 || expected > 1 << 29) {
             throw new IllegalArgumentException("A name table holds 0 to 2^29 names, not " + expected + ".");
         }
@@ -41,11 +58,16 @@ public final class NameTable<V> implements Iterable<V> {
         while (capacity < 2 * expected) {
             capacity <<= 1;
         }
-        allocate(capacity);
+        return capacity;
     }
 
     public int size() {
         return size;
+    }
+
+    /** The slots of the table (for tests: it holds this many names at most half full before it grows). */
+    int capacity() {
+        return hashes.length;
     }
 
     @SuppressWarnings("unchecked")

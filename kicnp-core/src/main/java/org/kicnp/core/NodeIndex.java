@@ -17,7 +17,9 @@ import java.util.NoSuchElementException;
  * instances a run derives one after the other sit next to each other, and a new one's name is found free without a
  * probe of a table. Every other name, and a numbered name whose index holds another node, is kept in a hash table;
  * each index counts the names of its number kept there, so a numbered name is looked for in the table only when its
- * index has such names. The array grows with the nodes it holds, not with the numbers.
+ * index has such names. The array grows with the nodes it holds, not with the numbers, and only when a number finds
+ * its index taken while the array is half full or more: numbers given out one after the other fill it to the last
+ * place before it first doubles.
  *
  * <p>The hash table is a {@link NameTable}: a probe run reads only an array of hashes and each name sits beside its
  * node, so a miss touches one cache line and a hit or an insertion two, where a hash map's buckets and entry objects
@@ -51,6 +53,11 @@ final class NodeIndex {
     /** The length of the array of numbered nodes (for tests: it follows the nodes held, not their numbers). */
     int numberedCapacity() {
         return numbered.length;
+    }
+
+    /** The slots of the hash table of other names (for tests, as {@link #numberedCapacity}). */
+    int tableCapacity() {
+        return table.capacity();
     }
 
     boolean containsKey(String name) {
@@ -99,9 +106,13 @@ final class NodeIndex {
                 numbers[k] = number;
                 inArray++;
                 added(n);
-                if ((inArray + inTable) * 2 > numbered.length) {
-                    growNumbered();
-                }
+                return;
+            }
+            if (at != null && (inArray + inTable) * 2 >= numbered.length) {
+                // Another number holds its index and the array is half full: grow it (this name is not held, or it
+                // would have been at its index or counted as spilled there), then put the name in the larger one.
+                growNumbered();
+                put(name, number, n);
                 return;
             }
         }
@@ -115,8 +126,30 @@ final class NodeIndex {
             inTable++;
         }
         added(n);
-        if (number >= 0 && (inArray + inTable) * 2 > numbered.length) {
-            growNumbered();
+    }
+
+    /**
+     * Makes room for a batch of new names before it is put in: {@code hashed} names that do not end in a number and
+     * {@code numbered} that do. Each structure grows at most once, to its size after the batch, instead of doubling
+     * step by step (re-placing every name it holds at each step) while the batch goes in.
+     */
+    void ensureRoom(int hashed, int numbered) {
+        if (hashed < 0 || numbered < 0) {
+            throw new IllegalArgumentException("Room for " + hashed + " and " + numbered + " names?");
+        }
+        if (hashed > 0) {
+            table.ensureCapacity(table.size() + hashed);
+        }
+        long need = (long) end + hashed + numbered;
+        if (need > order.length) {
+            order = Arrays.copyOf(order, (int) Math.min(Integer.MAX_VALUE - 8, Math.max(need, 2L * order.length)));
+        }
+        int length = this.numbered.length;
+        while ((long) (inArray + inTable + numbered) * 2 > length && length < 1 << 30) {
+            length <<= 1;
+        }
+        if (length > this.numbered.length) {
+            growNumbered(length);
         }
     }
 
@@ -233,13 +266,18 @@ final class NodeIndex {
 
     /**
      * Doubles the array of numbered nodes. The nodes in it keep distinct indexes (their numbers differ modulo the old
-     * length, so modulo the new one too); the numbered names in the hash table stay there, counted at their new
+     * length, so modulo any larger power of two too); the numbered names in the hash table stay there, counted at their new
      * indexes.
      */
     private void growNumbered() {
+        growNumbered(numbered.length * 2);
+    }
+
+    /** Re-places the numbered nodes in an array of {@code length} (a power of two, larger than the one in use). */
+    private void growNumbered(int length) {
         Node[] old = numbered;
         int[] oldNumbers = numbers;
-        numbered = new Node[old.length * 2];
+        numbered = new Node[length];
         numbers = new int[numbered.length];
         spilled = new int[numbered.length];
         int mask = numbered.length - 1;

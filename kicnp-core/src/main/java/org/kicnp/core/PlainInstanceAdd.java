@@ -75,6 +75,11 @@ final class PlainInstanceAdd {
             }
             targetsOf[i] = copyOfTargets(frames[i].slots().size());
         }
+        int hashed = 0;
+        for (int number : numbers) {
+            hashed += number < 0 ? 1 : 0;
+        }
+        nodes.ensureRoom(hashed, n - hashed);
         FrameEvent[] events = new FrameEvent[n];
         for (int i = 0; i < n; i++) {
             index(frames[i], numbers[i], parents[i], targetsOf[i], version);

@@ -60,6 +60,34 @@ class NameTableTest {
         assertThatThrownBy(() -> new NameTable<>((1 << 29) + 1)).isInstanceOf(IllegalArgumentException.class);
     }
 
+    /** Room made for a batch: the table grows once, keeps what it held, and the batch goes in without growing it. */
+    @Test
+    void ensureCapacity_growsOnceForTheBatch_keepingEveryName() {
+        NameTable<String> table = new NameTable<>();
+        for (int i = 0; i < 10; i++) {
+            table.put("held" + i, "h" + i);
+        }
+        table.ensureCapacity(table.size() + 5_000);
+        int capacity = table.capacity();
+        assertThat(capacity).isGreaterThanOrEqualTo(2 * 5_010);
+        for (int i = 0; i < 10; i++) {
+            assertThat(table.get("held" + i)).isEqualTo("h" + i);
+        }
+        for (int i = 0; i < 5_000; i++) {
+            table.put("s" + i, "v" + i);
+        }
+        assertThat(table.capacity()).isEqualTo(capacity);
+        assertThat(table.size()).isEqualTo(5_010);
+        assertThat(table.get("s4999")).isEqualTo("v4999");
+        assertThat(table.get("held3")).isEqualTo("h3");
+
+        table.ensureCapacity(10); // never shrinks
+        assertThat(table.capacity()).isEqualTo(capacity);
+        assertThatThrownBy(() -> table.ensureCapacity(-1)).isInstanceOf(IllegalArgumentException.class)
+                .hasMessage("A name table holds 0 to 2^29 names, not -1.");
+        assertThat(table.size()).isEqualTo(5_010);
+    }
+
     private static void putGetAndRemove_inRandomOrder_behaveLikeAHashMap(NameTable<String> table) {
         Random random = new Random(3);
         Map<String, String> reference = new HashMap<>();

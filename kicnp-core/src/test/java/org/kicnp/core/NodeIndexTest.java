@@ -93,4 +93,47 @@ class NodeIndexTest {
         assertThat(index.values()).extracting(Node::name).first().isEqualTo("Pair-999901");
         assertThat(index.get("Pair-5")).isNull();
     }
+
+    /** Numbers given out one after the other fill the array to its last place before it doubles. */
+    @Test
+    void consecutiveNumbers_fillTheArray_beforeItGrows() {
+        NodeIndex index = new NodeIndex();
+        int first = index.numberedCapacity();
+        for (int i = 0; i < first; i++) {
+            index.put("Pair-" + i, node("Pair-" + i));
+        }
+        assertThat(index.numberedCapacity()).isEqualTo(first);
+        index.put("Pair-" + first, node("Pair-" + first)); // its index holds Pair-0
+        assertThat(index.numberedCapacity()).isEqualTo(2 * first);
+        for (int i = 0; i <= first; i++) {
+            assertThat(index.get("Pair-" + i)).extracting(Node::name).isEqualTo("Pair-" + i);
+        }
+        assertThat(index.values()).extracting(Node::name).first().isEqualTo("Pair-0");
+        assertThat(index.size()).isEqualTo(first + 1);
+    }
+
+    /** Room made for a batch: each part grows once, and the batch's names (numbered or not) go in without growing it. */
+    @Test
+    void ensureRoom_growsOnceForTheBatch_keepingOrderAndNodes() {
+        NodeIndex index = new NodeIndex();
+        index.put("Thing", node("Thing"));
+        index.put("Pair-1", node("Pair-1"));
+        index.ensureRoom(20_000, 20_000);
+        int capacity = index.numberedCapacity();
+        int tableCapacity = index.tableCapacity();
+        assertThat(capacity).isGreaterThanOrEqualTo(2 * 20_001);
+        assertThat(tableCapacity).isGreaterThanOrEqualTo(2 * 20_001);
+        for (int i = 2; i < 20_002; i++) {
+            index.put("s" + i, node("s" + i));
+            index.put("Pair-" + i, node("Pair-" + i));
+        }
+        assertThat(index.numberedCapacity()).isEqualTo(capacity);
+        assertThat(index.tableCapacity()).isEqualTo(tableCapacity);
+        assertThat(index.size()).isEqualTo(40_002);
+        assertThat(index.values()).extracting(Node::name).startsWith("Thing", "Pair-1", "s2", "Pair-2");
+        assertThat(index.get("Pair-20001")).extracting(Node::name).isEqualTo("Pair-20001");
+        assertThat(index.get("s20001")).extracting(Node::name).isEqualTo("s20001");
+        index.ensureRoom(0, 0);
+        assertThat(index.numberedCapacity()).isEqualTo(capacity);
+    }
 }

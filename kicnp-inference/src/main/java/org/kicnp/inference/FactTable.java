@@ -12,8 +12,9 @@ import org.kicnp.core.NameTable;
  * random slot of a hash table whose lines are never in the cache. Every other name, and a numbered name whose index
  * holds another name, is kept in a {@link NameTable}; each index counts the names of its number kept there, so a
  * numbered name is looked for in the table only when its index has such names. The array grows with the facts it
- * holds, not with the numbers: a long run that retracts what it derived keeps it small. Not thread-safe: owned by the
- * engine thread.
+ * holds, not with the numbers: a long run that retracts what it derived keeps it small. It grows only when a number
+ * finds its index taken while the array is half full or more, so numbers given out one after the other fill it to the
+ * last place before it first doubles. Not thread-safe: owned by the engine thread.
  */
 final class FactTable implements Iterable<FactView.Fact> {
     private static final int MIN_CAPACITY = 1024;
@@ -60,6 +61,12 @@ final class FactTable implements Iterable<FactView.Fact> {
         }
         FactView.Fact f = new FactView.Fact(name);
         size++;
+        if (at != null && (inArray + inOthers) * 2 >= numbered.length) {
+            // Another number holds its index and the array is half full: grow it, then place the fact there.
+            grow();
+            i = n & mask;
+            at = numbered[i];
+        }
         if (at == null) {
             numbered[i] = f;
             numbers[i] = n;
@@ -69,10 +76,27 @@ final class FactTable implements Iterable<FactView.Fact> {
             spilled[i]++;
             inOthers++;
         }
-        if ((inArray + inOthers) * 2 > numbered.length) {
-            grow();
-        }
         return f;
+    }
+
+    /**
+     * Makes room for a batch of new names ({@code hashed} that do not end in a number, {@code numbered} that do), so
+     * that each structure grows once, to its size after the batch, instead of step by step while it goes in.
+     */
+    void ensureRoom(int hashed, int numbered) {
+        if (hashed < 0 || numbered < 0) {
+            throw new IllegalArgumentException("Room for " + hashed + " and " + numbered + " names?");
+        }
+        if (hashed > 0) {
+            others.ensureCapacity(others.size() + hashed);
+        }
+        int length = this.numbered.length;
+        while ((long) (inArray + inOthers + numbered) * 2 > length && length < 1 << 30) {
+            length <<= 1;
+        }
+        if (length > this.numbered.length) {
+            grow(length);
+        }
     }
 
     /** The fact of that name, or null. */
@@ -124,9 +148,14 @@ final class FactTable implements Iterable<FactView.Fact> {
      * the new one too); the numbered names in the table stay there, counted at their new indexes.
      */
     private void grow() {
+        grow(numbered.length * 2);
+    }
+
+    /** Re-places the numbered facts in an array of {@code length} (a power of two, larger than the one in use). */
+    private void grow(int length) {
         FactView.Fact[] old = numbered;
         int[] oldNumbers = numbers;
-        numbered = new FactView.Fact[old.length * 2];
+        numbered = new FactView.Fact[length];
         numbers = new int[numbered.length];
         spilled = new int[numbered.length];
         mask = numbered.length - 1;

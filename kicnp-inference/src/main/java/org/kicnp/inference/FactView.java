@@ -163,6 +163,11 @@ final class FactView implements Conditions.Reader {
     }
 
     /** The fact of that name, made (without a frame) when there is none yet. */
+    /** Makes room for a batch of new instances' names ({@link FactTable#ensureRoom}). */
+    void ensureRoom(int hashed, int numbered) {
+        facts.ensureRoom(hashed, numbered);
+    }
+
     Fact touch(String name) {
         return facts.touch(name);
     }

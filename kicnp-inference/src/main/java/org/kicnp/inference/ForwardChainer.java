@@ -13,6 +13,7 @@ import org.kicnp.core.ChangeSet;
 import org.kicnp.core.Frame;
 import org.kicnp.core.FrameEvent;
 import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.NameTable;
 import org.kicnp.core.Slot;
 import org.kicnp.core.Value;
 
@@ -105,6 +106,7 @@ final class ForwardChainer {
 
     /** Applies one committed batch to the network, the agenda and the truth maintenance records. */
     void process(ChangeSet cs) {
+        makeRoom(cs);
         List<String> classesRemoved = new ArrayList<>(0);
         for (int i = 0; i < cs.events().size(); i++) { // by index: an iterator per change set (per firing) is garbage
             switch (cs.events().get(i)) {
@@ -147,6 +149,26 @@ final class ForwardChainer {
             network.classesChanged();
             uninstall(name);
         }
+    }
+
+    /** Grows the fact records once for a large batch of new instances (a burst of sensor readings), not step by step. */
+    private void makeRoom(ChangeSet cs) {
+        List<FrameEvent> events = cs.events();
+        if (events.size() < 64) {
+            return;
+        }
+        int hashed = 0;
+        int numbered = 0;
+        for (int i = 0; i < events.size(); i++) {
+            if (events.get(i) instanceof FrameEvent.Added a && a.frame().isInstance()) {
+                if (NameTable.numberOf(a.name()) < 0) {
+                    hashed++;
+                } else {
+                    numbered++;
+                }
+            }
+        }
+        facts.ensureRoom(hashed, numbered);
     }
 
     // ---- facts ----

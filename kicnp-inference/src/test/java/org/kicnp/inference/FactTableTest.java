@@ -98,4 +98,42 @@ class FactTableTest {
         }
         assertThat(table.size()).isEqualTo(reference.size());
     }
+
+    /** Numbers given out one after the other fill the array to its last place before it doubles. */
+    @Test
+    void consecutiveNumbers_fillTheArray_beforeItGrows() {
+        FactTable table = new FactTable();
+        int first = table.capacity();
+        for (int i = 0; i < first; i++) {
+            table.touch("Pair-" + i);
+        }
+        assertThat(table.capacity()).isEqualTo(first);
+        FactView.Fact last = table.touch("Pair-" + first); // its index holds Pair-0
+        assertThat(table.capacity()).isEqualTo(2 * first);
+        assertThat(table.get("Pair-" + first)).isSameAs(last);
+        for (int i = 0; i <= first; i++) {
+            assertThat(table.get("Pair-" + i)).isNotNull().extracting(f -> f.name).isEqualTo("Pair-" + i);
+        }
+        assertThat(table.size()).isEqualTo(first + 1);
+    }
+
+    /** Room made for a batch: the array and the table grow once, and the batch goes in without growing them. */
+    @Test
+    void ensureRoom_growsOnceForTheBatch_keepingEveryFact() {
+        FactTable table = new FactTable();
+        FactView.Fact held = table.touch("Pair-1");
+        FactView.Fact plain = table.touch("s1");
+        table.ensureRoom(20_000, 20_000);
+        int capacity = table.capacity();
+        assertThat(capacity).isGreaterThanOrEqualTo(2 * 20_001);
+        for (int i = 2; i < 20_002; i++) {
+            table.touch("s" + i);
+            table.touch("Pair-" + i);
+        }
+        assertThat(table.capacity()).isEqualTo(capacity);
+        assertThat(table.size()).isEqualTo(40_002);
+        assertThat(table.get("Pair-1")).isSameAs(held);
+        assertThat(table.get("s1")).isSameAs(plain);
+        assertThat(table.get("Pair-20001")).isNotNull();
+    }
 }
