@@ -103,6 +103,21 @@ public final class NameTable<V> implements Iterable<V> {
         return null;
     }
 
+    /**
+     * Puts {@code value} under {@code key} unless the key is held; returns the value held, or null when it put this
+     * one (one probe sequence either way).
+     */
+    @SuppressWarnings("unchecked")
+    public V putIfAbsent(String key, V value) {
+        int h = stored(key);
+        int i = slotOf(key, h);
+        if (hashes[i] != 0) {
+            return (V) entries[2 * i + 1];
+        }
+        insert(i, h, key, value);
+        return null;
+    }
+
     /** Fills the empty slot {@code i} (the end of the key's probe run) and grows the table when half full. */
     private void insert(int i, int h, String key, V value) {
         hashes[i] = h;

@@ -153,6 +153,40 @@ final class NodeIndex {
         }
     }
 
+    /**
+     * Puts a node under a name the index does not hold, at the end of the order; answers false, changing nothing,
+     * when it holds the name. The look-up and the put are one probe: a batch of new names asks for each one once.
+     */
+    boolean putNew(String name, int number, Node n) {
+        if (number >= 0) {
+            int k = number & numbered.length - 1;
+            Node at = numbered[k];
+            if (at != null && numbers[k] == number && at.name().equals(name)) {
+                return false;
+            }
+            if (at == null && spilled[k] == 0) {
+                numbered[k] = n;
+                numbers[k] = number;
+                inArray++;
+                added(n);
+                return true;
+            }
+            if (at != null && (inArray + inTable) * 2 >= numbered.length) {
+                growNumbered(); // as put does
+                return putNew(name, number, n);
+            }
+        }
+        if (table.putIfAbsent(name, n) != null) {
+            return false;
+        }
+        if (number >= 0) {
+            spilled[number & numbered.length - 1]++;
+            inTable++;
+        }
+        added(n);
+        return true;
+    }
+
     /** A name held already keeps its place, with the new node. */
     private void takePlace(Node old, Node n) {
         n.order = old.order;

@@ -54,7 +54,10 @@ final class PlainInstanceAdd {
     /**
      * Adds every frame of a batch of adds and returns their events, in order, or returns null, having changed
      * nothing, unless each one is a plain instance that passes every check on the knowledge base as it was before the
-     * batch (so none refers to another of the batch) and no name comes twice.
+     * batch (so none refers to another of the batch) and no name comes twice or is taken. The names are put in the
+     * name index as the last check (one probe each, where a look-up before the checks and a put after them took two,
+     * and a table of the batch's names a third); a name found there (taken, or given twice) takes the batch's names
+     * out again.
      */
     List<FrameEvent> tryBatch(List<? extends Change> changes, long version) {
         int n = changes.size();
@@ -62,27 +65,34 @@ final class PlainInstanceAdd {
         Node[] parents = new Node[n];
         int[] numbers = new int[n];
         Node[][] targetsOf = new Node[n][];
-        NameTable<Frame> names = new NameTable<>(n);
+        int hashed = 0;
         for (int i = 0; i < n; i++) {
-            if (!(changes.get(i) instanceof Change.Add a) || names.put(a.frame().name(), a.frame()) != null) {
+            if (!(changes.get(i) instanceof Change.Add a)) {
                 return null;
             }
             frames[i] = a.frame();
             numbers[i] = NameTable.numberOf(frames[i].name());
-            parents[i] = check(frames[i], numbers[i], null);
+            hashed += numbers[i] < 0 ? 1 : 0;
+            parents[i] = checkShape(frames[i], null);
             if (parents[i] == null) {
                 return null;
             }
             targetsOf[i] = copyOfTargets(frames[i].slots().size());
         }
-        int hashed = 0;
-        for (int number : numbers) {
-            hashed += number < 0 ? 1 : 0;
-        }
         nodes.ensureRoom(hashed, n - hashed);
+        Node[] made = new Node[n];
+        for (int i = 0; i < n; i++) {
+            made[i] = new Node(frames[i]);
+            if (!nodes.putNew(frames[i].name(), numbers[i], made[i])) {
+                for (int j = 0; j < i; j++) {
+                    nodes.remove(frames[j].name());
+                }
+                return null;
+            }
+        }
         FrameEvent[] events = new FrameEvent[n];
         for (int i = 0; i < n; i++) {
-            index(frames[i], numbers[i], parents[i], targetsOf[i], version);
+            link(made[i], parents[i], targetsOf[i], version);
             events[i] = new FrameEvent.Added(frames[i]);
         }
         return Arrays.asList(events);
@@ -105,12 +115,17 @@ final class PlainInstanceAdd {
      * reads once for this look-up and the index's put.
      */
     private Node check(Frame f, int number, Frame[] near) {
+        return nodes.get(f.name(), number) != null ? null : checkShape(f, near);
+    }
+
+    /** {@link #check} but for the name: whether it is free is not asked. */
+    private Node checkShape(Frame f, Frame[] near) {
         if (!f.isInstance() || f.provenance().durable() || !f.parts().isEmpty() || !f.linksTo().isEmpty()
                 || !f.linksFrom().isEmpty()) {
             return null;
         }
         ClassInfo cls = known(f.parentOrNull());
-        if (cls == null || nodes.get(f.name(), number) != null) {
+        if (cls == null) {
             return null;
         }
         List<Slot> slots = f.slots();
@@ -191,8 +206,14 @@ final class PlainInstanceAdd {
      */
     private void index(Frame f, int number, Node parent, Node[] targets, long version) {
         Node n = new Node(f);
-        n.revision = version;
         nodes.put(f.name(), number, n);
+        link(n, parent, targets, version);
+    }
+
+    /** The rest of {@link #index}, for a node the name index holds now. */
+    private void link(Node n, Node parent, Node[] targets, long version) {
+        Frame f = n.frame;
+        n.revision = version;
         n.liveIn = nodes;
         f.node = n;
         n.parent = parent;
