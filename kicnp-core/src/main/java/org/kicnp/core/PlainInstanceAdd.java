@@ -150,13 +150,13 @@ final class PlainInstanceAdd {
                     }
                 }
                 case INSTANCE -> {
-                    String argument = d == null ? null : d.argument();
-                    if (d == null || d.slot().type() != DataType.INSTANCE || argument == null
-                            || known(argument) == null || !(s.valueOrNull() instanceof Value.Ref ref)) {
+                    ClassInfo argument = d == null || d.slot().type() != DataType.INSTANCE ? null
+                            : known(d.argument());
+                    if (argument == null || !(s.valueOrNull() instanceof Value.Ref ref)) {
                         return null;
                     }
                     Node target = Node.find(nodes, ref.frame(), near);
-                    if (target == null || !isA(target.frame, argument)) {
+                    if (target == null || !isA(target, argument)) {
                         return null;
                     }
                     targets[i] = target;
@@ -189,13 +189,20 @@ final class PlainInstanceAdd {
         return c != null && c.frame.isClass() && c.complete ? c : null;
     }
 
-    /** Whether {@code target} is {@code ancestor} or lies below it, answered from a checked class; else false. */
-    private boolean isA(Frame target, String ancestor) {
-        if (target.name().equals(ancestor)) {
-            return true;
+    /**
+     * Whether {@code target} is the checked class {@code ancestor} or lies below it: up the parents of the knowledge
+     * base's nodes (acyclic, as every committed chain is), comparing frames by identity, so no name is read or looked
+     * up. A class's memo entry holds the frame its node holds (both come from the batch that added or last changed
+     * it, and any class change clears the memo); were it ever another, the answer is false and the caller takes the
+     * general path, which decides.
+     */
+    private static boolean isA(Node target, ClassInfo ancestor) {
+        for (Node n = target; n != null; n = n.parent) {
+            if (n.frame == ancestor.frame) {
+                return true;
+            }
         }
-        ClassInfo p = known(target.parentOrNull());
-        return p != null && p.isA(ancestor);
+        return false;
     }
 
     /**
