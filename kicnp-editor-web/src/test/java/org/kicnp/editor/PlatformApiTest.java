@@ -1,7 +1,7 @@
 package org.kicnp.editor;
 
 import static org.assertj.core.api.Assertions.assertThat;
-import static org.kicnp.editor.EditorApiTest.json;
+import static org.kicnp.editor.EditorApiFixture.json;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
