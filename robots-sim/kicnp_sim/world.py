@@ -111,6 +111,7 @@ class World:
             robot.cmd_v = robot.cmd_w = 0.0
             for action in robot.running():
                 action.control(self, self.dt)
+            robot.brake(robot.cmd_v == 0.0 and robot.cmd_w == 0.0)
         for user in self.users.values():
             user.update(self.dt)
             if user.target is not None and self._walk_blocked(user):

@@ -34,6 +34,12 @@ MOTION_SPECS = {
 }
 
 
+BRAKED_MASS_KG = 1.0e6
+"""The mass the contact solver gives a robot whose wheels (or legs) stand still, some 25,000 times the heaviest
+robot's: braked, it holds its place when another robot drives into it, and the driver is the one stopped (its
+bumper, its stall check or its stumble)."""
+
+
 class Robot:
     """One robot: body, limits, parts, running actions, and its state for the wire."""
 
@@ -57,6 +63,7 @@ class Robot:
         self.v = 0.0
         self.w = 0.0
         self.actions: dict[str, Action] = {}
+        self.braked = False
         self.body = pymunk.Body(self.MASS, float("inf"))
         self.body.position = (x, y)
         self.body.angle = heading
@@ -84,6 +91,14 @@ class Robot:
         a = body.angle
         body.velocity = (self.v * math.cos(a), self.v * math.sin(a))
         body.angular_velocity = self.w
+
+    def brake(self, on: bool) -> None:
+        """Brakes on while the robot is commanded to stand still, off while it drives: a robot at rest is not
+        shoved along by another that drives into it (the velocity function leaves no one any limit on force, so
+        two bodies of their real masses would split the contact and the standing one would be pushed away)."""
+        if on != self.braked:
+            self.braked = on
+            self.body.mass = BRAKED_MASS_KG if on else self.MASS
 
     def halt(self) -> None:
         """Stop at once (e.g. on a bumper hit): zero speeds now, not at the next step."""
