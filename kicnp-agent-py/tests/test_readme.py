@@ -28,6 +28,13 @@ class TeaRobotTest(GatewayTestCase):
     def test_teaRobot_bringsTea_whenThePlatformAsks_andStopsOnCtrlC(self):
         kind, token = self.gateway.agents["scout"]
         env = dict(os.environ, KICNP_TOKEN=token, KICNP_PORT=str(self.gateway.port), PYTHONPATH=str(ROOT))
+        if os.environ.get("KICNP_SDK_INSTALLED"):
+            # Run by a Python that has the SDK pip-installed (PythonSdkTest): the robot imports it from there.
+            del env["PYTHONPATH"]
+            where = subprocess.run([sys.executable, "-c", "import kicnp_agent; print(kicnp_agent.__file__)"],
+                                   env=env, cwd=str(EXAMPLE.parent), capture_output=True, text=True, check=True)
+            self.assertIn("site-packages", where.stdout)
+            self.assertNotIn(str(ROOT / "kicnp_agent"), where.stdout)
         robot = subprocess.Popen([sys.executable, str(EXAMPLE)], env=env, stdin=subprocess.DEVNULL,
                                  stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
         self.addCleanup(robot.kill)

@@ -116,6 +116,47 @@ class PythonSdkTest {
         }
     }
 
+    /**
+     * {@code pip install ./kicnp-agent-py} into a fresh virtual environment, as README tells a robot developer, and
+     * README's robot run by that environment's Python from the installed package (not the source tree): it registers,
+     * carries out a command and stops cleanly (test_readme.py, told by {@code KICNP_SDK_INSTALLED} to check where
+     * {@code kicnp_agent} comes from). pip fetches the build back end (setuptools, wheel) from the package index.
+     */
+    @Test
+    void pythonSdk_installedWithPip_runsReadmesRobot(@TempDir Path dir) throws Exception {
+        assumeTrue(succeeds("python3", "--version"), "python3 is not installed");
+        Path venv = dir.resolve("venv");
+        String python = venv.resolve("bin/python").toString();
+        assertThat(runs(600, "python3", "-m", "venv", venv.toString())).isEmpty();
+        assertThat(runs(600, python, "-m", "pip", "install", "--disable-pip-version-check", "-q",
+                SDK.toAbsolutePath().normalize().toString())).isEmpty();
+        try (Harness gateway = new Harness(GatewayConfig.defaults().withPort(0))) {
+            Run run = gateway.run(python, Map.of("KICNP_SDK_INSTALLED", "1"),
+                    "-m", "unittest", "discover", "-s", "tests", "-p", "test_readme.py", "-v");
+            assertThat(run.exit()).as("unittest exit status; its output:%n%s", run.output()).isZero();
+            assertThat(run.output()).contains("Ran 2 tests", "OK").doesNotContain("skipped");
+            assertThat(gateway.heard).contains("started py-tea", "ended py-tea: brought a cup of milk");
+        }
+    }
+
+    /** Runs a command to its end; answers its output when it failed, else an empty string. */
+    private static String runs(int seconds, String... command) throws Exception {
+        Process p = new ProcessBuilder(command).redirectErrorStream(true).start();
+        CompletableFuture<String> output = CompletableFuture.supplyAsync(() -> {
+            try {
+                return new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+            } catch (IOException e) {
+                return e.toString();
+            }
+        });
+        if (!p.waitFor(seconds, TimeUnit.SECONDS)) {
+            p.destroyForcibly();
+            return String.join(" ", command) + ": still running after " + seconds + " s";
+        }
+        return p.exitValue() == 0 ? "" : String.join(" ", command) + " exited " + p.exitValue() + ":\n"
+                + output.get(10, TimeUnit.SECONDS);
+    }
+
     /** What the Python suite printed, and how it exited. */
     record Run(int exit, String output) {
     }
@@ -143,7 +184,12 @@ class PythonSdkTest {
         }
 
         Run run(Map<String, String> env, String... args) throws Exception {
-            List<String> command = new ArrayList<>(List.of("python3"));
+            return run("python3", env, args);
+        }
+
+        /** As {@link #run(Map, String...)}, with the given Python interpreter. */
+        Run run(String python, Map<String, String> env, String... args) throws Exception {
+            List<String> command = new ArrayList<>(List.of(python));
             command.addAll(List.of(args));
             ProcessBuilder pb = new ProcessBuilder(command).directory(SDK.toFile());
             pb.environment().put("KICNP_PORT", Integer.toString(server.port()));
