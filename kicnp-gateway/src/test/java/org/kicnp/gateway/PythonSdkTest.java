@@ -13,6 +13,7 @@ import java.io.InputStreamReader;
 import java.io.OutputStreamWriter;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.security.KeyStore;
 import java.time.Duration;
@@ -127,15 +128,34 @@ class PythonSdkTest {
         assumeTrue(succeeds("python3", "--version"), "python3 is not installed");
         Path venv = dir.resolve("venv");
         String python = venv.resolve("bin/python").toString();
+        // pip builds in the directory it is given (build/, *.egg-info): a copy, so the source tree stays as it is.
+        Path copy = dir.resolve("kicnp-agent-py");
+        for (String part : List.of("pyproject.toml", "README.md", "kicnp_agent")) {
+            copyTree(SDK.resolve(part), copy.resolve(part));
+        }
         assertThat(runs(600, "python3", "-m", "venv", venv.toString())).isEmpty();
-        assertThat(runs(600, python, "-m", "pip", "install", "--disable-pip-version-check", "-q",
-                SDK.toAbsolutePath().normalize().toString())).isEmpty();
+        assertThat(runs(600, python, "-m", "pip", "install", "--disable-pip-version-check", "-q", copy.toString()))
+                .isEmpty();
         try (Harness gateway = new Harness(GatewayConfig.defaults().withPort(0))) {
             Run run = gateway.run(python, Map.of("KICNP_SDK_INSTALLED", "1"),
                     "-m", "unittest", "discover", "-s", "tests", "-p", "test_readme.py", "-v");
             assertThat(run.exit()).as("unittest exit status; its output:%n%s", run.output()).isZero();
             assertThat(run.output()).contains("Ran 2 tests", "OK").doesNotContain("skipped");
             assertThat(gateway.heard).contains("started py-tea", "ended py-tea: brought a cup of milk");
+        }
+    }
+
+    private static void copyTree(Path from, Path to) throws IOException {
+        try (var paths = Files.walk(from)) {
+            for (Path p : paths.filter(q -> !q.toString().contains("__pycache__")).toList()) {
+                Path target = to.resolve(from.relativize(p).toString());
+                if (Files.isDirectory(p)) {
+                    Files.createDirectories(target);
+                } else {
+                    Files.createDirectories(target.getParent());
+                    Files.copy(p, target);
+                }
+            }
         }
     }
 
