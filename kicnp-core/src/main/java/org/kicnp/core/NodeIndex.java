@@ -300,8 +300,8 @@ final class NodeIndex {
 
     /**
      * Doubles the array of numbered nodes. The nodes in it keep distinct indexes (their numbers differ modulo the old
-     * length, so modulo any larger power of two too); the numbered names in the hash table stay there, counted at their new
-     * indexes.
+     * length, so modulo any larger power of two too); the numbered names in the hash table stay there, counted at
+     * their new indexes.
      */
     private void growNumbered() {
         growNumbered(numbered.length * 2);

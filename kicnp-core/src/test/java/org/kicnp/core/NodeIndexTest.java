@@ -112,7 +112,7 @@ class NodeIndexTest {
         assertThat(index.size()).isEqualTo(first + 1);
     }
 
-    /** Room made for a batch: each part grows once, and the batch's names (numbered or not) go in without growing it. */
+    /** Room made for a batch: each part grows once, and the batch's names, numbered or not, go in without growth. */
     @Test
     void ensureRoom_growsOnceForTheBatch_keepingOrderAndNodes() {
         NodeIndex index = new NodeIndex();
