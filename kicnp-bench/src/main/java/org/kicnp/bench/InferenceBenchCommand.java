@@ -45,11 +45,12 @@ final class InferenceBenchCommand implements Callable<Integer> {
     // Both engines warm (their hot paths compiled) before the timed runs, as a rule engine runs in service: with the
     // earlier default of 3 runs of 2,000 the N = 10,000 runs timed the JIT compilers as much as the engines (the same
     // build's ratio ranged 0.78-1.87 over four runs, session 14), and on two cores the compiler threads take a core.
+    // After 20 runs of 10,000 both engines were still getting faster, after 60 no longer (docs/benchmarks.md).
     @Option(names = "--warmup-n", defaultValue = "10000",
             description = "Stimuli in each untimed warm-up run (default: ${DEFAULT-VALUE}).")
     int warmUpN;
 
-    @Option(names = "--warmup-runs", defaultValue = "20",
+    @Option(names = "--warmup-runs", defaultValue = "60",
             description = "Untimed warm-up runs per engine (default: ${DEFAULT-VALUE}).")
     int warmUpRuns;
 
