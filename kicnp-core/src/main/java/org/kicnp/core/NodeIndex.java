@@ -93,39 +93,60 @@ final class NodeIndex {
 
     /** As {@link #put(String, Node)}, given the name's {@linkplain NameTable#numberOf number}. */
     void put(String name, int number, Node n) {
+        place(name, number, n, true);
+    }
+
+    /**
+     * Puts a node under a name the index does not hold, at the end of the order; answers false, changing nothing,
+     * when it holds the name. The look-up and the put are one probe: a batch of new names asks for each one once.
+     */
+    boolean putNew(String name, int number, Node n) {
+        return place(name, number, n, false) == null;
+    }
+
+    /**
+     * Puts a node under a name, in the place of the node that name had ({@code replace}) or, when the name is held and
+     * not {@code replace}, not at all; answers the node the name had, or null for a new name (put at the end of the
+     * order).
+     */
+    private Node place(String name, int number, Node n, boolean replace) {
         if (number >= 0) {
             int k = number & numbered.length - 1;
             Node at = numbered[k];
             if (at != null && numbers[k] == number && at.name().equals(name)) {
-                numbered[k] = n;
-                takePlace(at, n);
-                return;
+                if (replace) {
+                    numbered[k] = n;
+                    takePlace(at, n);
+                }
+                return at;
             }
             if (at == null && spilled[k] == 0) {
                 numbered[k] = n;
                 numbers[k] = number;
                 inArray++;
                 added(n);
-                return;
+                return null;
             }
             if (at != null && (inArray + inTable) * 2 >= numbered.length) {
                 // Another number holds its index and the array is half full: grow it (this name is not held, or it
                 // would have been at its index or counted as spilled there), then put the name in the larger one.
                 growNumbered();
-                put(name, number, n);
-                return;
+                return place(name, number, n, replace);
             }
         }
-        Node old = table.put(name, n);
+        Node old = replace ? table.put(name, n) : table.putIfAbsent(name, n);
         if (old != null) {
-            takePlace(old, n);
-            return;
+            if (replace) {
+                takePlace(old, n);
+            }
+            return old;
         }
         if (number >= 0) {
             spilled[number & numbered.length - 1]++;
             inTable++;
         }
         added(n);
+        return null;
     }
 
     /**
@@ -151,40 +172,6 @@ final class NodeIndex {
         if (length > this.numbered.length) {
             growNumbered(length);
         }
-    }
-
-    /**
-     * Puts a node under a name the index does not hold, at the end of the order; answers false, changing nothing,
-     * when it holds the name. The look-up and the put are one probe: a batch of new names asks for each one once.
-     */
-    boolean putNew(String name, int number, Node n) {
-        if (number >= 0) {
-            int k = number & numbered.length - 1;
-            Node at = numbered[k];
-            if (at != null && numbers[k] == number && at.name().equals(name)) {
-                return false;
-            }
-            if (at == null && spilled[k] == 0) {
-                numbered[k] = n;
-                numbers[k] = number;
-                inArray++;
-                added(n);
-                return true;
-            }
-            if (at != null && (inArray + inTable) * 2 >= numbered.length) {
-                growNumbered(); // as put does
-                return putNew(name, number, n);
-            }
-        }
-        if (table.putIfAbsent(name, n) != null) {
-            return false;
-        }
-        if (number >= 0) {
-            spilled[number & numbered.length - 1]++;
-            inTable++;
-        }
-        added(n);
-        return true;
     }
 
     /** A name held already keeps its place, with the new node. */
