@@ -91,6 +91,7 @@ final class InferenceBenchCommand implements Callable<Integer> {
             Samples peerCpu = new Samples();
             Samples logical = new Samples();
             Samples store = new Samples();
+            Samples paired = new Samples();
             KicnpInferenceRun.Stored stored = KicnpInferenceRun.stored(w);
             long firings = 0;
             for (int r = 0; r < runs; r++) {
@@ -107,11 +108,12 @@ final class InferenceBenchCommand implements Callable<Integer> {
                 logical.add(l.seconds());
                 kicnp.add(k.seconds());
                 peer.add(d.seconds());
+                paired.add(k.seconds() / d.seconds()); // the two runs are seconds apart: the host's pace is shared
                 kicnpCpu.add(k.cpuSeconds());
                 peerCpu.add(d.cpuSeconds());
             }
             InferenceRun result = new InferenceRun(n, firings, kicnp.median(), peer.median(), kicnpCpu.median(),
-                    peerCpu.median(), logical.median(), store.median());
+                    peerCpu.median(), logical.median(), store.median(), paired.median(), paired.min(), paired.max());
             results.add(result);
             out.println(String.format(Locale.ROOT, "  N=%,d: %,d firings in both engines; K-ICNP %.3f s (CPU %.3f s), Drools %.3f s (CPU %.3f s), Drools insertLogical %.3f s, K-ICNP knowledge base only %.3f s",
                     n, firings, result.kicnpSeconds(), result.kicnpCpuSeconds(), result.droolsSeconds(),
@@ -140,19 +142,22 @@ final class InferenceBenchCommand implements Callable<Integer> {
         StringBuilder sb = new StringBuilder();
         sb.append(String.format(Locale.ROOT, "%nTime to quiescence (median of %d run%s per engine; same workload, same "
                 + "explicit priorities = Drools salience in both engines)%n", runs, runs == 1 ? "" : "s"));
-        sb.append(String.format(Locale.ROOT, "%10s %12s %10s %10s %8s  %-5s %10s %10s %8s %12s %8s %9s %9s%n", "N",
-                "firings", "K-ICNP s", "Drools s", "ratio", "goal", "K-ICNP cpu", "Drools cpu", "cpu ratio",
-                "Drools TMS s", "TMS ratio", "KB only s", "KB/Drools"));
+        sb.append(String.format(Locale.ROOT, "%10s %12s %10s %10s %8s %-16s  %-5s %10s %10s %8s %12s %8s %9s %9s%n",
+                "N", "firings", "K-ICNP s", "Drools s", "ratio", "paired (min-max)", "goal", "K-ICNP cpu", "Drools cpu",
+                "cpu ratio", "Drools TMS s", "TMS ratio", "KB only s", "KB/Drools"));
         for (InferenceRun r : results) {
-            String goal = GOAL_SIZES.contains(r.n()) ? (r.ratio() <= 1 ? "PASS" : "MISS") : "-";
+            String goal = GOAL_SIZES.contains(r.n()) ? (r.met() ? "PASS" : "MISS") : "-";
             sb.append(String.format(Locale.ROOT,
-                    "%,10d %,12d %10.3f %10.3f %8.2f  %-5s %10.3f %10.3f %8.2f %12.3f %8.2f %9.3f %9.2f%n",
-                    r.n(), r.firings(), r.kicnpSeconds(), r.droolsSeconds(), r.ratio(), goal, r.kicnpCpuSeconds(),
-                    r.droolsCpuSeconds(), r.cpuRatio(), r.droolsLogicalSeconds(), r.logicalRatio(), r.storeSeconds(),
-                    r.storeRatio()));
+                    "%,10d %,12d %10.3f %10.3f %8.2f %-16s  %-5s %10.3f %10.3f %8.2f %12.3f %8.2f %9.3f %9.2f%n",
+                    r.n(), r.firings(), r.kicnpSeconds(), r.droolsSeconds(), r.ratio(),
+                    String.format(Locale.ROOT, "%.2f (%.2f-%.2f)", r.pairedRatio(), r.pairedMin(), r.pairedMax()), goal,
+                    r.kicnpCpuSeconds(), r.droolsCpuSeconds(), r.cpuRatio(), r.droolsLogicalSeconds(), r.logicalRatio(),
+                    r.storeSeconds(), r.storeRatio()));
         }
-        sb.append("ratio = K-ICNP s / Drools s (wall clock, the JSON's ratio; Drools with plain insert); goal: ratio <= 1 at"
-                + " N = 10,000 and 100,000; cpu = CPU time of the engine thread.\n");
+        sb.append("ratio = K-ICNP s / Drools s (wall clock, the JSON's ratio; Drools with plain insert); paired = the median"
+                + " (and range) of each run's K-ICNP s / the Drools run right after it: this host's pace drifts by a"
+                + " third within a minute, and a pair shares it; goal: ratio <= 1 and paired <= 1 at N = 10,000 and"
+                + " 100,000; cpu = CPU time of the engine thread.\n");
         sb.append("Drools TMS = the same rules with insertLogical, Drools' truth maintenance, which K-ICNP always does (a"
                 + " derived instance goes when what it rests on goes); TMS ratio = K-ICNP s / Drools TMS s. Shown beside,"
                 + " not used for the goal.\n");
@@ -181,17 +186,27 @@ final class InferenceBenchCommand implements Callable<Integer> {
             InferenceRun r = results.get(i);
             sb.append(i == 0 ? "" : ", ").append(String.format(Locale.ROOT,
                     "{\"n\": %d, \"firings\": %d, \"kicnp_s\": %.6f, \"drools_s\": %.6f, \"ratio\": %.4f, "
-                            + "\"drools_logical_s\": %.6f, \"ratio_logical\": %.4f, \"kicnp_kb_only_s\": %.6f}",
+                            + "\"drools_logical_s\": %.6f, \"ratio_logical\": %.4f, \"kicnp_kb_only_s\": %.6f, "
+                            + "\"ratio_paired_median\": %.4f, \"ratio_paired_min\": %.4f, \"ratio_paired_max\": %.4f}",
                     r.n(), r.firings(), r.kicnpSeconds(), r.droolsSeconds(), r.ratio(), r.droolsLogicalSeconds(),
-                    r.logicalRatio(), r.storeSeconds()));
+                    r.logicalRatio(), r.storeSeconds(), r.pairedRatio(), r.pairedMin(), r.pairedMax()));
         }
         return sb.append(String.format(Locale.ROOT, "], \"script_us_median\": %.2f, \"stimulus_to_action_us_p99\": %.2f}",
                 f.scriptMedianMicros(), f.latencyP99Micros())).toString();
     }
 
-    /** One size's figures: medians of the timed runs. */
+    /**
+     * One size's figures: medians of the timed runs, and the median, least and greatest of the paired ratios (each
+     * K-ICNP run over the Drools run that follows it).
+     */
     record InferenceRun(int n, long firings, double kicnpSeconds, double droolsSeconds, double kicnpCpuSeconds,
-            double droolsCpuSeconds, double droolsLogicalSeconds, double storeSeconds) {
+            double droolsCpuSeconds, double droolsLogicalSeconds, double storeSeconds, double pairedRatio,
+            double pairedMin, double pairedMax) {
+        /** The goal: no slower than Drools, by the ratio of the medians and by the median of the paired ratios. */
+        boolean met() {
+            return ratio() <= 1 && pairedRatio <= 1;
+        }
+
         double storeRatio() {
             return storeSeconds / droolsSeconds;
         }

@@ -106,7 +106,8 @@ class InferenceBenchCommandTest {
                 .containsExactly("runs", "script_us_median", "stimulus_to_action_us_p99");
         JsonNode run = json.get("runs").get(0);
         assertThat(run.fieldNames()).toIterable().containsExactly("n", "firings", "kicnp_s", "drools_s", "ratio",
-                "drools_logical_s", "ratio_logical", "kicnp_kb_only_s");
+                "drools_logical_s", "ratio_logical", "kicnp_kb_only_s", "ratio_paired_median", "ratio_paired_min",
+                "ratio_paired_max");
         assertThat(run.get("n").asInt()).isEqualTo(200);
         assertThat(run.get("firings").asLong()).isEqualTo(new InferenceWorkload(200).expectedFirings()).isEqualTo(400);
         assertThat(run.get("kicnp_s").asDouble()).isPositive();
@@ -117,8 +118,38 @@ class InferenceBenchCommandTest {
                 run.get("kicnp_s").asDouble() / run.get("drools_logical_s").asDouble(),
                 org.assertj.core.data.Percentage.withPercentage(1));
         assertThat(run.get("kicnp_kb_only_s").asDouble()).isPositive();
-        assertThat(out.toString()).contains("KB only s").contains("KB/Drools");
+        // one run: its one pair is the median, the least and the greatest
+        assertThat(run.get("ratio_paired_median").asDouble()).isCloseTo(run.get("ratio").asDouble(),
+                org.assertj.core.data.Percentage.withPercentage(1));
+        assertThat(run.get("ratio_paired_min").asDouble()).isEqualTo(run.get("ratio_paired_median").asDouble());
+        assertThat(run.get("ratio_paired_max").asDouble()).isEqualTo(run.get("ratio_paired_median").asDouble());
+        assertThat(out.toString()).contains("KB only s").contains("KB/Drools").contains("paired (min-max)");
         assertThat(json.get("script_us_median").asDouble()).isPositive();
         assertThat(json.get("stimulus_to_action_us_p99").asDouble()).isPositive();
+    }
+
+    /** The goal needs both estimates at or under 1: the ratio of the medians and the median of the paired ratios. */
+    @Test
+    void table_marksTheGoalMetOnlyWhenBothTheRatioAndThePairedRatioAreAtMostOne() {
+        var f = new ActionLatencyProbe.Figures(100, 5, 6, 7, 8, 9, 10, 11, true, "GraalVM");
+        String both = InferenceBenchCommand.table(List.of(run(10_000, 0.9, 1.0, 0.95)), 3, f);
+        String medianOnly = InferenceBenchCommand.table(List.of(run(10_000, 0.9, 1.0, 1.08)), 3, f);
+        String pairedOnly = InferenceBenchCommand.table(List.of(run(100_000, 1.1, 1.0, 0.97)), 3, f);
+
+        assertThat(goalColumn(both)).isEqualTo("PASS");
+        assertThat(goalColumn(medianOnly)).isEqualTo("MISS");
+        assertThat(goalColumn(pairedOnly)).isEqualTo("MISS");
+        assertThat(medianOnly).contains("1.08 (0.90-1.30)");
+    }
+
+    private static InferenceBenchCommand.InferenceRun run(int n, double kicnp, double drools, double paired) {
+        return new InferenceBenchCommand.InferenceRun(n, 8, kicnp, drools, kicnp, drools, drools, 0.1, paired, 0.9, 1.3);
+    }
+
+    /** The goal column of the table's one row. */
+    private static String goalColumn(String table) {
+        String row = table.lines().filter(l -> l.trim().startsWith("10,000") || l.trim().startsWith("100,000"))
+                .findFirst().orElseThrow();
+        return row.contains("PASS") ? "PASS" : row.contains("MISS") ? "MISS" : "?";
     }
 }
