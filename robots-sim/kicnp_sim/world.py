@@ -21,6 +21,8 @@ from .users import User, face_from_seed, normalise
 
 DEFAULT_DT = 1.0 / 60.0
 USER_STOP_GAP_M = 0.01  # a walking user stops this far from a robot in the way
+ROBOT_STOP_GAP_M = 0.01  # a driving robot stops this far from another driving robot in the way
+ROBOT_STOP_COS = math.cos(math.radians(45.0))  # "in the way": within 45 degrees of the direction it drives
 START_POSES = {  # name: (x, y, heading in degrees)
     "robovie": (4.0, 3.2, -90.0),
     "pino": (2.5, 3.8, -90.0),
@@ -111,6 +113,11 @@ class World:
             robot.cmd_v = robot.cmd_w = 0.0
             for action in robot.running():
                 action.control(self, self.dt)
+        # Decided on every robot's command before any is changed, so two robots closing in on each other both hold.
+        held = [robot for robot in self.robots.values() if self._drive_blocked(robot)]
+        for robot in held:
+            robot.cmd_v = 0.0  # it may still turn on the spot
+        for robot in self.robots.values():
             robot.brake(robot.cmd_v == 0.0 and robot.cmd_w == 0.0)
         for user in self.users.values():
             user.update(self.dt)
@@ -150,6 +157,32 @@ class World:
             d_next = dist(nxt, robot.pos)
             if d_next < reach and d_next < dist(user.pos, robot.pos):
                 return True
+        return False
+
+    def _drive_blocked(self, robot: Robot) -> bool:
+        """Whether this step's drive would bring the robot within reach of another robot that is driving too and lies
+        within 45 degrees of its way: then it holds (as a robot's range sensors stop it short of a moving obstacle) and its stall check decides.
+        Two driving bodies meeting in the contact solver would shove each other, the heavier the lighter, and the
+        one pushed back would report 'blocked' while the other reached its goal through it. A robot standing still is
+        braked instead, and one driving into it is stopped by its bumper, stall check or stumble."""
+        v, _ = robot.drive()
+        if v == 0.0:
+            return False
+        x, y = robot.pos
+        ux, uy = math.cos(robot.heading), math.sin(robot.heading)
+        if v < 0.0:
+            ux, uy = -ux, -uy
+        nxt = (x + ux * abs(v) * self.dt, y + uy * abs(v) * self.dt)
+        for other in self.robots.values():
+            if other is robot or (other.cmd_v == 0.0 and other.cmd_w == 0.0):
+                continue
+            d_next = dist(nxt, other.pos)
+            if d_next >= robot.radius + other.radius + ROBOT_STOP_GAP_M:
+                continue
+            ox, oy = other.pos[0] - x, other.pos[1] - y
+            d = math.hypot(ox, oy)
+            if d == 0.0 or (ox * ux + oy * uy) / d > ROBOT_STOP_COS:
+                return True  # the other lies ahead: a robot alongside it may still slide away
         return False
 
     def _progress(self, action: Action, outcome: Optional[Outcome]) -> None:

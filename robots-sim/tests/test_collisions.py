@@ -41,3 +41,38 @@ def test_a_braked_robot_drives_off_when_commanded(sim: Sim) -> None:
     assert end["type"] == "action_ended", end
     assert only(seen, "sensor", robot="scout", sensor="arrival")
     assert abs(sim.state()["robots"]["scout"]["x"] - 6.5) <= 0.1
+
+
+@pytest.mark.parametrize(("first", "second"), [("robovie", "aibo"), ("robovie", "scout"), ("pino", "aibo")])
+def test_two_robots_driving_at_each_other_both_hold_and_neither_shoves_the_other(
+    sim: Sim, first: str, second: str
+) -> None:
+    sim.request("place_robot", robot=first, x=2.0, y=5.0, heading_deg=0)  # a clear lane along the north wall
+    sim.request("place_robot", robot=second, x=4.0, y=5.0, heading_deg=180)
+    sim.command(first, "go_to", "a", x=6.5, y=5.0)
+    sim.command(second, "go_to", "b", x=1.0, y=5.0)
+    end_a, seen = sim.run("a", max_s=30)
+    end_b = only(seen, "action_failed", id="b") or only(seen, "action_ended", id="b")
+    if not end_b:
+        end_b = [sim.run("b", max_s=30)[0]]
+    robots = sim.state()["robots"]
+    # both fail where they met: neither reached its goal through the other, neither was pushed back
+    assert end_a["type"] == "action_failed" and end_a["reason"].startswith("blocked"), end_a
+    assert end_b[0]["type"] == "action_failed" and end_b[0]["reason"].startswith("blocked"), end_b
+    gap = robots[second]["x"] - robots[first]["x"]
+    assert 2.0 < robots[first]["x"] and robots[second]["x"] < 4.0
+    radii = {name: sim.world.robots[name].radius for name in (first, second)}
+    assert radii[first] + radii[second] - 0.005 <= gap <= radii[first] + radii[second] + 0.1, gap
+
+
+def test_a_robot_held_by_another_drives_on_once_the_other_has_gone(sim: Sim) -> None:
+    sim.request("place_robot", robot="robovie", x=3.0, y=3.0, heading_deg=0)
+    sim.request("place_robot", robot="aibo", x=4.5, y=3.0, heading_deg=180)
+    sim.command("robovie", "go_to", "a", x=6.0, y=3.0, stall_s=30)
+    sim.command("aibo", "go_to", "b", x=1.0, y=3.0, stall_s=2)
+    end_b, _ = sim.run("b", max_s=30)
+    assert end_b["type"] == "action_failed", end_b
+    sim.command("aibo", "go_to", "away", x=3.9, y=5.0)  # it steps aside, and robovie is free to go on
+    end_a, _ = sim.run("a", max_s=60)
+    assert end_a["type"] == "action_ended", end_a
+    assert abs(sim.state()["robots"]["robovie"]["x"] - 6.0) <= 0.1
