@@ -1,5 +1,6 @@
 package org.kicnp.core;
 
+import java.util.ArrayList;
 import java.util.List;
 
 /**
@@ -13,4 +14,21 @@ public interface CommitLog {
     CommitLog NONE = (version, events) -> { };
 
     void append(long version, List<FrameEvent> durableEvents);
+
+    /** The events the commit log must keep: those of frames kept on disk before or after the change. */
+    static List<FrameEvent> durableEvents(List<FrameEvent> events) {
+        List<FrameEvent> out = null;
+        for (int i = 0, n = events.size(); i < n; i++) {
+            FrameEvent e = events.get(i);
+            boolean durable = e.frame().provenance().durable()
+                    || e instanceof FrameEvent.Replaced r && r.before_().provenance().durable();
+            if (durable) {
+                if (out == null) {
+                    out = new ArrayList<>(n - i);
+                }
+                out.add(e);
+            }
+        }
+        return out == null ? List.of() : out;
+    }
 }

@@ -54,6 +54,14 @@ public final class Frame {
         this.priority = 0;
     }
 
+    /**
+     * A runtime instance frame with these slots, made without the checks of {@link #instance(String, String,
+     * Provenance, Slot...)}: for a knowledge base that has made those checks another way ({@link InstanceShape}).
+     */
+    static Frame plain(String name, String parent, Slot[] slots) {
+        return new Frame(name, parent, List.of(slots), Provenance.RUNTIME);
+    }
+
     /** An immutable copy; most frames have no parts or links, so a builder leaves those lists null until used. */
     private static <T> List<T> copy(List<T> items) {
         return items == null || items.isEmpty() ? List.of() : List.copyOf(items);

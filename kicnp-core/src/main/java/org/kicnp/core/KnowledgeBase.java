@@ -39,6 +39,8 @@ public final class KnowledgeBase {
     private long version;
     /** Adds made by {@link PlainInstanceAdd}, for tests that must know the short cut was taken. */
     private long plainAdds;
+    /** Counts the clearings of {@link #classes}: what a prepared {@link InstanceShape} found holds while it stays. */
+    private long classEpoch;
     /** Whether plain instances take {@link PlainInstanceAdd}; off only in tests that compare with the general path. */
     private boolean shortCuts = true;
 
@@ -272,6 +274,34 @@ public final class KnowledgeBase {
         return apply(List.of(new Change.Add(frame)), referred);
     }
 
+    /**
+     * Adds the instance of {@code shape} named {@code name} with {@code values} in its slots and returns its frame: the
+     * outcome of {@code add(frame, referred)} for that frame (the same change, or the same exception), made with the
+     * checks of the shape's class and slot declarations done once while no class changes, and none of the name but
+     * that it is the class's name, '-' and digits (an inference engine's adds; any other name takes the general way).
+     *
+     * @param referred frames the values may refer to, at hand (see {@link #add(Frame, Frame...)}); nulls are skipped
+     * @throws InvalidFrameException when the name is not a valid frame name or a value is not a reference
+     * @throws BatchRejectedException when the knowledge base refuses the instance, as {@link #add(Frame)} would
+     */
+    public Frame addInstance(InstanceShape shape, String name, Value[] values, Frame... referred) {
+        requireNonNull(shape, "shape");
+        requireNonNull(name, "name");
+        requireNonNull(referred, "referred");
+        return applied(() -> commitInstance(shape, name, values, referred)).events().getFirst().frame();
+    }
+
+    private ChangeSet commitInstance(InstanceShape shape, String name, Value[] values, Frame[] referred) {
+        List<FrameEvent> added = shortCuts ? plain.tryShaped(shape, name, values, referred, version + 1, classEpoch)
+                : null;
+        if (added == null) {
+            return commit(List.of(new Change.Add(shape.frame(name, values))), referred);
+        }
+        plainAdds++;
+        version++;
+        return new ChangeSet(version, added);
+    }
+
     public ChangeSet replace(Frame frame) {
         return apply(List.of(new Change.Replace(frame)));
     }
@@ -298,11 +328,19 @@ public final class KnowledgeBase {
     /** As {@link #apply(List)}, with frames the batch's frames may refer to at hand ({@link Node#find}), or null. */
     private ChangeSet apply(List<? extends Change> changes, Frame[] near) {
         requireNonNull(changes, "changes");
+        return applied(() -> commit(changes, near));
+    }
+
+    /**
+     * Commits under the write lock and {@linkplain Delivery#queue readies} the change set there, in commit order; then,
+     * with the lock released, hands it to the listeners.
+     */
+    private ChangeSet applied(Supplier<ChangeSet> commit) {
         ChangeSet committed;
         boolean first;
         lock.writeLock().lock();
         try {
-            committed = commit(changes, near);
+            committed = commit.get();
             first = delivery.queue(committed);
         } finally {
             lock.writeLock().unlock();
@@ -362,18 +400,8 @@ public final class KnowledgeBase {
      */
     ChangeSet commitStaged(long stagedAt, Supplier<List<FrameEvent>> finish, PreparedNodes prepared,
             boolean classesUnchanged, Supplier<List<Change>> adds) {
-        ChangeSet committed;
-        boolean first;
-        lock.writeLock().lock();
-        try {
-            committed = version == stagedAt ? publish(finish.get(), classesUnchanged, prepared, null)
-                    : commit(adds.get(), null);
-            first = delivery.queue(committed);
-        } finally {
-            lock.writeLock().unlock();
-        }
-        delivery.deliver(committed, first);
-        return committed;
+        return applied(() -> version == stagedAt ? publish(finish.get(), classesUnchanged, prepared, null)
+                : commit(adds.get(), null));
     }
 
     public void addListener(KnowledgeListener listener) {
@@ -417,7 +445,7 @@ public final class KnowledgeBase {
         if (events.isEmpty()) {
             return new ChangeSet(version, events);
         }
-        List<FrameEvent> durable = durable(events);
+        List<FrameEvent> durable = CommitLog.durableEvents(events);
         if (!durable.isEmpty()) {
             try {
                 commitLog.append(version + 1, durable);
@@ -429,6 +457,7 @@ public final class KnowledgeBase {
         version++;
         if (!classesUnchanged) {
             classes.clear();
+            classEpoch++;
         }
         if (prepared != null) {
             prepared.attach(nodes, version);
@@ -436,23 +465,6 @@ public final class KnowledgeBase {
             Indexer.apply(nodes, events, version, refs, near);
         }
         return new ChangeSet(version, events);
-    }
-
-    /** The events the commit log must keep: those of frames kept on disk before or after the change. */
-    private static List<FrameEvent> durable(List<FrameEvent> events) {
-        List<FrameEvent> out = null;
-        for (int i = 0, n = events.size(); i < n; i++) {
-            FrameEvent e = events.get(i);
-            boolean durable = e.frame().provenance().durable()
-                    || e instanceof FrameEvent.Replaced r && r.before_().provenance().durable();
-            if (durable) {
-                if (out == null) {
-                    out = new ArrayList<>(n - i);
-                }
-                out.add(e);
-            }
-        }
-        return out == null ? List.of() : out;
     }
 
     private Node node(String name) {

@@ -166,11 +166,84 @@ final class PlainInstanceAdd {
                 }
             }
         }
+        return classNode(cls);
+    }
+
+    /** The node of a checked class, or null when the knowledge base holds another frame of its name. */
+    private Node classNode(ClassInfo cls) {
         Node parent = cls.frame.node;
         if (parent == null || parent.liveIn != nodes) {
             parent = nodes.get(cls.frame.name()); // a frame shared with another knowledge base points at its node there
         }
         return parent != null && parent.frame == cls.frame ? parent : null;
+    }
+
+    /**
+     * Makes one change, the add of the instance of a {@linkplain InstanceShape prepared shape} named {@code name}
+     * with {@code values} in its slots, when it passes every check, and returns its event; or returns null, having
+     * changed nothing, when any check fails or cannot be answered at once (the caller then adds the frame the general
+     * way, which reports the problems). The checks are those of {@link #tryAdd} for such a frame; the class and its
+     * slot declarations are checked once per shape while no class changes ({@code epoch}), and the name is known to be
+     * valid when it is the class's name, '-' and digits.
+     */
+    List<FrameEvent> tryShaped(InstanceShape shape, String name, Value[] values, Frame[] near, long version,
+            long epoch) {
+        InstanceShape.Resolution r = resolve(shape, epoch);
+        int number = NameTable.numberOf(name);
+        if (r == null || values.length != r.arguments().length || !shape.names(name, number)) {
+            return null;
+        }
+        int n = values.length;
+        if (targets.length < n) {
+            targets = new Node[Math.max(n, 2 * targets.length)];
+        }
+        for (int i = 0; i < n; i++) {
+            Node target = values[i] instanceof Value.Ref ref ? Node.find(nodes, ref.frame(), near) : null;
+            if (target == null || !isA(target, r.arguments()[i])) {
+                return null;
+            }
+            targets[i] = target;
+        }
+        Frame f = Frame.plain(name, shape.className(), shape.slots(values));
+        Node node = new Node(f);
+        if (!nodes.putNew(name, number, node)) {
+            return null;
+        }
+        link(node, r.classNode(), targets, version);
+        return List.of(new FrameEvent.Added(f));
+    }
+
+    /**
+     * What this knowledge base finds for a shape while its classes are at {@code epoch}: kept in the shape, and
+     * worked out again after any class changed. Null when the class is not a checked class or a slot is not one of
+     * its instance slots (not kept: the general path reports it, and a later class change may mend it).
+     */
+    private InstanceShape.Resolution resolve(InstanceShape shape, long epoch) {
+        InstanceShape.Resolution r = shape.resolution();
+        if (r != null && r.nodes() == nodes && r.epoch() == epoch) {
+            return r;
+        }
+        ClassInfo cls = known(shape.className());
+        if (cls == null) {
+            return null;
+        }
+        Declarations declared = cls.declarations();
+        List<Slot> templates = shape.templates();
+        ClassInfo[] arguments = new ClassInfo[templates.size()];
+        for (int i = 0; i < arguments.length; i++) {
+            Declarations.Declaration d = declared.find(templates.get(i).name());
+            arguments[i] = d == null || d.slot().type() != DataType.INSTANCE ? null : known(d.argument());
+            if (arguments[i] == null) {
+                return null;
+            }
+        }
+        Node parent = classNode(cls);
+        if (parent == null) {
+            return null;
+        }
+        r = new InstanceShape.Resolution(nodes, epoch, parent, arguments);
+        shape.resolved(r);
+        return r;
     }
 
     /**

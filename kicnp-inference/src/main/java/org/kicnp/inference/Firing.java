@@ -87,15 +87,16 @@ final class Firing {
             Derivation d = new Derivation(name, r.frame(), full, checked, firing, trigger, Optional.empty());
             supports.markFired(a.key(), refs);
             FactView.Fact record = supports.record(d, r, refs);
-            Slot[] slots = slotsOf(r, full, refs);
             try {
-                Frame instance = Frame.instance(name, r.frame(), Provenance.RUNTIME, slots);
                 if (full.size() == refs.length) {
+                    Frame instance = kb.addInstance(r.shape(), name, valuesOf(refs), framesOf(refs));
                     // Its slots hold the required slots' facts in order: refs (shared: the activation is done with).
+                    // Set before the engine hears of the add: its event is handled after this firing.
                     record.links = refs;
                     record.linksOf = instance;
+                } else {
+                    kb.add(Frame.instance(name, r.frame(), Provenance.RUNTIME, slotsOf(full)), framesOf(refs));
                 }
-                kb.add(instance, framesOf(refs));
                 made.added(record);
                 break;
             } catch (KnowledgeException e) {
@@ -121,21 +122,23 @@ final class Firing {
         }
     }
 
-    /** The slots of a firing's instance: each slot of the binding holding its instance, in the binding's order. */
-    private static Slot[] slotsOf(Rule r, Map<String, String> full, FactView.Fact[] refs) {
+    /** The slots of a firing's instance that binds optional slots: each slot of the binding, in its order. */
+    private static Slot[] slotsOf(Map<String, String> full) {
         Slot[] slots = new Slot[full.size()];
-        if (full.size() == refs.length) { // the required slots, in order: their facts' records are at hand
-            List<Slot> templates = r.requiredTemplates();
-            for (int i = 0; i < refs.length; i++) {
-                slots[i] = templates.get(i).withValue(refs[i].ref());
-            }
-        } else {
-            int i = 0;
-            for (Map.Entry<String, String> e : full.entrySet()) {
-                slots[i++] = Slot.ofValue(e.getKey(), DataType.INSTANCE, Value.ref(e.getValue()));
-            }
+        int i = 0;
+        for (Map.Entry<String, String> e : full.entrySet()) {
+            slots[i++] = Slot.ofValue(e.getKey(), DataType.INSTANCE, Value.ref(e.getValue()));
         }
         return slots;
+    }
+
+    /** The values of the required slots: a reference to each bound fact, in order. */
+    private static Value[] valuesOf(FactView.Fact[] refs) {
+        Value[] out = new Value[refs.length];
+        for (int i = 0; i < refs.length; i++) {
+            out[i] = refs[i].ref();
+        }
+        return out;
     }
 
     /** The bound facts' frames as the engine last saw them (null where it has none): those the new instance names. */

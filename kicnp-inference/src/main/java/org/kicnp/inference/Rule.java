@@ -5,8 +5,8 @@ import static java.util.Objects.requireNonNull;
 import java.util.List;
 import java.util.Optional;
 import java.util.stream.Stream;
-import org.kicnp.core.DataType;
-import org.kicnp.core.Slot;
+import org.kicnp.core.InstanceShape;
+import org.kicnp.core.KnowledgeBase;
 
 /**
  * A behavior frame compiled for matching: its required instance slots (which must all be bound to fire), its
@@ -17,20 +17,19 @@ import org.kicnp.core.Slot;
  * rule is compiled; an edit of the frame recompiles the rule; kept so that instances removed together with their
  * frame still get their {@code onDestroy}). {@code requiredSlots}:
  * the required slots' names in order, the keys of every binding the rule fires with ({@link Binding}).
- * {@code requiredTemplates}: an instance slot without a value for each of them, in that order, which a firing fills
- * ({@link Slot#withValue}) to make its instance's slots.
+ * {@code shape}: the frame's instances with those slots in that order, prepared for the knowledge base
+ * ({@link KnowledgeBase#addInstance}): a firing that binds no optional slot adds its instance through it.
  */
 record Rule(String frame, int priority, int depth, int conditionCount, List<SlotPattern> required,
             List<SlotPattern> optional, List<SlotPattern> patterns, List<String> uniqueSlots, boolean claims,
             boolean scripted, Optional<String> onInstantiate, Optional<String> onDestroy, List<String> requiredSlots,
-            List<Slot> requiredTemplates) {
+            InstanceShape shape) {
     Rule {
         required = List.copyOf(required);
         requiredSlots = List.copyOf(requiredSlots);
-        requiredTemplates = List.copyOf(requiredTemplates);
-        if (requiredTemplates.size() != requiredSlots.size()) {
-            throw new IllegalArgumentException("Rule " + frame + ": " + requiredTemplates.size() + " slot templates for "
-                    + requiredSlots.size() + " required slots.");
+        if (!shape.className().equals(frame) || shape.templates().size() != requiredSlots.size()) {
+            throw new IllegalArgumentException("Rule " + frame + ": " + shape + " for the required slots "
+                    + requiredSlots + ".");
         }
         optional = List.copyOf(optional);
         patterns = List.copyOf(patterns);
@@ -54,8 +53,7 @@ record Rule(String frame, int priority, int depth, int conditionCount, List<Slot
         boolean scripted = all.stream().anyMatch(SlotPattern::isScript);
         List<String> slots = required.stream().map(SlotPattern::slot).toList();
         return new Rule(frame, priority, depth, conditionCount, required, optional, all, unique, claims, scripted,
-                onInstantiate, onDestroy, slots,
-                slots.stream().map(name -> Slot.builder(name, DataType.INSTANCE).build()).toList());
+                onInstantiate, onDestroy, slots, InstanceShape.of(frame, slots));
     }
 
     /** Rules are compared by identity: one compiled rule per frame version. */
