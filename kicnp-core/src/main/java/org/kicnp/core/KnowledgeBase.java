@@ -281,6 +281,7 @@ public final class KnowledgeBase {
      * that it is the class's name, '-' and digits (an inference engine's adds; any other name takes the general way).
      *
      * @param referred frames the values may refer to, at hand (see {@link #add(Frame, Frame...)}); nulls are skipped
+     * @throws IllegalArgumentException when {@code values} are not as many as the shape's slots
      * @throws InvalidFrameException when the name is not a valid frame name or a value is not a reference
      * @throws BatchRejectedException when the knowledge base refuses the instance, as {@link #add(Frame)} would
      */
