@@ -2,6 +2,10 @@ package org.kicnp.core;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
+import static org.kicnp.core.TwinKnowledgeBases.assertSameState;
+import static org.kicnp.core.TwinKnowledgeBases.kb;
+import static org.kicnp.core.TwinKnowledgeBases.outcome;
+import static org.kicnp.core.TwinKnowledgeBases.referred;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -13,7 +17,7 @@ import org.junit.jupiter.api.Test;
  * the general way does (a twin knowledge base {@linkplain KnowledgeBase#withoutShortCuts without short cuts}): the
  * same refusal, frames, indexes and revisions — for names of every form, values that are no references or name
  * removed, wrong or missing frames, shapes whose class or slots do not fit, and between them class edits that change
- * what a shape found (an argument retyped, a slot dropped, the class removed and made again).
+ * what a shape found (an argument retyped, a slot dropped, a class moved in the hierarchy).
  */
 class InstanceShapeTest {
     private static final List<InstanceShape> SHAPES = List.of(
@@ -26,27 +30,6 @@ class InstanceShapeTest {
             InstanceShape.of("Ghost", List.of("mA")), // no such class
             InstanceShape.of("inst", List.of("mA")), // an instance, not a class
             InstanceShape.of("StimA", List.of()));
-
-    /** Thing; Stim (key) with StimA, StimB; Derived; Pair (mA: StimA, mB: StimB); Triple, a Pair (mC: Stim). */
-    private static KnowledgeBase kb() {
-        KnowledgeBase kb = KnowledgeBase.create();
-        kb.apply(List.of(
-                new Change.Add(Frames.root("Thing")),
-                new Change.Add(Frame.classFrame("Stim").parent("Thing")
-                        .slot(Slot.builder("key", DataType.INTEGER).build()).build()),
-                new Change.Add(Frames.cls("StimA", "Stim")),
-                new Change.Add(Frames.cls("StimB", "Stim")),
-                new Change.Add(Frames.root("Derived")),
-                pairClass("StimB"),
-                new Change.Add(Frame.classFrame("Triple").parent("Pair")
-                        .slot(Frames.instanceSlot("mC", "Stim")).build()),
-                new Change.Add(Frame.instance("inst", "Thing").build())));
-        for (int i = 1; i <= 6; i++) {
-            kb.add(Frame.instance("s" + i, i % 2 == 0 ? "StimB" : "StimA").provenance(Provenance.RUNTIME)
-                    .slot(Slot.ofValue("key", DataType.INTEGER, Value.of(i))).build());
-        }
-        return kb;
-    }
 
     private static Change pairClass(String second) {
         return new Change.Add(Frame.classFrame("Pair").parent("Derived")
@@ -182,42 +165,5 @@ class InstanceShapeTest {
                     : Value.ref(fits.get(r.nextInt(fits.size())).name());
         }
         return out;
-    }
-
-    /** Frames at hand: some live, some removed since, some from another knowledge base; nulls too. */
-    private static Frame[] referred(Random r, KnowledgeBase kb, List<Frame> removed) {
-        List<Frame> live = kb.frames();
-        Frame[] out = new Frame[r.nextInt(4)];
-        for (int i = 0; i < out.length; i++) {
-            int from = r.nextInt(10);
-            out[i] = from == 0 ? null
-                    : from < 3 && !removed.isEmpty() ? removed.get(r.nextInt(removed.size()))
-                    : from == 3 ? kb().require("s" + (1 + r.nextInt(6)))
-                    : live.get(r.nextInt(live.size()));
-        }
-        return out;
-    }
-
-    private static String outcome(Runnable change) {
-        try {
-            change.run();
-            return "done";
-        } catch (KnowledgeException e) {
-            return e.getClass().getSimpleName() + ": " + e.getMessage();
-        }
-    }
-
-    private static void assertSameState(KnowledgeBase quick, KnowledgeBase general) {
-        assertThat(quick.frames()).isEqualTo(general.frames());
-        assertThat(quick.version()).isEqualTo(general.version());
-        for (Frame f : general.frames()) {
-            String n = f.name();
-            assertThat(quick.revision(n)).as("revision of %s", n).isEqualTo(general.revision(n));
-            assertThat(quick.referrers(n)).as("referrers of %s", n).isEqualTo(general.referrers(n));
-            assertThat(quick.children(n)).as("children of %s", n).isEqualTo(general.children(n));
-            if (f.isClass()) {
-                assertThat(quick.instancesOf(n)).as("instances of %s", n).isEqualTo(general.instancesOf(n));
-            }
-        }
     }
 }
