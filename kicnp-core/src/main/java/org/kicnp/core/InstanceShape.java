@@ -23,8 +23,8 @@ public final class InstanceShape {
     private volatile Resolution resolution;
 
     /**
-     * What a knowledge base found: its class's node and checked entry, and the checked class each slot's value must
-     * be an instance of, valid while that knowledge base's classes are as they were ({@code epoch}).
+     * What a knowledge base found: the node of the shape's class, and the checked class each slot's value must be an
+     * instance of; valid while that knowledge base's classes are as they were ({@code epoch}).
      */
     record Resolution(NodeIndex nodes, long epoch, Node classNode, ClassInfo[] arguments) {
     }

@@ -91,7 +91,7 @@ final class Firing {
                 if (full.size() == refs.length) {
                     Frame instance = kb.addInstance(r.shape(), name, valuesOf(refs), framesOf(refs));
                     // Its slots hold the required slots' facts in order: refs (shared: the activation is done with).
-                    // Set before the engine hears of the add: its event is handled after this firing.
+                    // Set after the add, yet before the engine handles its event: that waits for the next drain.
                     record.links = refs;
                     record.linksOf = instance;
                 } else {
