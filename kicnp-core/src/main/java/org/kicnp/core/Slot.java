@@ -18,47 +18,53 @@ public final class Slot {
     private static final int REACTIVE = 8;
 
     private final String name;
-    private final DataType type;
-    private final int flags;
     private final Value value;
-    private final Value defaultValue;
-    private final Condition condition;
-    private final String argument;
-    private final String role;
-    private final String from;
-    private final String frameRelated;
-    private final List<String> frameListRelated;
-    private final Demons demons;
+    /** Everything but the name and the value: shared by the slots made from one another ({@link #withValue}). */
+    private final Facets facets;
+
+    /**
+     * A slot's facets besides its name and value. A slot filled from another ({@link #withValue}: an engine fills its
+     * rules' slots at every firing) shares them, and so do all plain slots of one type (a value and nothing else, as
+     * sensors' and engines' instances hold them): a slot is then three references, not twelve fields.
+     */
+    private record Facets(DataType type, int flags, Value defaultValue, Condition condition, String argument,
+            String role, String from, String frameRelated, List<String> frameListRelated, Demons demons) {
+        private static final Facets[] PLAIN = plain();
+
+        private static Facets[] plain() {
+            Facets[] out = new Facets[DataType.values().length];
+            for (DataType t : DataType.values()) {
+                out[t.ordinal()] = new Facets(t, SHARED | REACTIVE, null, Condition.ANY, null, null, null, null,
+                        List.of(), null);
+            }
+            return out;
+        }
+
+        /** These facets, or the shared plain facets of the type when they are those. */
+        static Facets of(DataType type, int flags, Value defaultValue, Condition condition, String argument,
+                String role, String from, String frameRelated, List<String> frameListRelated, Demons demons) {
+            if (flags == (SHARED | REACTIVE) && defaultValue == null && condition instanceof Condition.Any
+                    && argument == null && role == null && from == null && frameRelated == null
+                    && frameListRelated.isEmpty() && demons == null) {
+                return PLAIN[type.ordinal()];
+            }
+            return new Facets(type, flags, defaultValue, condition, argument, role, from, frameRelated,
+                    frameListRelated, demons);
+        }
+    }
 
     private Slot(Builder b) {
         this.name = b.name;
-        this.type = b.type;
-        this.flags = b.flags;
         this.value = b.value;
-        this.defaultValue = b.defaultValue;
-        this.condition = b.condition;
-        this.argument = b.argument;
-        this.role = b.role;
-        this.from = b.from;
-        this.frameRelated = b.frameRelated;
-        this.frameListRelated = b.frameListRelated;
-        this.demons = b.demons;
+        this.facets = Facets.of(b.type, b.flags, b.defaultValue, b.condition, b.argument, b.role, b.from,
+                b.frameRelated, b.frameListRelated, b.demons);
     }
 
     /** This slot with {@code value} in place of its own: same name, type and facets (a copy, not a builder). */
     private Slot(Slot s, Value value) {
         this.name = s.name;
-        this.type = s.type;
-        this.flags = s.flags;
         this.value = value;
-        this.defaultValue = s.defaultValue;
-        this.condition = s.condition;
-        this.argument = s.argument;
-        this.role = s.role;
-        this.from = s.from;
-        this.frameRelated = s.frameRelated;
-        this.frameListRelated = s.frameListRelated;
-        this.demons = s.demons;
+        this.facets = s.facets;
     }
 
     /** Starts a slot with the paper's defaults: not required, shared, not unique, reactive, condition ANY. */
@@ -83,10 +89,10 @@ public final class Slot {
      */
     public Slot withValue(Value value) {
         requireNonNull(value, "value");
-        if (defaultValue != null) {
+        if (facets.defaultValue != null) {
             throw bothValueAndDefault(name);
         }
-        checkFits(name, type, value, "value");
+        checkFits(name, facets.type, value, "value");
         return new Slot(this, value);
     }
 
@@ -118,7 +124,7 @@ public final class Slot {
     }
 
     public DataType type() {
-        return type;
+        return facets.type;
     }
 
     public Optional<Value> value() {
@@ -126,7 +132,7 @@ public final class Slot {
     }
 
     public Optional<Value> defaultValue() {
-        return Optional.ofNullable(defaultValue);
+        return Optional.ofNullable(facets.defaultValue);
     }
 
     /** The value if there is one, else the default. */
@@ -139,50 +145,50 @@ public final class Slot {
      * engine's matching reads one per fact and index), where an Optional per read is measurable garbage.
      */
     public Value effectiveValueOrNull() {
-        return value != null ? value : defaultValue;
+        return value != null ? value : facets.defaultValue;
     }
 
     public Condition condition() {
-        return condition;
+        return facets.condition;
     }
 
     /** For an instance slot, the class its value must be an instance of; for a list, the item type or class. */
     public Optional<String> argument() {
-        return Optional.ofNullable(argument);
+        return Optional.ofNullable(facets.argument);
     }
 
     public Optional<String> role() {
-        return Optional.ofNullable(role);
+        return Optional.ofNullable(facets.role);
     }
 
     /** Table 2's "from": the source of the slot's value (a sensor, an agent, a frame). */
     public Optional<String> from() {
-        return Optional.ofNullable(from);
+        return Optional.ofNullable(facets.from);
     }
 
     public Optional<String> frameRelated() {
-        return Optional.ofNullable(frameRelated);
+        return Optional.ofNullable(facets.frameRelated);
     }
 
     public List<String> frameListRelated() {
-        return frameListRelated;
+        return facets.frameListRelated;
     }
 
     public boolean required() {
-        return (flags & REQUIRED) != 0;
+        return (facets.flags & REQUIRED) != 0;
     }
 
     public boolean shared() {
-        return (flags & SHARED) != 0;
+        return (facets.flags & SHARED) != 0;
     }
 
     public boolean unique() {
-        return (flags & UNIQUE) != 0;
+        return (facets.flags & UNIQUE) != 0;
     }
 
     /** Whether writes to this slot re-trigger matching; demons write to non-reactive slots to avoid loops. */
     public boolean reactive() {
-        return (flags & REACTIVE) != 0;
+        return (facets.flags & REACTIVE) != 0;
     }
 
     // Null-returning twins of the accessors above, for the knowledge base's hot paths (validation, indexing,
@@ -193,45 +199,42 @@ public final class Slot {
     }
 
     Value defaultOrNull() {
-        return defaultValue;
+        return facets.defaultValue;
     }
 
     String argumentOrNull() {
-        return argument;
+        return facets.argument;
     }
 
     String frameRelatedOrNull() {
-        return frameRelated;
+        return facets.frameRelated;
     }
 
     public Optional<String> onNeeded() {
-        return Optional.ofNullable(demons == null ? null : demons.onNeeded);
+        return Optional.ofNullable(facets.demons == null ? null : facets.demons.onNeeded);
     }
 
     public Optional<String> onAdded() {
-        return Optional.ofNullable(demons == null ? null : demons.onAdded);
+        return Optional.ofNullable(facets.demons == null ? null : facets.demons.onAdded);
     }
 
     public Optional<String> onRemoved() {
-        return Optional.ofNullable(demons == null ? null : demons.onRemoved);
+        return Optional.ofNullable(facets.demons == null ? null : facets.demons.onRemoved);
     }
 
     @Override public boolean equals(Object o) {
-        return o instanceof Slot s && flags == s.flags && name.equals(s.name) && type == s.type
-                && Objects.equals(value, s.value) && Objects.equals(defaultValue, s.defaultValue)
-                && condition.equals(s.condition) && Objects.equals(argument, s.argument)
-                && Objects.equals(role, s.role) && Objects.equals(from, s.from)
-                && Objects.equals(frameRelated, s.frameRelated) && frameListRelated.equals(s.frameListRelated)
-                && Objects.equals(demons, s.demons);
+        return o instanceof Slot s && name.equals(s.name) && Objects.equals(value, s.value)
+                && (facets == s.facets || facets.equals(s.facets));
     }
 
     @Override public int hashCode() {
-        return Objects.hash(name, type, flags, value, defaultValue, condition, argument);
+        return Objects.hash(name, facets.type, facets.flags, value, facets.defaultValue, facets.condition,
+                facets.argument);
     }
 
     @Override public String toString() {
-        return "Slot[" + name + ": " + type.xmlName() + (value != null ? " = " + value.text() : "")
-                + (defaultValue != null ? " default " + defaultValue.text() : "") + "]";
+        return "Slot[" + name + ": " + facets.type.xmlName() + (value != null ? " = " + value.text() : "")
+                + (facets.defaultValue != null ? " default " + facets.defaultValue.text() : "") + "]";
     }
 
     private record Demons(String onNeeded, String onAdded, String onRemoved) {
@@ -258,17 +261,18 @@ public final class Slot {
         }
 
         private Builder(Slot s) {
-            this(s.name, s.type);
-            flags = s.flags;
+            this(s.name, s.facets.type);
+            Facets f = s.facets;
+            flags = f.flags;
             value = s.value;
-            defaultValue = s.defaultValue;
-            condition = s.condition;
-            argument = s.argument;
-            role = s.role;
-            from = s.from;
-            frameRelated = s.frameRelated;
-            frameListRelated = s.frameListRelated;
-            demons = s.demons;
+            defaultValue = f.defaultValue;
+            condition = f.condition;
+            argument = f.argument;
+            role = f.role;
+            from = f.from;
+            frameRelated = f.frameRelated;
+            frameListRelated = f.frameListRelated;
+            demons = f.demons;
         }
 
         public Builder type(DataType t) {

@@ -70,4 +70,43 @@ class SlotWithValueTest {
         assertThatThrownBy(() -> SLOTS.get(2).withValue(Value.of(3)))
                 .hasMessage("Slot 'count' has both a value and a default; the paper allows one or the other (Table 2).");
     }
+
+    /**
+     * Slots keep their facets apart from name and value (shared between a slot and those filled from it, and among
+     * plain slots of a type): each facet still tells two slots apart, equal slots hash alike, and a plain slot built
+     * twice is the same as one filled from a template.
+     */
+    @Test
+    void everyFacetTellsSlotsApart_andEqualSlotsHashAlike_howeverTheirFacetsAreShared() {
+        Slot base = Slot.builder("s", DataType.INSTANCE).value(Value.ref("x")).build();
+        List<Slot> variants = List.of(
+                base.toBuilder().type(DataType.FRAME).build(),
+                base.toBuilder().required(true).build(),
+                base.toBuilder().shared(false).build(),
+                base.toBuilder().unique(true).build(),
+                base.toBuilder().reactive(false).build(),
+                base.toBuilder().condition(ConditionParser.parse(".age > 3")).build(),
+                base.toBuilder().argument("User").build(),
+                base.toBuilder().role("listener").build(),
+                base.toBuilder().from("Robovie").build(),
+                base.toBuilder().frameRelated("Speech").build(),
+                base.toBuilder().frameListRelated(List.of("A")).build(),
+                base.toBuilder().onNeeded("1").build(),
+                base.toBuilder().onAdded("2").build(),
+                base.toBuilder().onRemoved("3").build(),
+                base.toBuilder().clearValue().defaultValue(Value.ref("y")).build(),
+                base.toBuilder().value(Value.ref("z")).build(),
+                Slot.builder("t", DataType.INSTANCE).value(Value.ref("x")).build());
+        for (Slot v : variants) {
+            assertThat(v).as("%s", v).isNotEqualTo(base);
+            assertThat(v.toBuilder().build()).isEqualTo(v).hasSameHashCodeAs(v);
+        }
+        Slot template = Slot.builder("s", DataType.INSTANCE).build();
+        assertThat(template.withValue(Value.ref("x"))).isEqualTo(base).hasSameHashCodeAs(base);
+        assertThat(Slot.ofValue("s", DataType.INSTANCE, Value.ref("x"))).isEqualTo(base);
+        Slot rich = SLOTS.get(0).withValue(Value.ref("ken"));
+        assertThat(rich.toBuilder().build()).isEqualTo(rich).hasSameHashCodeAs(rich);
+        assertThat(rich.argument()).contains("User");
+        assertThat(rich.required() && rich.unique() && !rich.shared() && rich.reactive()).isTrue();
+    }
 }
