@@ -1,6 +1,5 @@
 package org.kicnp.agent;
 
-import java.util.Iterator;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.ThreadPoolExecutor;
@@ -55,26 +54,40 @@ final class EventQueue implements AutoCloseable {
         return dropped.get();
     }
 
-    /** Makes room for a new event by dropping the oldest relay or change (or, when none waits, the new event). */
+    /**
+     * Makes room for a new event by dropping the oldest relay or change (or, when none waits, the new event), and
+     * counts what it dropped. The event thread takes events meanwhile: an event it took was delivered, not dropped, so
+     * only one this method took out of the queue itself is counted, and when the thread made room the new event goes
+     * in without dropping anything.
+     */
     private void overflow(Runnable task, ThreadPoolExecutor pool) {
         if (pool.isShutdown()) {
             return;
         }
+        BlockingQueue<Runnable> queue = pool.getQueue();
+        if (removeOldestDelivery(queue)) {
+            countDrop();
+            pool.execute(task);
+        } else if (queue.remainingCapacity() > 0) {
+            pool.execute(task);
+        } else {
+            countDrop(); // only life-cycle callbacks wait: the new event goes
+        }
+    }
+
+    private void countDrop() {
         long n = dropped.incrementAndGet();
         if (n == 1 || n % 1000 == 0) {
             LOG.warn("Agent '{}' dropped its oldest waiting relay or change: {} events were waiting for onRelay and "
                     + "onChanged, which do not keep up ({} dropped so far).", agent, CAPACITY, n);
         }
-        if (removeOldestDelivery(pool.getQueue())) {
-            pool.execute(task);
-        }
     }
 
+    /** Takes the oldest relay or change out of the queue; false when none was left to take (the thread took it). */
     private static boolean removeOldestDelivery(BlockingQueue<Runnable> queue) {
-        for (Iterator<Runnable> it = queue.iterator(); it.hasNext(); ) {
-            if (it.next() instanceof Delivery) {
-                it.remove();
-                return true;
+        for (Runnable r : queue) {
+            if (r instanceof Delivery && queue.remove(r)) {
+                return true; // removed by this call: the event thread did not take it first
             }
         }
         return false;
