@@ -37,9 +37,15 @@ def value_to_json(value, where):
                     % (where, type(value).__name__))
 
 
+_NON_FINITE = {"NaN": math.nan, "Infinity": math.inf, "-Infinity": -math.inf}
+
+
 def value_from_json(value):
-    """A slot value as received: ``{"ref": name}`` becomes a :class:`Ref`, arrays become lists."""
+    """A slot value as received: ``{"ref": name}`` becomes a :class:`Ref`, ``{"float": "NaN"}`` (or ``"Infinity"``,
+    ``"-Infinity"``: a float JSON has no number for) a float, arrays become lists."""
     if isinstance(value, dict):
+        if "float" in value:
+            return _NON_FINITE[value["float"]]
         return Ref(value["ref"])
     if isinstance(value, list):
         return [value_from_json(item) for item in value]

@@ -50,6 +50,12 @@ class SchemaTest(unittest.TestCase):
                          problems({"v": 1, "type": "sensor", "source": "a", "sensor": "s", "values": [{"x": 1}]},
                                   schema("sensor")))
 
+    def test_theTaggedFormOfAFloatJsonHasNoNumberFor_isAPublishedValue(self):
+        answer = {"v": 1, "type": "answer", "id": "q", "value": [{"float": "NaN"}, {"float": "-Infinity"}]}
+        self.assertEqual([], problems(answer, schema("answer")))
+        self.assertEqual(["$.value matches 0 of the oneOf schemas, not exactly 1"],
+                         problems(dict(answer, value=[{"float": "nan"}]), schema("answer")))
+
     def test_everyMessageTheSdkSends_conformsToItsSchema(self):
         server = FakeGateway(answer_as_a_gateway)
         self.addCleanup(server.close)

@@ -1,5 +1,6 @@
 """The wire format and values, without a gateway: framing, the checks on what a server sends, slot values."""
 import json
+import math
 import struct
 import unittest
 from unittest import mock
@@ -152,6 +153,13 @@ class WireTest(unittest.TestCase):
         wire = [value_to_json(v, "value") for v in values]
         self.assertEqual(["near", 7, 1.5, True, {"ref": "userA"}, [0.1, {"ref": "ken"}]], wire)
         self.assertEqual(values, [value_from_json(v) for v in wire])
+
+    def test_floatsJsonHasNoNumberFor_arriveFloatsFromTheirTaggedForm(self):
+        received = value_from_json([{"float": "NaN"}, {"float": "Infinity"}, [1.5, {"float": "-Infinity"}]])
+        self.assertTrue(math.isnan(received[0]))
+        self.assertEqual([float("inf"), [1.5, float("-inf")]], received[1:])
+        with self.assertRaises(KeyError):
+            value_from_json({"float": "nan"})
 
     def test_values_refuseNaNInfinityAndOtherTypes_namingTheValue(self):
         with self.assertRaises(ValueError) as error:

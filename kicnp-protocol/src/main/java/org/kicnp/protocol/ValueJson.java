@@ -16,9 +16,16 @@ import org.kicnp.core.Value;
 
 /**
  * Maps slot {@link Value}s to plain JSON values and back: string, integer, number with a fraction, boolean, array,
- * and {@code {"ref": "frame"}} for a frame reference. Kept here so the core domain carries no Jackson annotations.
+ * {@code {"ref": "frame"}} for a frame reference, and {@code {"float": "NaN"}} (or {@code "Infinity"},
+ * {@code "-Infinity"}) for a float JSON has no number for (a script's 0/0, say), so that it arrives a float, not the
+ * text "NaN". Kept here so the core domain carries no Jackson annotations.
  */
 public final class ValueJson {
+    /** The texts of {@code {"float": …}}: the floats JSON has no number for. */
+    static final String NAN = "NaN";
+    static final String INFINITY = "Infinity";
+    static final String MINUS_INFINITY = "-Infinity";
+
     private ValueJson() {
     }
 
@@ -50,6 +57,22 @@ public final class ValueJson {
         if (node.isObject() && node.size() == 1 && node.path("ref").isTextual()) {
             return Value.ref(node.get("ref").textValue());
         }
+        if (node.isObject() && node.size() == 1 && node.path("float").isTextual()) {
+            switch (node.get("float").textValue()) {
+                case NAN -> {
+                    return Value.of(Double.NaN);
+                }
+                case INFINITY -> {
+                    return Value.of(Double.POSITIVE_INFINITY);
+                }
+                case MINUS_INFINITY -> {
+                    return Value.of(Double.NEGATIVE_INFINITY);
+                }
+                default -> {
+                    // not one of the three: refused below
+                }
+            }
+        }
         throw refuse.apply(node);
     }
 
@@ -73,7 +96,13 @@ public final class ValueJson {
             switch (v) {
                 case Value.Str s -> g.writeString(s.value());
                 case Value.Int i -> g.writeNumber(i.value());
-                case Value.Real r -> g.writeNumber(r.value());
+                case Value.Real r when Double.isFinite(r.value()) -> g.writeNumber(r.value());
+                case Value.Real r -> {
+                    g.writeStartObject();
+                    g.writeStringField("float", Double.isNaN(r.value()) ? NAN
+                            : r.value() > 0 ? INFINITY : MINUS_INFINITY);
+                    g.writeEndObject();
+                }
                 case Value.Bool b -> g.writeBoolean(b.value());
                 case Value.Ref r -> {
                     g.writeStartObject();
@@ -106,8 +135,9 @@ public final class ValueJson {
                 return fromJson(node, NotAValue::new);
             } catch (NotAValue e) {
                 throw new com.fasterxml.jackson.databind.exc.InvalidFormatException(parser,
-                        "A slot value must be a string, a number, a boolean, an array or {\"ref\": \"frame\"}, not "
-                                + e.node + ".", node, Value.class);
+                        "A slot value must be a string, a number, a boolean, an array, {\"ref\": \"frame\"} or "
+                                + "{\"float\": \"NaN\"} (or \"Infinity\", \"-Infinity\"), not " + e.node + ".", node,
+                        Value.class);
             }
         }
 

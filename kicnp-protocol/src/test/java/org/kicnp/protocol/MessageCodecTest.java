@@ -204,14 +204,38 @@ class MessageCodecTest {
     }
 
     /**
+     * A float JSON has no number for (a script's 0/0 in a slot, say) travels as {"float": "NaN"}, "Infinity" or
+     * "-Infinity" and arrives a float again, at any depth of lists; another text there is not a value.
+     */
+    @Test
+    void answer_floatsThatAreNotFinite_travelTagged_andArriveFloats() {
+        Message.Answer a = new Message.Answer("q1", Optional.of(new Value.Lst(List.of(Value.of(Double.NaN),
+                Value.of(Double.POSITIVE_INFINITY), new Value.Lst(List.of(Value.of(1.5),
+                        Value.of(Double.NEGATIVE_INFINITY)))))));
+
+        String json = new String(codec.encode(a), UTF_8);
+
+        assertThat(json).contains("[{\"float\":\"NaN\"},{\"float\":\"Infinity\"},[1.5,{\"float\":\"-Infinity\"}]]");
+        Message back = decode(json);
+        assertThat(back).isEqualTo(a); // Value.Real compares floats as Double.compare does: NaN equals NaN
+        Value first = ((Value.Lst) ((Message.Answer) back).value().orElseThrow()).items().getFirst();
+        assertThat(first).isInstanceOf(Value.Real.class);
+        assertThat(((Value.Real) first).value()).isNaN();
+        assertCode("{\"v\":1,\"type\":\"answer\",\"id\":\"q1\",\"value\":{\"float\":\"nan\"}}",
+                ErrorCode.BAD_MESSAGE, "{\"float\": \"NaN\"} (or \"Infinity\", \"-Infinity\")");
+    }
+
+    /**
      * JSON has no NaN or Infinity: 1e400 would become a float Infinity in the knowledge base, and a robot's NaN or
-     * Infinity reading (a range sensor with no return) would be written as the string "NaN", a TYPE_STR.
+     * Infinity reading (a range sensor with no return) would be written as the string "NaN", a TYPE_STR. A reading
+     * in the tagged form of a float ({"float": "NaN"}) is refused as well: a sensor reports numbers.
      */
     @Test
     void sensor_valuesThatAreNotFiniteNumbers_areRefused() {
         String head = "{\"v\":1,\"type\":\"sensor\",\"source\":\"a\",\"sensor\":\"range\",\"values\":";
         assertCode(head + "[0.5,1e400]}", ErrorCode.BAD_MESSAGE, "Sensor 'range' value #2 is Infinity");
         assertCode(head + "[[1.0,-1e400]]}", ErrorCode.BAD_MESSAGE, "Sensor 'range' value #1 is -Infinity");
+        assertCode(head + "[{\"float\":\"NaN\"}]}", ErrorCode.BAD_MESSAGE, "Sensor 'range' value #1 is NaN");
         assertThat(decode(head + "[\"NaN\",1e300]}")).isEqualTo(new Message.SensorSignal("a", "range",
                 List.of(Value.of("NaN"), Value.of(1e300))));
         assertThatThrownBy(() -> new Message.SensorSignal("a", "range", List.of(Value.of(Double.NaN))))

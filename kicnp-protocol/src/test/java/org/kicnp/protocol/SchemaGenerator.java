@@ -195,6 +195,12 @@ final class SchemaGenerator {
         ref.putObject("properties").putObject("ref").put("type", "string");
         ref.putArray("required").add("ref");
         ref.put("additionalProperties", false);
+        ObjectNode nonFinite = any.addObject();
+        nonFinite.put("type", "object");
+        nonFinite.putObject("properties").putObject("float").putArray("enum").add(ValueJson.NAN)
+                .add(ValueJson.INFINITY).add(ValueJson.MINUS_INFINITY);
+        nonFinite.putArray("required").add("float");
+        nonFinite.put("additionalProperties", false);
         return schema;
     }
 }
