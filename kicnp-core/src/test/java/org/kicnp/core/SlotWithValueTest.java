@@ -109,4 +109,23 @@ class SlotWithValueTest {
         assertThat(rich.argument()).contains("User");
         assertThat(rich.required() && rich.unique() && !rich.shared() && rich.reactive()).isTrue();
     }
+
+    /**
+     * Equal slot names are one String, in slots however they were made and in the paths of conditions: an engine's
+     * slot look-ups along a path then compare references (what equals tries first) rather than characters.
+     */
+    @Test
+    void equalSlotNames_areOneString_inSlotsAndInConditionPaths() {
+        String parsed = new String(new char[] {'m', 'A'});
+        Slot a = Slot.builder(parsed, DataType.INSTANCE).build();
+        Slot b = Slot.ofValue(new String("mA"), DataType.INSTANCE, Value.ref("x"));
+
+        assertThat(a.name()).isSameAs(b.name()).isSameAs(b.toBuilder().build().name())
+                .isSameAs(a.withValue(Value.ref("y")).name());
+        Condition.Compare c = (Condition.Compare) ConditionParser.parse(".key == mA.key");
+        List<String> right = ((Operand.Path) c.right()).steps();
+        assertThat(right.getFirst()).isSameAs(a.name());
+        assertThat(c.left().getFirst()).isSameAs(right.get(1)).isSameAs(Slot.builder("key", DataType.INTEGER)
+                .build().name());
+    }
 }
