@@ -209,7 +209,7 @@ public final class ConditionParser {
         if (start == pos) {
             throw error("a slot or frame name");
         }
-        return text.substring(start, pos).intern(); // the very String of the slots it names (Slot interns them)
+        return Names.canonical(text.substring(start, pos)); // the very String of the slots it names
     }
 
     /** A frame name after '@': as {@link Names#isFrameName} allows, so with '-' (AIBO-1), unlike a slot name. */

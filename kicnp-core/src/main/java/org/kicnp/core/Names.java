@@ -1,8 +1,31 @@
 package org.kicnp.core;
 
+import java.util.concurrent.ConcurrentHashMap;
+
 /** Checks frame and slot names without regular expressions: loading a large knowledge base checks millions. */
 final class Names {
+    /** Past this many distinct slot names, new ones are no longer made canonical (the table stays bounded). */
+    private static final int MAX_CANONICAL = 1 << 16;
+    private static final ConcurrentHashMap<String, String> CANONICAL = new ConcurrentHashMap<>();
+
     private Names() {
+    }
+
+    /**
+     * One String for each slot name: slots made of equal names, and the paths of conditions that name them, hold the
+     * same String, so that looking a slot up along a path compares references (what {@code equals} tries first), not
+     * characters. A knowledge base has a few hundred slot names and millions of slots.
+     */
+    static String canonical(String slotName) {
+        String c = CANONICAL.get(slotName);
+        if (c != null) {
+            return c;
+        }
+        if (CANONICAL.size() >= MAX_CANONICAL) {
+            return slotName;
+        }
+        c = CANONICAL.putIfAbsent(slotName, slotName);
+        return c != null ? c : slotName;
     }
 
     /** Letters, digits, '_' and '-', starting with a letter or '_'. */

@@ -54,7 +54,7 @@ public final class Slot {
     }
 
     private Slot(Builder b) {
-        this.name = b.name.intern(); // a knowledge base has few slot names and many slots: one String each, compared fast
+        this.name = Names.canonical(b.name); // few slot names, many slots: one String each, compared fast
         this.value = b.value;
         this.facets = Facets.of(b.type, b.flags, b.defaultValue, b.condition, b.argument, b.role, b.from,
                 b.frameRelated, b.frameListRelated, b.demons);
