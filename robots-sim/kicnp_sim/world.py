@@ -161,10 +161,11 @@ class World:
 
     def _drive_blocked(self, robot: Robot) -> bool:
         """Whether this step's drive would bring the robot within reach of another robot that is driving too and lies
-        within 45 degrees of its way: then it holds (as a robot's range sensors stop it short of a moving obstacle) and its stall check decides.
-        Two driving bodies meeting in the contact solver would shove each other, the heavier the lighter, and the
-        one pushed back would report 'blocked' while the other reached its goal through it. A robot standing still is
-        braked instead, and one driving into it is stopped by its bumper, stall check or stumble."""
+        within 45 degrees of its way: then it holds (as a robot's range sensors stop it short of a moving obstacle)
+        and its stall check decides. Two driving bodies meeting in the contact solver would shove each other, the
+        heavier the lighter, and the one pushed back would report 'blocked' while the other reached its goal through
+        it. A robot standing still is braked instead, and one driving into it is stopped by its bumper, stall check or
+        stumble."""
         v, _ = robot.drive()
         if v == 0.0:
             return False

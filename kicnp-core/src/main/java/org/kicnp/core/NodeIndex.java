@@ -88,12 +88,7 @@ final class NodeIndex {
 
     /** Puts a node under a name: at the end of the order, or in the place of the node that name had. */
     void put(String name, Node n) {
-        put(name, NameTable.numberOf(name), n);
-    }
-
-    /** As {@link #put(String, Node)}, given the name's {@linkplain NameTable#numberOf number}. */
-    void put(String name, int number, Node n) {
-        place(name, number, n, true);
+        place(name, NameTable.numberOf(name), n, true);
     }
 
     /**

@@ -42,12 +42,15 @@ final class PlainInstanceAdd {
             return null;
         }
         Frame f = a.frame();
-        int number = NameTable.numberOf(f.name());
-        Node parent = check(f, number, near);
+        Node parent = check(f, near);
         if (parent == null) {
             return null;
         }
-        index(f, number, parent, targets, version);
+        Node n = new Node(f);
+        if (!nodes.putNew(f.name(), NameTable.numberOf(f.name()), n)) { // the name's one probe, as the last check
+            return null;
+        }
+        link(n, parent, targets, version);
         return List.of(new FrameEvent.Added(f));
     }
 
@@ -73,7 +76,7 @@ final class PlainInstanceAdd {
             frames[i] = a.frame();
             numbers[i] = NameTable.numberOf(frames[i].name());
             hashed += numbers[i] < 0 ? 1 : 0;
-            parents[i] = checkShape(frames[i], null);
+            parents[i] = check(frames[i], null);
             if (parents[i] == null) {
                 return null;
             }
@@ -109,17 +112,12 @@ final class PlainInstanceAdd {
     }
 
     /**
-     * The checks of a plain instance against the knowledge base as it is: answers its class's node, with the nodes of
-     * its instance slots' values in {@link #targets} (by slot position, null for other slots), when every check is
-     * passed; else null. {@code number} is the {@linkplain NameTable#numberOf number} of its name, which the caller
-     * reads once for this look-up and the index's put.
+     * The checks of a plain instance against the knowledge base as it is, but for its name (the caller's put in the
+     * name index, {@link NodeIndex#putNew}, is the last check): answers its class's node, with the nodes of its
+     * instance slots' values in {@link #targets} (by slot position, null for other slots), when every check is
+     * passed; else null.
      */
-    private Node check(Frame f, int number, Frame[] near) {
-        return nodes.get(f.name(), number) != null ? null : checkShape(f, near);
-    }
-
-    /** {@link #check} but for the name: whether it is free is not asked. */
-    private Node checkShape(Frame f, Frame[] near) {
+    private Node check(Frame f, Frame[] near) {
         if (!f.isInstance() || f.provenance().durable() || !f.parts().isEmpty() || !f.linksTo().isEmpty()
                 || !f.linksFrom().isEmpty()) {
             return null;
@@ -279,18 +277,11 @@ final class PlainInstanceAdd {
     }
 
     /**
-     * As {@link Indexer} indexes an added instance: its node, its class's children, every ancestor, referrers.
+     * As {@link Indexer} indexes an added instance, for a node the name index holds now: its class's children, every
+     * ancestor, referrers.
      *
-     * @param number the {@linkplain NameTable#numberOf number} of its name
      * @param targets the nodes of its instance slots' values, nulls allowed; or null when it has none
      */
-    private void index(Frame f, int number, Node parent, Node[] targets, long version) {
-        Node n = new Node(f);
-        nodes.put(f.name(), number, n);
-        link(n, parent, targets, version);
-    }
-
-    /** The rest of {@link #index}, for a node the name index holds now. */
     private void link(Node n, Node parent, Node[] targets, long version) {
         Frame f = n.frame;
         n.revision = version;

@@ -162,12 +162,12 @@ final class FactView implements Conditions.Reader {
         return f;
     }
 
-    /** The fact of that name, made (without a frame) when there is none yet. */
     /** Makes room for a batch of new instances' names ({@link FactTable#ensureRoom}). */
     void ensureRoom(int hashed, int numbered) {
         facts.ensureRoom(hashed, numbered);
     }
 
+    /** The fact of that name, made (without a frame) when there is none yet. */
     Fact touch(String name) {
         return facts.touch(name);
     }

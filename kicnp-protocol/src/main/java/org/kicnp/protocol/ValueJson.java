@@ -58,19 +58,14 @@ public final class ValueJson {
             return Value.ref(node.get("ref").textValue());
         }
         if (node.isObject() && node.size() == 1 && node.path("float").isTextual()) {
-            switch (node.get("float").textValue()) {
-                case NAN -> {
-                    return Value.of(Double.NaN);
-                }
-                case INFINITY -> {
-                    return Value.of(Double.POSITIVE_INFINITY);
-                }
-                case MINUS_INFINITY -> {
-                    return Value.of(Double.NEGATIVE_INFINITY);
-                }
-                default -> {
-                    // not one of the three: refused below
-                }
+            Double special = switch (node.get("float").textValue()) {
+                case NAN -> Double.NaN;
+                case INFINITY -> Double.POSITIVE_INFINITY;
+                case MINUS_INFINITY -> Double.NEGATIVE_INFINITY;
+                default -> null; // not one of the three: refused below
+            };
+            if (special != null) {
+                return Value.of(special);
             }
         }
         throw refuse.apply(node);
