@@ -28,6 +28,13 @@ public final class Frame {
      * caller that refers to this frame, checked before use. Not part of the frame's value.
      */
     Node node;
+    /**
+     * {@link NameTable#numberOf(String)} of the name, plus 2; 0 until asked ({@link NameTable#numberOf(Frame)}). The
+     * indexes of the knowledge base and of an engine each read a name's number: kept here, the name's characters are
+     * read once, where each read of a name made long before was a cache miss. A benign race, as String's hash: every
+     * thread that computes it stores the same value. Not part of the frame's value.
+     */
+    int nameNumber;
 
     private Frame(Builder b) {
         this.name = b.name;

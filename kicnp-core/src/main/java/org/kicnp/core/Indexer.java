@@ -38,7 +38,7 @@ final class Indexer {
         int numbered = 0;
         for (FrameEvent e : events) {
             if (e instanceof FrameEvent.Added a) {
-                if (NameTable.numberOf(a.name()) < 0) {
+                if (NameTable.numberOf(a.frame()) < 0) {
                     hashed++;
                 } else {
                     numbered++;

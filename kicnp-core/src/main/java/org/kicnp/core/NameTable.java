@@ -173,6 +173,16 @@ public final class NameTable<V> implements Iterable<V> {
         return -1;
     }
 
+    /** {@link #numberOf(String)} of the frame's name, worked out once per frame object and then read from it. */
+    public static int numberOf(Frame frame) {
+        int kept = frame.nameNumber;
+        if (kept == 0) {
+            kept = numberOf(frame.name()) + 2;
+            frame.nameNumber = kept;
+        }
+        return kept - 2;
+    }
+
     /** The hash kept for {@code key}: its hash code, with 0 (which marks an empty slot) taken as 1. */
     private static int stored(String key) {
         int h = key.hashCode();

@@ -47,7 +47,7 @@ final class PlainInstanceAdd {
             return null;
         }
         Node n = new Node(f);
-        if (!nodes.putNew(f.name(), NameTable.numberOf(f.name()), n)) { // the name's one probe, as the last check
+        if (!nodes.putNew(f.name(), NameTable.numberOf(f), n)) { // the name's one probe, as the last check
             return null;
         }
         link(n, parent, targets, version);
@@ -74,7 +74,7 @@ final class PlainInstanceAdd {
                 return null;
             }
             frames[i] = a.frame();
-            numbers[i] = NameTable.numberOf(frames[i].name());
+            numbers[i] = NameTable.numberOf(frames[i]);
             hashed += numbers[i] < 0 ? 1 : 0;
             parents[i] = check(frames[i], null);
             if (parents[i] == null) {
@@ -203,6 +203,7 @@ final class PlainInstanceAdd {
             targets[i] = target;
         }
         Frame f = Frame.plain(name, shape.className(), shape.slots(values));
+        f.nameNumber = number + 2; // as NameTable.numberOf(f) would work it out again
         Node node = new Node(f);
         if (!nodes.putNew(name, number, node)) {
             return null;

@@ -123,6 +123,10 @@ class InstanceShapeTest {
                 String expected = outcome(() -> general.addInstance(shape, name, values, referred));
                 String actual = outcome(() -> quick.addInstance(shape, name, values, referred));
                 assertThat(actual).as("add of %s %s", shape, name).isEqualTo(expected);
+                if (actual.equals("done")) { // the number a prepared add keeps in its frame is the name's
+                    assertThat(NameTable.numberOf(quick.require(name))).as("number of %s", name)
+                            .isEqualTo(NameTable.numberOf(name));
+                }
             }
             assertSameState(quick, general);
         }

@@ -1,6 +1,5 @@
 package org.kicnp.inference;
 
-import java.util.Collection;
 import java.util.Comparator;
 import java.util.List;
 
@@ -41,20 +40,18 @@ final class Agenda {
      * bindings are new, so the engine asks only then.
      */
     boolean contains(BindingKey key, FactView.Fact[] refs) {
-        Collection<Activation> fewest = null;
+        Object fewest = null;
         for (FactView.Fact f : refs) {
             if (f.activations == null) {
                 return false;
             }
-            if (fewest == null || f.activations.size() < fewest.size()) {
+            if (fewest == null || Bag.size(f.activations) < Bag.size(fewest)) {
                 fewest = f.activations;
             }
         }
-        if (fewest != null) {
-            for (Activation a : fewest) {
-                if (a.key().equals(key)) {
-                    return true;
-                }
+        for (Activation a : Bag.<Activation>toList(fewest)) {
+            if (a.key().equals(key)) {
+                return true;
             }
         }
         return false;
@@ -80,10 +77,10 @@ final class Agenda {
     /** Withdraws every activation that binds the fact. */
     void withdrawFact(String fact) {
         FactView.Fact f = facts.get(fact);
-        Collection<Activation> as = f == null ? null : f.activations;
-        if (as != null) {
+        if (f != null && f.activations != null) {
+            List<Activation> as = f.activations();
             f.activations = null;
-            for (Activation a : List.copyOf(as)) {
+            for (Activation a : as) {
                 queue.remove(a);
                 forget(a);
             }
@@ -118,12 +115,7 @@ final class Agenda {
 
     private void forget(Activation a) {
         for (FactView.Fact f : a.refs()) {
-            if (f.activations != null) {
-                f.activations.remove(a);
-                if (f.activations.isEmpty()) {
-                    f.activations = null;
-                }
-            }
+            f.activations = Bag.remove(f.activations, a);
         }
     }
 }

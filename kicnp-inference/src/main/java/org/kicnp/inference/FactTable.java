@@ -41,7 +41,11 @@ final class FactTable implements Iterable<FactView.Fact> {
 
     /** The fact of that name, made (without a frame) and stored when there is none yet. */
     FactView.Fact touch(String name) {
-        int n = NameTable.numberOf(name);
+        return touch(name, NameTable.numberOf(name));
+    }
+
+    /** As {@link #touch(String)}, with the name's {@link NameTable#numberOf number} known to the caller. */
+    FactView.Fact touch(String name, int n) {
         if (n < 0) {
             int before = others.size();
             FactView.Fact f = others.computeIfAbsent(name, FactView.Fact::new);

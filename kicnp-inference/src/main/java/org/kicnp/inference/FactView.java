@@ -1,12 +1,11 @@
 package org.kicnp.inference;
 
-import java.util.ArrayList;
-import java.util.Collection;
-import java.util.LinkedHashSet;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Optional;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.NameTable;
 import org.kicnp.core.Slot;
 import org.kicnp.core.Value;
 
@@ -29,16 +28,16 @@ final class FactView implements Conditions.Reader {
         /** The frame as last seen; null when the network met the instance in the knowledge base before its event. */
         Frame frame;
         long stamp;
-        /** The fact's memberships of alpha memories (null: none). */
-        List<AlphaMemory.Entry> entries;
-        /** A short list, turned into a hash set when it grows past {@value #SMALL} (removal must stay cheap). */
-        Collection<Activation> activations;
-        /** The bindings with this fact that have fired (refraction); a short list or, past {@value #SMALL}, a set. */
-        Collection<BindingKey> fired;
+        /** The fact's memberships of alpha memories, exactly as many as it has (null: none). */
+        AlphaMemory.Entry[] entries;
+        /** The activations that bind it waiting on the agenda: a {@link Bag}. */
+        Object activations;
+        /** The bindings with this fact that have fired (refraction), {@link BindingKey}s: a {@link Bag}. */
+        Object fired;
         /** How the engine derived this instance, if it did. */
         Derivation derivation;
-        /** The derived instances that rest on this one, in the order they were made; a short list or a set. */
-        Collection<String> dependents;
+        /** The derived instances that rest on this one, in the order they were made: a {@link Bag} of names. */
+        Object dependents;
         /**
          * The facts the slots of {@link #linksOf} refer to, by the slot's position in its frame (null: not resolved
          * yet); valid while {@link #frame} is {@code linksOf}. Lets a path step from fact to fact without looking the
@@ -66,9 +65,9 @@ final class FactView implements Conditions.Reader {
         /** The fact's membership of memory {@code m}, or null. */
         AlphaMemory.Entry entryIn(AlphaMemory m) {
             if (entries != null) {
-                for (int i = 0; i < entries.size(); i++) {
-                    if (entries.get(i).memory == m) {
-                        return entries.get(i);
+                for (AlphaMemory.Entry e : entries) {
+                    if (e.memory == m) {
+                        return e;
                     }
                 }
             }
@@ -77,16 +76,21 @@ final class FactView implements Conditions.Reader {
 
         void enter(AlphaMemory.Entry e) {
             if (entries == null) {
-                entries = new ArrayList<>(2);
+                entries = new AlphaMemory.Entry[] {e};
+            } else {
+                entries = Arrays.copyOf(entries, entries.length + 1);
+                entries[entries.length - 1] = e;
             }
-            entries.add(e);
         }
 
         /** Forgets one memory (a rule was removed); the memory itself is dropped by the caller. */
         void leave(AlphaMemory m) {
-            if (entries != null) {
-                entries.removeIf(e -> e.memory == m);
+            if (entries == null) {
+                return;
             }
+            AlphaMemory.Entry[] kept = Arrays.stream(entries).filter(e -> e.memory != m)
+                    .toArray(AlphaMemory.Entry[]::new);
+            entries = kept.length == 0 ? null : kept;
         }
 
         /** Takes the fact out of every memory it is in. */
@@ -94,23 +98,24 @@ final class FactView implements Conditions.Reader {
             if (entries == null) {
                 return;
             }
-            List<AlphaMemory.Entry> in = entries;
+            AlphaMemory.Entry[] in = entries;
             entries = null;
-            for (int i = 0; i < in.size(); i++) {
-                in.get(i).memory.remove(in.get(i));
+            for (AlphaMemory.Entry e : in) {
+                e.memory.remove(e);
             }
         }
 
         void activation(Activation a) {
-            activations = grown(activations);
-            activations.add(a);
+            activations = Bag.add(activations, a);
+        }
+
+        /** The activations that bind it, in the order they were made (a copy). */
+        List<Activation> activations() {
+            return Bag.toList(activations);
         }
 
         void dependent(String instance) {
-            dependents = grown(dependents);
-            if (!dependents.contains(instance)) {
-                dependents.add(instance);
-            }
+            dependents = Bag.addIfAbsent(dependents, instance);
         }
 
         /**
@@ -118,36 +123,24 @@ final class FactView implements Conditions.Reader {
          * was never used, and a binding holds each fact once, so the look-up for it in the list is skipped.
          */
         void newDependent(String instance) {
-            dependents = grown(dependents);
-            dependents.add(instance);
+            dependents = Bag.add(dependents, instance);
+        }
+
+        /** The derived instances that rest on it, in the order they were made (a copy). */
+        List<String> dependents() {
+            return Bag.toList(dependents);
         }
 
         void fired(BindingKey k) {
-            fired = grown(fired);
-            if (!fired.contains(k)) {
-                fired.add(k);
-            }
-        }
-
-        /**
-         * A collection ready for one more element: a short list, or a linked hash set (same order) once the list has
-         * {@value #SMALL}.
-         */
-        private static <T> Collection<T> grown(Collection<T> c) {
-            if (c == null) {
-                return new ArrayList<>(2);
-            }
-            return c.size() == SMALL && c instanceof ArrayList ? new LinkedHashSet<>(c) : c;
+            fired = Bag.addIfAbsent(fired, k);
         }
 
         boolean hasFired(BindingKey k) {
-            return fired != null && fired.contains(k);
+            return Bag.contains(fired, k);
         }
 
         void unfire(BindingKey k) {
-            if (fired != null) {
-                fired.remove(k);
-            }
+            fired = Bag.remove(fired, k);
         }
     }
 
@@ -170,6 +163,11 @@ final class FactView implements Conditions.Reader {
     /** The fact of that name, made (without a frame) when there is none yet. */
     Fact touch(String name) {
         return facts.touch(name);
+    }
+
+    /** As {@link #touch(String)}, with the name's {@link NameTable#numberOf number} known to the caller. */
+    Fact touch(String name, int number) {
+        return facts.touch(name, number);
     }
 
     /** The fact of that name, or null. */

@@ -86,7 +86,7 @@ final class Firing {
             name = made.next(r.frame());
             Derivation d = new Derivation(name, r.frame(), full, checked, firing, trigger, Optional.empty());
             supports.markFired(a.key(), refs);
-            FactView.Fact record = supports.record(d, r, refs);
+            FactView.Fact record = supports.record(d, r, refs, made.number());
             try {
                 if (full.size() == refs.length) {
                     Frame instance = kb.addInstance(r.shape(), name, valuesOf(refs), framesOf(refs));

@@ -161,7 +161,7 @@ final class ForwardChainer {
         int numbered = 0;
         for (int i = 0; i < events.size(); i++) {
             if (events.get(i) instanceof FrameEvent.Added a && a.frame().isInstance()) {
-                if (NameTable.numberOf(a.name()) < 0) {
+                if (NameTable.numberOf(a.frame()) < 0) {
                     hashed++;
                 } else {
                     numbered++;
@@ -178,7 +178,7 @@ final class ForwardChainer {
         String cls = f.parent().orElseThrow();
         FactView.Fact fact = made.take(f);
         if (fact == null) {
-            fact = facts.touch(f.name());
+            fact = facts.touch(f.name(), NameTable.numberOf(f)); // the number the knowledge base read off the name
         }
         fact.frame = f;
         fact.stamp = stamp;
@@ -246,8 +246,8 @@ final class ForwardChainer {
 
     private void refresh(String name) {
         FactView.Fact f = facts.get(name);
-        if (f != null && f.activations != null) {
-            for (Activation a : f.activations) {
+        if (f != null) {
+            for (Activation a : f.activations()) {
                 a.changed = true; // what waits with it is checked again before it fires, not matched again now
             }
         }

@@ -3,6 +3,7 @@ package org.kicnp.inference;
 import java.util.ArrayDeque;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.NameTable;
 
 /**
  * The instances the engine makes: their names ({@code Frame-N} with the engine's counter) and, between a firing's
@@ -15,9 +16,17 @@ final class MadeInstances {
     private final KnowledgeBase kb;
     private final ArrayDeque<FactView.Fact> awaitingEvent = new ArrayDeque<>();
     private long counter;
+    /** {@link NameTable#numberOf} of the last name made, known from the counter without reading the name. */
+    private int number = -1;
 
     MadeInstances(KnowledgeBase kb) {
+        this(kb, 0);
+    }
+
+    /** Counting on from {@code counter} (tests: names with many digits). */
+    MadeInstances(KnowledgeBase kb, long counter) {
         this.kb = kb;
+        this.counter = counter;
     }
 
     /**
@@ -26,7 +35,15 @@ final class MadeInstances {
      * look-up.
      */
     String next(String prefix) {
-        return prefix + "-" + (++counter);
+        counter++;
+        // "prefix-N" ends in N after its last '-': a number when N has at most nine digits and the prefix is not empty.
+        number = counter <= 999_999_999 && !prefix.isEmpty() ? (int) counter : -1;
+        return prefix + "-" + counter;
+    }
+
+    /** The number the last name made ends in, as {@link NameTable#numberOf} reads it off the name. */
+    int number() {
+        return number;
     }
 
     /** The next name that no frame has now (for instances that scripts create). */

@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import org.kicnp.core.NameTable;
 
 /**
  * Truth maintenance records: which derived instance rests on which instances, which bindings have fired
@@ -52,12 +53,12 @@ final class Supports {
     /** The derived instances resting directly on a fact, in the order they were made (a copy). */
     List<String> dependentsOf(String fact) {
         FactView.Fact f = facts.get(fact);
-        return f == null || f.dependents == null ? List.of() : List.copyOf(f.dependents);
+        return f == null ? List.of() : List.copyOf(f.dependents());
     }
 
     /** Records a new derived instance and, for a firing, what its unshared and unique slots now hold. */
     void record(Derivation d, Optional<Rule> rule) {
-        record(d, rule.orElse(null), new FactView.Fact[0]);
+        record(d, rule.orElse(null), new FactView.Fact[0], NameTable.numberOf(d.instance()));
     }
 
     /**
@@ -67,8 +68,8 @@ final class Supports {
      * once, so it is added to each support's dependents without looking for it there first. Returns the new
      * instance's record.
      */
-    FactView.Fact record(Derivation d, Rule rule, FactView.Fact[] known) {
-        FactView.Fact self = facts.touch(d.instance());
+    FactView.Fact record(Derivation d, Rule rule, FactView.Fact[] known, int number) {
+        FactView.Fact self = facts.touch(d.instance(), number);
         self.derivation = d;
         Binding b = (Binding) d.binding(); // always one (Derivation makes it); d.supports() without its list
         for (int i = 0, n = b.width(); i < n; i++) {
@@ -196,11 +197,8 @@ final class Supports {
         }
         for (String s : d.supports()) {
             FactView.Fact f = facts.get(s);
-            if (f != null && f.dependents != null) {
-                f.dependents.remove(instance);
-                if (f.dependents.isEmpty()) {
-                    f.dependents = null;
-                }
+            if (f != null) {
+                f.dependents = Bag.remove(f.dependents, instance);
             }
         }
         for (String c : heldBy.getOrDefault(instance, List.of())) {
@@ -225,10 +223,10 @@ final class Supports {
         Deque<String> todo = new ArrayDeque<>(List.of(root));
         while (!todo.isEmpty()) {
             FactView.Fact f = facts.get(todo.pop());
-            if (f == null || f.dependents == null) {
+            if (f == null) {
                 continue;
             }
-            for (String d : f.dependents) {
+            for (String d : f.dependents()) {
                 if (out.add(d)) {
                     todo.push(d);
                 }
@@ -290,8 +288,8 @@ final class Supports {
     /** A fact left: bindings with it can never recur, and a re-asserted fact of that name is a new fact. */
     void factGone(String fact) {
         FactView.Fact f = facts.get(fact);
-        Collection<BindingKey> ks = f == null ? null : f.fired;
-        if (ks != null) {
+        if (f != null && f.fired != null) {
+            List<BindingKey> ks = Bag.toList(f.fired);
             f.fired = null;
             for (BindingKey k : ks) {
                 for (String other : k.facts()) {

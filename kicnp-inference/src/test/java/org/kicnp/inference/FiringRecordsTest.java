@@ -82,9 +82,9 @@ class FiringRecordsTest {
         Derivation d = new Derivation("R-1", "R", Activation.bindingOf(r, new String[] {"a", "b"}), List.of(), 1, "b",
                 Optional.empty());
 
-        supports.record(d, r, refs);
+        supports.record(d, r, refs, 1);
         supports.record(new Derivation("R-2", "R", Activation.bindingOf(r, new String[] {"a", "c"}), List.of(), 2,
-                "c", Optional.empty()), r, new FactView.Fact[] {refs[0], facts.touch("c")});
+                "c", Optional.empty()), r, new FactView.Fact[] {refs[0], facts.touch("c")}, 2);
 
         assertThat(supports.dependentsOf("a")).containsExactly("R-1", "R-2");
         assertThat(supports.dependentsOf("b")).containsExactly("R-1");
@@ -114,7 +114,7 @@ class FiringRecordsTest {
         Activation again = new Activation(r, bound, refs, 2, 2, key); // the binding matched again, say
         agenda.add(again);
         assertThat(agenda.contains(key, refs)).isTrue();
-        assertThat(refs[1].activations).containsExactly(again);
+        assertThat(refs[1].activations()).containsExactly(again);
         agenda.withdrawFact("a");
         assertThat(agenda.size()).isZero();
         assertThat(agenda.poll()).isNull();
