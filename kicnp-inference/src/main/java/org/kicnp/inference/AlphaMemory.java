@@ -6,7 +6,6 @@ import java.util.Arrays;
 import java.util.Collection;
 import java.util.HashMap;
 import java.util.Iterator;
-import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.NoSuchElementException;
@@ -24,8 +23,6 @@ import org.kicnp.core.Value;
  * Owned by the engine thread.
  */
 final class AlphaMemory {
-    /** Index buckets are short lists (in insertion order) up to this size, then linked hash sets. */
-    private static final int SMALL = 16;
     private final Rule rule;
     private final SlotPattern pattern;
     private FactView.Fact[] items = new FactView.Fact[8];
@@ -33,7 +30,11 @@ final class AlphaMemory {
     private int end;
     private int size;
     private final List<List<String>> paths = new ArrayList<>(2);
-    private final List<Map<Value, Collection<FactView.Fact>>> indexes = new ArrayList<>(2);
+    /** Per path, key → the facts filed under it: a {@link Bag} (insertion order; most keys hold one or two facts). */
+    private final List<Map<Value, Object>> indexes = new ArrayList<>(2);
+    /** The fact {@link #fileFact} files: set just before each call (one hash look-up per filing, no lambda made). */
+    private FactView.Fact filing;
+    private final BiFunction<Value, Object, Object> fileFact = (key, bucket) -> Bag.add(bucket, filing);
     /** The join plan of the rule, and this memory's position among its required slots (-1: an optional slot). */
     JoinPlan plan;
     int position = -1;
@@ -163,7 +164,7 @@ final class AlphaMemory {
             if (java.util.Objects.equals(was, now)) {
                 continue;
             }
-            Map<Value, Collection<FactView.Fact>> index = indexes.get(i);
+            Map<Value, Object> index = indexes.get(i);
             if (was != null) {
                 unfile(index, was, fact);
             }
@@ -174,24 +175,25 @@ final class AlphaMemory {
         }
     }
 
-    /** Files a fact under a key: a short list, a set once the bucket grows past {@link #SMALL}. */
-    private static void file(Map<Value, Collection<FactView.Fact>> index, Value key, FactView.Fact fact) {
-        // One hash look-up whether the key is new or not (a get, then a put for a new key, hashed it twice).
-        Collection<FactView.Fact> bucket = index.computeIfAbsent(key, k -> new ArrayList<>(2));
-        if (bucket.size() == SMALL && bucket instanceof ArrayList) {
-            bucket = new LinkedHashSet<>(bucket);
-            index.put(key, bucket);
+    /** Files a fact under a key (see {@link Bag}). */
+    private void file(Map<Value, Object> index, Value key, FactView.Fact fact) {
+        filing = fact;
+        try {
+            index.compute(key, fileFact);
+        } finally {
+            filing = null;
         }
-        bucket.add(fact);
     }
 
     /** Takes a fact out of a key's bucket, dropping the bucket once it is empty. */
-    private static void unfile(Map<Value, Collection<FactView.Fact>> index, Value key, FactView.Fact fact) {
-        Collection<FactView.Fact> bucket = index.get(key);
+    private static void unfile(Map<Value, Object> index, Value key, FactView.Fact fact) {
+        Object bucket = index.get(key);
         if (bucket != null) {
-            bucket.remove(fact);
-            if (bucket.isEmpty()) {
+            Object left = Bag.remove(bucket, fact);
+            if (left == null) {
                 index.remove(key);
+            } else if (left != bucket) {
+                index.put(key, left);
             }
         }
     }
@@ -218,10 +220,17 @@ final class AlphaMemory {
         }
     }
 
-    /** The facts whose value along index {@code index}'s path has the key {@code key} (see {@link Values#key}). */
-    Collection<FactView.Fact> lookup(int index, Value key) {
-        Collection<FactView.Fact> bucket = indexes.get(index).get(key);
-        return bucket == null ? List.of() : bucket;
+    /**
+     * The facts whose value along index {@code index}'s path has the key {@code key} (see {@link Values#key}), as a
+     * {@link Bag} in insertion order (null: none); a live value, not to be held while the memory changes.
+     */
+    Object bucket(int index, Value key) {
+        return indexes.get(index).get(key);
+    }
+
+    /** As {@link #bucket}, as a list (a copy). */
+    List<FactView.Fact> lookup(int index, Value key) {
+        return Bag.toList(bucket(index, key));
     }
 
     private void makeRoom() {

@@ -2,7 +2,6 @@ package org.kicnp.inference;
 
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.Collection;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -283,8 +282,6 @@ final class MatchNetwork {
         }
         int at = todo[k];
         AlphaMemory mem = plan.memories[at];
-        Collection<FactView.Fact> partners = null;
-        int decided = -1;
         for (JoinPlan.Lookup l : plan.lookups[at]) {
             FactView.Fact from = b.refs[l.from()];
             if (from == null) {
@@ -295,27 +292,38 @@ final class MatchNetwork {
                 return out;
             }
             Value k0 = Values.key(key);
-            partners = mem.lookup(l.index(), k0);
-            decided = Values.exactKey(k0) ? l.answers() : -1;
-            break;
-        }
-        if (partners == null) {
-            partners = mem.facts();
-        }
-        if (partners.isEmpty()) {
+            Object bucket = mem.bucket(l.index(), k0);
+            int decided = Values.exactKey(k0) ? l.answers() : -1;
+            if (bucket instanceof Object[] few) { // the usual bucket: a short array, read without an iterator
+                for (Object c : few) {
+                    if (c == null) {
+                        break;
+                    }
+                    out = tryPartner(plan, b, todo, k, at, decided, (FactView.Fact) c, out);
+                }
+            } else if (bucket != null) {
+                for (FactView.Fact c : Bag.<FactView.Fact>toList(bucket)) {
+                    out = tryPartner(plan, b, todo, k, at, decided, c, out);
+                }
+            }
+            b.refs[at] = null;
             return out;
         }
-        for (FactView.Fact c : partners) {
-            if (b.holds(c)) {
-                continue;
-            }
-            b.refs[at] = c;
-            if (joinsHold(plan, at, decided, b)) {
-                out = extend(plan, b, todo, k + 1, out);
-            }
+        for (FactView.Fact c : mem.facts()) {
+            out = tryPartner(plan, b, todo, k, at, -1, c, out);
         }
         b.refs[at] = null;
         return out;
+    }
+
+    /** Binds {@code c} at position {@code at} and extends from there when the joins it decides hold. */
+    private List<Match> tryPartner(JoinPlan plan, JoinBinding b, int[] todo, int k, int at, int decided,
+            FactView.Fact c, List<Match> out) {
+        if (b.holds(c)) {
+            return out;
+        }
+        b.refs[at] = c;
+        return joinsHold(plan, at, decided, b) ? extend(plan, b, todo, k + 1, out) : out;
     }
 
     /**

@@ -49,7 +49,7 @@ class JoinIndexTest {
     void join_whenMoreFactsShareAKeyThanAShortBucketHolds_findsEveryOneOfThem() {
         Fixture f = floats();
         InferenceEngine e = f.engine();
-        for (int i = 0; i < 40; i++) { // past the 16 of a short bucket, which then becomes a set
+        for (int i = 0; i < 40; i++) { // past the eight of a short bucket (Bag.SMALL), which then becomes a set
             reading(f, "a" + i, "A", 7.0);
         }
         assertThat(e.runToQuiescence()).isZero();
