@@ -23,7 +23,6 @@ final class FactView implements Conditions.Reader {
 
     /** What the engine knows of one instance. Fields are null until needed. */
     static final class Fact {
-        private static final int SMALL = 8;
         final String name;
         /** The frame as last seen; null when the network met the instance in the knowledge base before its event. */
         Frame frame;

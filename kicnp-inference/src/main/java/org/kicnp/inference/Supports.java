@@ -65,7 +65,8 @@ final class Supports {
      * As {@link #record(Derivation, Optional)}, with the rule that fired (null: none, a script made the instance) and
      * the records of (some of) the supporting instances already at hand in {@code known}; the others are looked up.
      * A firing's instance has a name never used before (the engine's counter) and its binding holds each instance
-     * once, so it is added to each support's dependents without looking for it there first. Returns the new
+     * once, so it is added to each support's dependents without looking for it there first. {@code number} is
+     * {@link NameTable#numberOf} of the new instance's name (a firing knows it from its counter). Returns the new
      * instance's record.
      */
     FactView.Fact record(Derivation d, Rule rule, FactView.Fact[] known, int number) {
