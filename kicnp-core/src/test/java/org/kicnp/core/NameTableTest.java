@@ -29,7 +29,7 @@ class NameTableTest {
 
     @Test
     void numberOf_aFrame_isTheNumberOfItsName_workedOutOnceAndKept() {
-        for (String name : List.of("Pair-17", "a-b-0", "x-05", "x-999999999", "x-1000000000", "s17", "Pair-1a", "p-1")) {
+        for (String name : List.of("Pair-17", "a-b-0", "x-05", "x-999999999", "x-1000000000", "s17", "Pair-1a")) {
             Frame f = Frame.instance(name, "Thing").build();
             assertThat(NameTable.numberOf(f)).as(name).isEqualTo(NameTable.numberOf(name));
             assertThat(NameTable.numberOf(f)).as(name + ", asked again").isEqualTo(NameTable.numberOf(name));

@@ -233,6 +233,26 @@ final class AlphaMemory {
         return Bag.toList(bucket(index, key));
     }
 
+    /**
+     * Makes room for up to {@code more} facts about to be offered (a large batch of new instances), so that the member
+     * array and each index table grow once instead of step by step: an index is rebuilt at its size after the batch
+     * when that is more than twice what it holds (each key may take several facts, so it may end up roomier than
+     * needed). Membership is unchanged.
+     */
+    void expect(int more) {
+        if (end + more > items.length) {
+            items = Arrays.copyOf(items, end + more);
+        }
+        for (int i = 0; i < indexes.size(); i++) {
+            Map<Value, Object> index = indexes.get(i);
+            if (more > index.size() + 64) {
+                Map<Value, Object> bigger = HashMap.newHashMap(index.size() + more);
+                bigger.putAll(index);
+                indexes.set(i, bigger);
+            }
+        }
+    }
+
     private void makeRoom() {
         if (end - size >= end / 4 && end > size) {
             compact();

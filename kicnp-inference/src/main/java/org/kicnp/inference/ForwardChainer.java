@@ -1,6 +1,7 @@
 package org.kicnp.inference;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -152,12 +153,13 @@ final class ForwardChainer {
     }
 
     /**
-     * For a large batch of new instances (a burst of sensor readings): grows the fact records once, not step by step,
-     * and then makes the record of each new instance, by the event's index (null: none, or a small batch). Made in
-     * one loop, the look-ups into the records' name table overlap their cache misses, where made one per fact between
-     * its matching they came one after the other (the engine's name table cost twice the knowledge base's for the
-     * same stimuli, which the knowledge base puts in one loop). A record made here is used unless its fact left before
-     * its event came ({@link FactView.Fact#gone}: the batch removed the instance of that name first).
+     * For a large batch of new instances (a burst of sensor readings): grows the fact records and the memories the
+     * instances will enter once, not step by step, then makes the record of each new instance; returns them by the
+     * event's index (null: a small batch). Made in one loop, the look-ups into the records' name table overlap their
+     * cache misses, where made one per fact between its matching they came one after the other (the engine's name
+     * table cost twice the knowledge base's for the same stimuli, which the knowledge base puts in one loop). A record
+     * made here is used unless its fact has left by the time its event comes ({@link FactView.Fact#gone}): a change set
+     * has one event per name, so it cannot do that itself, but the check costs a field read.
      */
     private FactView.Fact[] prepare(ChangeSet cs) {
         List<FrameEvent> events = cs.events();
@@ -166,6 +168,7 @@ final class ForwardChainer {
         }
         int hashed = 0;
         int numbered = 0;
+        Map<String, int[]> perClass = new HashMap<>();
         for (int i = 0; i < events.size(); i++) {
             if (events.get(i) instanceof FrameEvent.Added a && a.frame().isInstance()) {
                 if (NameTable.numberOf(a.frame()) < 0) {
@@ -173,12 +176,14 @@ final class ForwardChainer {
                 } else {
                     numbered++;
                 }
+                perClass.computeIfAbsent(a.frame().parent().orElseThrow(), c -> new int[1])[0]++;
             }
         }
         if (hashed + numbered == 0) {
             return null;
         }
         facts.ensureRoom(hashed, numbered);
+        perClass.forEach((cls, count) -> network.expect(cls, count[0]));
         FactView.Fact[] prepared = new FactView.Fact[events.size()];
         for (int i = 0; i < events.size(); i++) {
             if (events.get(i) instanceof FrameEvent.Added a && a.frame().isInstance()) {

@@ -153,6 +153,13 @@ final class MatchNetwork {
         return out;
     }
 
+    /** Makes room in the memories an instance of the class enters for {@code count} new ones ({@link AlphaMemory#expect}). */
+    void expect(String className, int count) {
+        for (AlphaMemory m : entering(className)) {
+            m.expect(count);
+        }
+    }
+
     /** Forgets what it derived from the class hierarchy: call when a class frame was added, changed or removed. */
     void classesChanged() {
         clearEntering();

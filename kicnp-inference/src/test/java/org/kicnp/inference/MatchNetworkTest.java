@@ -45,6 +45,30 @@ class MatchNetworkTest {
         assertThat(reads.get()).isLessThan(10);
     }
 
+    /** Room made for a large batch (the index rebuilt at its new size) keeps what the memory held. */
+    @Test
+    void expect_aLargeBatch_keepsTheMembersAndTheirIndexKeys() {
+        Fixture f = usersAndOrders(10);
+        MatchNetwork network = new MatchNetwork(f.kb, new Conditions((frame, slot) ->
+                f.kb.contains(frame) ? f.kb.value(frame, slot) : Optional.empty()));
+        network.addRule(new RuleCompiler(f.kb).compile("Deliver").orElseThrow());
+
+        network.expect("User", 200); // more than twice what the users' memory holds: it grows before the batch
+        network.expect("Order", 200);
+        for (int i = 10; i < 210; i++) {
+            f.assertFact("u" + i, "User", "name", "n" + i);
+            assertThat(network.insert("u" + i, "User")).isEmpty();
+        }
+
+        f.assertFact("o1", "Order", "who", "n5");
+        assertThat(network.insert("o1", "Order")).singleElement() // a user from before the batch
+                .satisfies(m -> assertThat(m.binding()).containsEntry("mUser", "u5"));
+        f.assertFact("o2", "Order", "who", "n150");
+        assertThat(network.insert("o2", "Order")).singleElement()
+                .satisfies(m -> assertThat(m.binding()).containsEntry("mUser", "u150"));
+        assertThat(network.candidates("Deliver", "mUser")).hasSize(210).startsWith("u0", "u1");
+    }
+
     @Test
     void retract_thenInsert_keepsIndexesConsistent() {
         Fixture f = usersAndOrders(3);
