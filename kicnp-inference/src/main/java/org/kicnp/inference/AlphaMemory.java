@@ -228,11 +228,6 @@ final class AlphaMemory {
         return indexes.get(index).get(key);
     }
 
-    /** As {@link #bucket}, as a list (a copy). */
-    List<FactView.Fact> lookup(int index, Value key) {
-        return Bag.toList(bucket(index, key));
-    }
-
     /**
      * Makes room for up to {@code more} facts about to be offered (a large batch of new instances), so that the member
      * array and each index table grow once instead of step by step: an index is rebuilt at its size after the batch
