@@ -183,6 +183,11 @@ public final class NameTable<V> implements Iterable<V> {
         return kept - 2;
     }
 
+    /** Keeps in a new frame the {@link #numberOf(String) number} of its name, known to the caller. */
+    static void keepNumber(Frame frame, int number) {
+        frame.nameNumber = number + 2;
+    }
+
     /** The hash kept for {@code key}: its hash code, with 0 (which marks an empty slot) taken as 1. */
     private static int stored(String key) {
         int h = key.hashCode();

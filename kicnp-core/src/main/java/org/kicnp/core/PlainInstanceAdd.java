@@ -203,7 +203,7 @@ final class PlainInstanceAdd {
             targets[i] = target;
         }
         Frame f = Frame.plain(name, shape.className(), shape.slots(values));
-        f.nameNumber = number + 2; // as NameTable.numberOf(f) would work it out again
+        NameTable.keepNumber(f, number); // read off the name above
         Node node = new Node(f);
         if (!nodes.putNew(name, number, node)) {
             return null;

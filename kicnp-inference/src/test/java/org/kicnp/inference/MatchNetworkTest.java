@@ -20,6 +20,14 @@ class MatchNetworkTest {
         return f;
     }
 
+    /** A network reading the knowledge base directly, with the Deliver rule installed. */
+    private static MatchNetwork deliveries(Fixture f) {
+        MatchNetwork network = new MatchNetwork(f.kb, new Conditions((frame, slot) ->
+                f.kb.contains(frame) ? f.kb.value(frame, slot) : Optional.empty()));
+        network.addRule(new RuleCompiler(f.kb).compile("Deliver").orElseThrow());
+        return network;
+    }
+
     @Test
     void insert_whenJoinedByEquality_readsOnlyTheIndexedPartnerNotEveryInstance() {
         Fixture f = usersAndOrders(2_000);
@@ -49,9 +57,7 @@ class MatchNetworkTest {
     @Test
     void expect_aLargeBatch_keepsTheMembersAndTheirIndexKeys() {
         Fixture f = usersAndOrders(10);
-        MatchNetwork network = new MatchNetwork(f.kb, new Conditions((frame, slot) ->
-                f.kb.contains(frame) ? f.kb.value(frame, slot) : Optional.empty()));
-        network.addRule(new RuleCompiler(f.kb).compile("Deliver").orElseThrow());
+        MatchNetwork network = deliveries(f);
 
         network.expect("User", 200); // more than twice what the users' memory holds: it grows before the batch
         network.expect("Order", 200);
@@ -72,9 +78,7 @@ class MatchNetworkTest {
     @Test
     void retract_thenInsert_keepsIndexesConsistent() {
         Fixture f = usersAndOrders(3);
-        MatchNetwork network = new MatchNetwork(f.kb, new Conditions((frame, slot) ->
-                f.kb.contains(frame) ? f.kb.value(frame, slot) : Optional.empty()));
-        network.addRule(new RuleCompiler(f.kb).compile("Deliver").orElseThrow());
+        MatchNetwork network = deliveries(f);
         f.assertFact("o1", "Order", "who", "n2");
         assertThat(network.insert("o1", "Order")).hasSize(1);
         network.retract("u2");
