@@ -3,10 +3,9 @@ package org.kicnp.core;
 /**
  * The knowledge base's bookkeeping for one frame: the frame itself, its revision, and the derived indexes
  * (children, every instance below a class, the frames that refer to it). Mutated only under the write lock. A
- * replace keeps the node, so the name (and its hash) never changes.
+ * replace keeps the node, so the name never changes.
  */
 final class Node {
-    final int hash;
     Frame frame;
     long revision;
     Node parent;
@@ -23,7 +22,15 @@ final class Node {
 
     Node(Frame frame) {
         this.frame = frame;
-        this.hash = frame.name().hashCode();
+    }
+
+    /**
+     * The hash of its name, for the sets of nodes that keep a table ({@link NodeSet}): read when asked, not when the
+     * node is made: most nodes (a firing's new instance, named a moment ago) are never in such a table, and a numbered
+     * name is otherwise found by its number, not its hash. The string keeps its hash once worked out.
+     */
+    int hash() {
+        return frame.name().hashCode();
     }
 
     String name() {

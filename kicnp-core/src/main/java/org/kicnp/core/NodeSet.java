@@ -154,7 +154,7 @@ final class NodeSet implements Iterable<Node> {
     }
 
     private int slotOf(Node n) {
-        return n.hash * 0x9E3779B9 >>> shift;
+        return n.hash() * 0x9E3779B9 >>> shift;
     }
 
     private void place(Node n, int position) {

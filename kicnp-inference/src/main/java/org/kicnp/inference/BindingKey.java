@@ -10,12 +10,16 @@ import java.util.Arrays;
 final class BindingKey {
     private final String frame;
     private final String[] facts;
-    private final int hash;
+    /**
+     * Worked out when first asked (0: not yet), as {@link String#hashCode} is: a key is compared with a few others
+     * in a fact's short lists far more often than it is hashed, and hashing it reads every character of names the
+     * engine made a moment ago, which nothing else hashes.
+     */
+    private int hash;
 
     BindingKey(String frame, String[] facts) {
         this.frame = frame;
         this.facts = facts;
-        this.hash = 31 * frame.hashCode() + Arrays.hashCode(facts);
     }
 
     /** The bound instances, in slot order; not to be changed. */
@@ -24,11 +28,17 @@ final class BindingKey {
     }
 
     @Override public boolean equals(Object o) {
-        return o instanceof BindingKey k && k.hash == hash && k.frame.equals(frame) && Arrays.equals(k.facts, facts);
+        return o instanceof BindingKey k && (k.hash == 0 || hash == 0 || k.hash == hash) && k.frame.equals(frame)
+                && Arrays.equals(k.facts, facts);
     }
 
     @Override public int hashCode() {
-        return hash;
+        int h = hash;
+        if (h == 0) {
+            h = 31 * frame.hashCode() + Arrays.hashCode(facts);
+            hash = h; // a benign race, as String's: every thread works out the same value
+        }
+        return h;
     }
 
     @Override public String toString() {
