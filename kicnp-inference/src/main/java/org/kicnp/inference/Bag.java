@@ -8,9 +8,15 @@ import java.util.List;
 
 /**
  * A short collection in insertion order kept in one field, with no object of its own while it is short: the field
- * holds null (empty), an {@code Object[]} of at most {@value #SMALL} elements padded with trailing nulls, or, past
- * that, a {@link LinkedHashSet} (so that removal stays cheap where a fact takes part in many bindings). The static
- * methods take the field's value and return its new value. Elements are never null.
+ * holds null (empty), the one element itself, an {@code Object[]} of at most {@value #SMALL} elements padded with
+ * trailing nulls, or, past that, a {@link LinkedHashSet} (so that removal stays cheap where a fact takes part in many
+ * bindings). The static methods take the field's value and return its new value. Elements are never null, and never
+ * an array or a collection themselves (the engine's are activations, binding keys, names and fact records), so the
+ * field's class tells its form.
+ *
+ * <p>The one-element form (session 18): most bags hold one element all their life (a key's bucket in an alpha-memory
+ * index, a derived fact's one dependent or fired binding), and an array for it was one more object to make and one
+ * more cache line to read each time the fact is joined or fired.
  *
  * <p>For the engine's per-fact records ({@link FactView.Fact}): each fact kept up to three {@link ArrayList}s of one
  * or two elements (its activations, fired bindings, dependents), three quarters of a million wrappers at
@@ -25,10 +31,9 @@ final class Bag {
 
     /** {@code bag} with {@code x} added at the end; no check for an equal element (a set form ignores one). */
     static Object add(Object bag, Object x) {
+        assert !(x instanceof Object[] || x instanceof Collection) : "a bag's element is never an array or collection";
         if (bag == null) {
-            Object[] a = new Object[2];
-            a[0] = x;
-            return a;
+            return x;
         }
         if (bag instanceof Object[] a) {
             int n = count(a);
@@ -45,8 +50,11 @@ final class Bag {
             set.add(x);
             return set;
         }
-        set(bag).add(x);
-        return bag;
+        if (bag instanceof Collection<?>) {
+            set(bag).add(x);
+            return bag;
+        }
+        return new Object[] {bag, x}; // the one element, and now a second
     }
 
     /** As {@link #add}, unless an equal element is there already. */
@@ -69,7 +77,10 @@ final class Bag {
             }
             return false;
         }
-        return set(bag).contains(x);
+        if (bag instanceof Collection<?>) {
+            return set(bag).contains(x);
+        }
+        return bag == x || bag.equals(x);
     }
 
     /** {@code bag} without the first element equal to {@code x}; null once it is empty. */
@@ -91,6 +102,9 @@ final class Bag {
             }
             return a;
         }
+        if (!(bag instanceof Collection<?>)) {
+            return bag == x || bag.equals(x) ? null : bag;
+        }
         Collection<Object> s = set(bag);
         s.remove(x);
         return s.isEmpty() ? null : s;
@@ -100,7 +114,10 @@ final class Bag {
         if (bag == null) {
             return 0;
         }
-        return bag instanceof Object[] a ? count(a) : set(bag).size();
+        if (bag instanceof Object[] a) {
+            return count(a);
+        }
+        return bag instanceof Collection<?> ? set(bag).size() : 1;
     }
 
     /** The elements in insertion order (a copy: the bag may change while the caller goes through it). */
@@ -118,6 +135,9 @@ final class Bag {
                 out.add((T) e);
             }
             return out;
+        }
+        if (!(bag instanceof Collection<?>)) {
+            return List.of((T) bag);
         }
         return new ArrayList<>((Collection<T>) set(bag));
     }

@@ -301,7 +301,9 @@ final class MatchNetwork {
             Value k0 = Values.key(key);
             Object bucket = mem.bucket(l.index(), k0);
             int decided = Values.exactKey(k0) ? l.answers() : -1;
-            if (bucket instanceof Object[] few) { // the usual bucket: a short array, read without an iterator
+            if (bucket instanceof FactView.Fact one) { // a key most often files one fact: the bucket is that fact
+                out = tryPartner(plan, b, todo, k, at, decided, one, out);
+            } else if (bucket instanceof Object[] few) { // else a short array, read without an iterator
                 for (Object c : few) {
                     if (c == null) {
                         break;

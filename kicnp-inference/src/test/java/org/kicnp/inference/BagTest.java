@@ -60,6 +60,22 @@ class BagTest {
     }
 
     @Test
+    void oneElement_isHeldAsItself_noArray() {
+        String only = "Pair-1";
+        Object bag = Bag.add(null, only);
+        assertThat(bag).isSameAs(only);
+        assertThat(Bag.size(bag)).isEqualTo(1);
+        assertThat(Bag.contains(bag, "Pair-1")).isTrue();
+        assertThat(Bag.contains(bag, "Pair-2")).isFalse();
+        assertThat(Bag.remove(bag, "Pair-2")).isSameAs(only);
+        assertThat(Bag.<String>toList(bag)).containsExactly("Pair-1");
+        assertThat(Bag.remove(bag, "Pair-1")).isNull();
+        Object two = Bag.add(bag, "Pair-2");
+        assertThat(two).isInstanceOf(Object[].class);
+        assertThat(Bag.<String>toList(two)).containsExactly("Pair-1", "Pair-2");
+    }
+
+    @Test
     void aShortBag_isOneArray_andPastEightASet() {
         Object bag = null;
         for (int i = 0; i < 8; i++) {
