@@ -74,8 +74,9 @@ final class Node {
                 if (f != null) {
                     String at = f.name();
                     Node n = f.node;
-                    if (n != null && n.liveIn == index
-                            && (at == name || at.hashCode() == name.hashCode() && at.equals(name))) {
+                    // equals, not hashes first: the names are short, most differ in length or first letters, and
+                    // a name the engine made a moment ago has no hash yet
+                    if (n != null && n.liveIn == index && (at == name || at.equals(name))) {
                         return n;
                     }
                 }
