@@ -41,7 +41,7 @@ final class InferenceBenchCommand implements Callable<Integer> {
 
     // Fifteen, not five (session 18): at N = 10,000 a run takes 13-25 ms and single pairs ranged 0.50-1.82 within
     // one JVM, so the median of five pairs moved by a tenth from one run of the bench to the next (0.93-1.45 in
-    // session 17's nine default runs); fifteen runs of both sizes add about 15 s to a default run. (Session 16 went from
+    // session 17's nine default runs); with fifteen a default run took 59-72 s (58 s with five). (Session 16 went from
     // three to five for the same reason: N = 100,000 pairs 0.94, 1.10, 1.53.)
     @Option(names = "--runs", defaultValue = "15",
             description = "Timed runs per size and engine; the median is reported (default: ${DEFAULT-VALUE}).")

@@ -13,7 +13,7 @@ final class BindingKey {
     /**
      * Worked out when first asked (0: not yet), as {@link String#hashCode} is: a key is compared with a few others
      * in a fact's short lists far more often than it is hashed, and hashing it reads every character of names the
-     * engine made a moment ago, which nothing else hashes.
+     * engine made a moment ago, most of which nothing else hashes.
      */
     private int hash;
 
