@@ -59,6 +59,12 @@ final class InferenceBenchCommand implements Callable<Integer> {
             description = "Untimed warm-up runs per engine (default: ${DEFAULT-VALUE}).")
     int warmUpRuns;
 
+    // Each run's own times: a median hides how a host's pace flips between runs (session 17 saw both engines switch
+    // between two speeds run by run at N = 10,000), and a reader should be able to see that with a flag, not a build.
+    @Option(names = "--print-runs",
+            description = "Also print each timed run's seconds (K-ICNP, Drools, their ratio, Drools TMS, KB only).")
+    boolean printRuns;
+
     @Option(names = "--latency-samples", defaultValue = "10000",
             description = "Measured stimuli for the script cost and latency (default: ${DEFAULT-VALUE}).")
     int latencySamples;
@@ -120,6 +126,13 @@ final class InferenceBenchCommand implements Callable<Integer> {
             InferenceRun result = new InferenceRun(n, firings, kicnp.median(), peer.median(), kicnpCpu.median(),
                     peerCpu.median(), logical.median(), store.median(), paired.median(), paired.min(), paired.max());
             results.add(result);
+            if (printRuns) {
+                for (int r = 0; r < runs; r++) {
+                    out.println(String.format(Locale.ROOT,
+                            "  N=%,d run %d: K-ICNP %.6f s, Drools %.6f s, pair %.3f, Drools TMS %.6f s, KB only %.6f s",
+                            n, r + 1, kicnp.get(r), peer.get(r), paired.get(r), logical.get(r), store.get(r)));
+                }
+            }
             out.println(String.format(Locale.ROOT, "  N=%,d: %,d firings in both engines; K-ICNP %.3f s (CPU %.3f s), Drools %.3f s (CPU %.3f s), Drools insertLogical %.3f s, K-ICNP knowledge base only %.3f s",
                     n, firings, result.kicnpSeconds(), result.kicnpCpuSeconds(), result.droolsSeconds(),
                     result.droolsCpuSeconds(), result.droolsLogicalSeconds(), result.storeSeconds()));

@@ -15,6 +15,11 @@ final class Samples {
         return values.size();
     }
 
+    /** The {@code i}-th value, in the order added. */
+    double get(int i) {
+        return values.get(i);
+    }
+
     double median() {
         if (values.isEmpty()) {
             throw new IllegalStateException("No samples were taken, so there is no median.");

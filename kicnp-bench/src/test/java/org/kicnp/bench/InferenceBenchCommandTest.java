@@ -126,6 +126,44 @@ class InferenceBenchCommandTest {
         assertThat(out.toString()).contains("KB only s").contains("KB/Drools").contains("paired (min-max)");
         assertThat(json.get("script_us_median").asDouble()).isPositive();
         assertThat(json.get("stimulus_to_action_us_p99").asDouble()).isPositive();
+        assertThat(out.toString()).doesNotContain(" run 1: ");
+    }
+
+    @Test
+    void inference_printRuns_givesEachTimedRunsTimes_whoseMediansAreTheJsonsFigures() throws Exception {
+        StringWriter out = new StringWriter();
+        CommandLine cli = new CommandLine(new BenchMain());
+        cli.setOut(new PrintWriter(out));
+
+        int exit = cli.execute("inference", "--n", "200", "--runs", "3", "--warmup-n", "100", "--warmup-runs", "1",
+                "--latency-samples", "100", "--latency-warmup", "100", "--print-runs");
+
+        assertThat(exit).isZero();
+        List<String> lines = out.toString().lines().toList();
+        java.util.regex.Pattern runLine = java.util.regex.Pattern.compile(
+                "  N=200 run (\\d): K-ICNP ([0-9.]+) s, Drools ([0-9.]+) s, pair ([0-9.]+), Drools TMS ([0-9.]+) s, "
+                        + "KB only ([0-9.]+) s");
+        List<double[]> runs = new java.util.ArrayList<>();
+        for (String line : lines) {
+            java.util.regex.Matcher m = runLine.matcher(line);
+            if (m.matches()) {
+                assertThat(Integer.parseInt(m.group(1))).isEqualTo(runs.size() + 1);
+                runs.add(new double[] {Double.parseDouble(m.group(2)), Double.parseDouble(m.group(3)),
+                        Double.parseDouble(m.group(4))});
+            }
+        }
+        assertThat(runs).hasSize(3);
+        JsonNode run = new ObjectMapper().readTree(lines.get(lines.size() - 1)).get("runs").get(0);
+        double[] kicnp = runs.stream().mapToDouble(r -> r[0]).sorted().toArray();
+        double[] pairs = runs.stream().mapToDouble(r -> r[2]).sorted().toArray();
+        // printed to 6 decimals (seconds) and 3 (pairs): the medians agree to that
+        assertThat(kicnp[1]).isCloseTo(run.get("kicnp_s").asDouble(), org.assertj.core.data.Offset.offset(0.000002));
+        assertThat(pairs[1]).isCloseTo(run.get("ratio_paired_median").asDouble(),
+                org.assertj.core.data.Offset.offset(0.0006));
+        for (double[] r : runs) {
+            assertThat(r[0]).isPositive();
+            assertThat(r[1]).isPositive();
+        }
     }
 
     /** The goal needs both estimates at or under 1: the ratio of the medians and the median of the paired ratios. */
