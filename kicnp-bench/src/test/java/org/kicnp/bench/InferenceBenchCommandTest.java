@@ -90,14 +90,8 @@ class InferenceBenchCommandTest {
 
     @Test
     void inference_tinyConfiguration_printsTheTableThenOneJsonObjectWithEveryFigure() throws Exception {
-        StringWriter out = new StringWriter();
-        CommandLine cli = new CommandLine(new BenchMain());
-        cli.setOut(new PrintWriter(out));
+        StringWriter out = inference("--runs", "1", "--latency-samples", "200", "--latency-warmup", "200");
 
-        int exit = cli.execute("inference", "--n", "200", "--runs", "1", "--warmup-n", "100", "--warmup-runs", "1",
-                "--latency-samples", "200", "--latency-warmup", "200");
-
-        assertThat(exit).isZero();
         List<String> lines = out.toString().lines().toList();
         assertThat(out.toString()).contains("same explicit priorities").contains("firings")
                 .contains("Graal compiler");
@@ -131,14 +125,9 @@ class InferenceBenchCommandTest {
 
     @Test
     void inference_printRuns_givesEachTimedRunsTimes_whoseMediansAreTheJsonsFigures() throws Exception {
-        StringWriter out = new StringWriter();
-        CommandLine cli = new CommandLine(new BenchMain());
-        cli.setOut(new PrintWriter(out));
+        StringWriter out = inference("--runs", "3", "--latency-samples", "100", "--latency-warmup", "100",
+                "--print-runs");
 
-        int exit = cli.execute("inference", "--n", "200", "--runs", "3", "--warmup-n", "100", "--warmup-runs", "1",
-                "--latency-samples", "100", "--latency-warmup", "100", "--print-runs");
-
-        assertThat(exit).isZero();
         List<String> lines = out.toString().lines().toList();
         java.util.regex.Pattern runLine = java.util.regex.Pattern.compile(
                 "  N=200 run (\\d): K-ICNP ([0-9.]+) s, Drools ([0-9.]+) s, pair ([0-9.]+), Drools TMS ([0-9.]+) s, "
@@ -189,5 +178,17 @@ class InferenceBenchCommandTest {
         String row = table.lines().filter(l -> l.trim().startsWith("10,000") || l.trim().startsWith("100,000"))
                 .findFirst().orElseThrow();
         return row.contains("PASS") ? "PASS" : row.contains("MISS") ? "MISS" : "?";
+    }
+
+    /** Runs {@code bench inference} at N = 200 after one warm-up run of 100, with {@code more} options; exits 0. */
+    private static StringWriter inference(String... more) {
+        StringWriter out = new StringWriter();
+        CommandLine cli = new CommandLine(new BenchMain());
+        cli.setOut(new PrintWriter(out));
+        List<String> args = new java.util.ArrayList<>(
+                List.of("inference", "--n", "200", "--warmup-n", "100", "--warmup-runs", "1"));
+        args.addAll(List.of(more));
+        assertThat(cli.execute(args.toArray(String[]::new))).isZero();
+        return out;
     }
 }
