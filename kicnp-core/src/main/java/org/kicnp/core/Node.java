@@ -24,15 +24,6 @@ final class Node {
         this.frame = frame;
     }
 
-    /**
-     * The hash of its name, for the sets of nodes that keep a table ({@link NodeSet}): read when asked, not when the
-     * node is made: most nodes (a firing's new instance, named a moment ago) are never in such a table, and a numbered
-     * name is otherwise found by its number, not its hash. The string keeps its hash once worked out.
-     */
-    int hash() {
-        return frame.name().hashCode();
-    }
-
     String name() {
         return frame.name();
     }

@@ -153,8 +153,12 @@ final class NodeSet implements Iterable<Node> {
         }
     }
 
+    /**
+     * A member's slot, from its name's hash: worked out here, not kept in each node when made, since most nodes (a
+     * firing's new instance, named a moment ago) are never in a set with a table. The name keeps its hash.
+     */
     private int slotOf(Node n) {
-        return n.hash() * 0x9E3779B9 >>> shift;
+        return n.name().hashCode() * 0x9E3779B9 >>> shift;
     }
 
     private void place(Node n, int position) {

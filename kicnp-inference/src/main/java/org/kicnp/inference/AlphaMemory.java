@@ -231,8 +231,8 @@ final class AlphaMemory {
     /**
      * Makes room for up to {@code more} facts about to be offered (a large batch of new instances), so that the member
      * array and each index table grow once instead of step by step: an index is rebuilt at its size after the batch
-     * when that is more than twice what it holds (each key may take several facts, so it may end up roomier than
-     * needed). Membership is unchanged.
+     * when the batch is larger than what it holds by more than 64 (each key may take several facts, so it may end up
+     * roomier than needed). Membership is unchanged.
      */
     void expect(int more) {
         if (end + more > items.length) {

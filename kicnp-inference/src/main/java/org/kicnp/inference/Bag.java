@@ -71,7 +71,7 @@ final class Bag {
                 if (e == null) {
                     return false;
                 }
-                if (e == x || e.equals(x)) {
+                if (same(e, x)) {
                     return true;
                 }
             }
@@ -80,7 +80,7 @@ final class Bag {
         if (bag instanceof Collection<?>) {
             return set(bag).contains(x);
         }
-        return bag == x || bag.equals(x);
+        return same(bag, x);
     }
 
     /** {@code bag} without the first element equal to {@code x}; null once it is empty. */
@@ -91,7 +91,7 @@ final class Bag {
         if (bag instanceof Object[] a) {
             int n = count(a);
             for (int i = 0; i < n; i++) {
-                if (a[i] == x || a[i].equals(x)) {
+                if (same(a[i], x)) {
                     if (n == 1) {
                         return null;
                     }
@@ -103,7 +103,7 @@ final class Bag {
             return a;
         }
         if (!(bag instanceof Collection<?>)) {
-            return bag == x || bag.equals(x) ? null : bag;
+            return same(bag, x) ? null : bag;
         }
         Collection<Object> s = set(bag);
         s.remove(x);
@@ -140,6 +140,11 @@ final class Bag {
             return List.of((T) bag);
         }
         return new ArrayList<>((Collection<T>) set(bag));
+    }
+
+    /** Whether element {@code e} is {@code x}: the same object, or an equal one. */
+    private static boolean same(Object e, Object x) {
+        return e == x || e.equals(x);
     }
 
     private static int count(Object[] a) {
