@@ -280,6 +280,8 @@ public final class KnowledgeBase {
      * checks of the shape's class and slot declarations done once while no class changes, and none of the name but
      * that it is the class's name, '-' and digits (an inference engine's adds; any other name takes the general way).
      *
+     * <p>The knowledge base keeps neither array: a caller may fill the same ones for its next add.
+     *
      * @param referred frames the values may refer to, at hand (see {@link #add(Frame, Frame...)}); nulls are skipped
      * @throws IllegalArgumentException when {@code values} are not as many as the shape's slots
      * @throws InvalidFrameException when the name is not a valid frame name or a value is not a reference

@@ -64,6 +64,31 @@ class InstanceShapeTest {
     }
 
     @Test
+    void theArraysOfAnAdd_areNotKept_soACallerMayFillThemAgain() {
+        KnowledgeBase kb = kb();
+        InstanceShape pair = InstanceShape.of("Pair", List.of("mA", "mB"));
+        Value[] values = {Value.ref("s1"), Value.ref("s2")};
+        Frame[] near = {kb.require("s1"), kb.require("s2")};
+
+        Frame first = kb.addInstance(pair, "Pair-1", values, near);
+        values[0] = Value.ref("s3");
+        values[1] = Value.ref("s4");
+        near[0] = kb.require("s3");
+        near[1] = kb.require("s4");
+        Frame second = kb.addInstance(pair, "Pair-2", values, near);
+        values[0] = null;
+        near[0] = null;
+
+        assertThat(kb.require("Pair-1")).isSameAs(first);
+        assertThat(first.ownSlot("mA").flatMap(Slot::value)).contains(Value.ref("s1"));
+        assertThat(first.ownSlot("mB").flatMap(Slot::value)).contains(Value.ref("s2"));
+        assertThat(second.ownSlot("mA").flatMap(Slot::value)).contains(Value.ref("s3"));
+        assertThat(second.ownSlot("mB").flatMap(Slot::value)).contains(Value.ref("s4"));
+        assertThat(kb.referrers("s2")).containsExactly("Pair-1");
+        assertThat(kb.referrers("s4")).containsExactly("Pair-2");
+    }
+
+    @Test
     void aShapeWhoseArgumentChanged_isCheckedAgain_andAValueOfTheOldClassIsRefused() {
         KnowledgeBase kb = kb();
         InstanceShape pair = InstanceShape.of("Pair", List.of("mA", "mB"));

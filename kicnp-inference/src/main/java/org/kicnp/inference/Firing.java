@@ -1,5 +1,6 @@
 package org.kicnp.inference;
 
+import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -33,6 +34,13 @@ final class Firing {
     private final Consumer<TraceEvent> tracer;
     private final BooleanSupplier tracing;
     private long firings;
+    /**
+     * The arrays a firing hands {@link KnowledgeBase#addInstance} (the values of the new instance's slots and the
+     * frames they name), one pair per number of required slots: the knowledge base keeps neither, so a firing fills
+     * them instead of making two arrays, and empties them once the add returns.
+     */
+    private Value[][] valueScratch = new Value[4][];
+    private Frame[][] frameScratch = new Frame[4][];
 
     Firing(KnowledgeBase kb, FactView facts, Conditions conditions, MatchNetwork network, Supports supports,
            ScriptCalls scripts, MadeInstances made, DerivationCheck check, Retractions retractions,
@@ -89,7 +97,7 @@ final class Firing {
             FactView.Fact record = supports.record(d, r, refs, made.number());
             try {
                 if (full.size() == refs.length) {
-                    Frame instance = kb.addInstance(r.shape(), name, valuesOf(refs), framesOf(refs));
+                    Frame instance = addInstance(r, name, refs);
                     // Its slots hold the required slots' facts in order: refs (shared: the activation is done with).
                     // Set after the add, yet before the engine handles its event: that waits for the next drain.
                     record.links = refs;
@@ -132,13 +140,32 @@ final class Firing {
         return slots;
     }
 
-    /** The values of the required slots: a reference to each bound fact, in order. */
-    private static Value[] valuesOf(FactView.Fact[] refs) {
-        Value[] out = new Value[refs.length];
-        for (int i = 0; i < refs.length; i++) {
-            out[i] = refs[i].ref();
+    /**
+     * Adds the instance of a firing that binds only required slots, through the frame's shape: the values are a
+     * reference to each bound fact, in order, and the frames at hand those the engine last saw for them.
+     */
+    private Frame addInstance(Rule r, String name, FactView.Fact[] refs) {
+        int n = refs.length;
+        if (n >= valueScratch.length) {
+            valueScratch = Arrays.copyOf(valueScratch, n + 1);
+            frameScratch = Arrays.copyOf(frameScratch, n + 1);
         }
-        return out;
+        Value[] values = valueScratch[n];
+        Frame[] frames = frameScratch[n];
+        if (values == null) {
+            values = valueScratch[n] = new Value[n];
+            frames = frameScratch[n] = new Frame[n];
+        }
+        for (int i = 0; i < n; i++) {
+            values[i] = refs[i].ref();
+            frames[i] = refs[i].frame;
+        }
+        try {
+            return kb.addInstance(r.shape(), name, values, frames);
+        } finally {
+            Arrays.fill(values, null); // nothing kept alive by a scratch array between firings
+            Arrays.fill(frames, null);
+        }
     }
 
     /** The bound facts' frames as the engine last saw them (null where it has none): those the new instance names. */

@@ -40,6 +40,11 @@ final class ForwardChainer {
     private final Retractions retractions;
     private final Firing firing;
     private long stampCounter;
+    /**
+     * The list {@link #factAdded} collects a new fact's bindings in, emptied after each fact and kept for the next
+     * (null while one is in use): a fact that completes bindings makes no list of its own.
+     */
+    private List<MatchNetwork.Match> spareMatches = new ArrayList<>();
     private long seq;
 
     ForwardChainer(KnowledgeBase kb, FactView facts, Conditions conditions, Supports supports, ScriptCalls scripts,
@@ -209,9 +214,16 @@ final class ForwardChainer {
         if (tracing.getAsBoolean()) {
             trace(new TraceEvent.FactAsserted(f.name(), cls, stamp));
         }
-        List<MatchNetwork.Match> matches = network.insert(fact, cls);
-        for (int i = 0; i < matches.size(); i++) {
-            consider(matches.get(i));
+        List<MatchNetwork.Match> matches = spareMatches != null ? spareMatches : new ArrayList<>();
+        spareMatches = null; // were this ever entered again while it considers, the inner call would make its own
+        try {
+            network.insert(fact, cls, matches);
+            for (int i = 0; i < matches.size(); i++) {
+                consider(matches.get(i));
+            }
+        } finally {
+            matches.clear();
+            spareMatches = matches;
         }
     }
 

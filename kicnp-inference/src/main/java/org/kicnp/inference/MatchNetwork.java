@@ -144,7 +144,15 @@ final class MatchNetwork {
      * {@link #NO_MATCHES}, with no list made.
      */
     List<Match> insert(FactView.Fact fact, String className) {
-        List<Match> out = NO_MATCHES;
+        return insert(fact, className, NO_MATCHES);
+    }
+
+    /**
+     * As {@link #insert(FactView.Fact, String)}, adding the bindings to {@code out} (a list the caller empties and
+     * fills again for each fact, so that a fact that completes something makes no list): returns {@code out}, or a
+     * new list when {@code out} is {@link #NO_MATCHES} and a binding was found.
+     */
+    List<Match> insert(FactView.Fact fact, String className, List<Match> out) {
         for (AlphaMemory m : entering(className)) {
             if (offer(m, fact) && m.position >= 0) {
                 out = complete(m, fact, out);
