@@ -64,9 +64,10 @@ public final class Frame {
     /**
      * A runtime instance frame with these slots, made without the checks of {@link #instance(String, String,
      * Provenance, Slot...)}: for a knowledge base that has made those checks another way ({@link InstanceShape}).
+     * {@code slots} must be immutable ({@link List#of}).
      */
-    static Frame plain(String name, String parent, Slot[] slots) {
-        return new Frame(name, parent, List.of(slots), Provenance.RUNTIME);
+    static Frame plain(String name, String parent, List<Slot> slots) {
+        return new Frame(name, parent, slots, Provenance.RUNTIME);
     }
 
     /** An immutable copy; most frames have no parts or links, so a builder leaves those lists null until used. */

@@ -80,15 +80,33 @@ public final class InstanceShape {
 
     /** The slots holding {@code values}. */
     Slot[] slots(Value[] values) {
-        if (values.length != templates.size()) {
-            throw new IllegalArgumentException("Instance shape of '" + className + "' has " + templates.size()
-                    + " slots, not " + values.length + ".");
-        }
+        checkCount(values);
         Slot[] slots = new Slot[values.length];
         for (int i = 0; i < values.length; i++) {
             slots[i] = templates.get(i).withValue(values[i]);
         }
         return slots;
+    }
+
+    /**
+     * {@link #slots(Value[])} as an immutable list: for one or two slots (most behavior frames) made without the
+     * array, which a list of them would only copy.
+     */
+    List<Slot> slotList(Value[] values) {
+        checkCount(values);
+        return switch (values.length) {
+            case 0 -> List.of();
+            case 1 -> List.of(templates.get(0).withValue(values[0]));
+            case 2 -> List.of(templates.get(0).withValue(values[0]), templates.get(1).withValue(values[1]));
+            default -> List.of(slots(values));
+        };
+    }
+
+    private void checkCount(Value[] values) {
+        if (values.length != templates.size()) {
+            throw new IllegalArgumentException("Instance shape of '" + className + "' has " + templates.size()
+                    + " slots, not " + values.length + ".");
+        }
     }
 
     /**

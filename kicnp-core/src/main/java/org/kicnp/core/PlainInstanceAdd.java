@@ -202,7 +202,7 @@ final class PlainInstanceAdd {
             }
             targets[i] = target;
         }
-        Frame f = Frame.plain(name, shape.className(), shape.slots(values));
+        Frame f = Frame.plain(name, shape.className(), shape.slotList(values));
         NameTable.keepNumber(f, number); // read off the name above
         Node node = new Node(f);
         if (!nodes.putNew(name, number, node)) {
