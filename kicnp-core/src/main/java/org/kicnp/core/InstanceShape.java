@@ -93,12 +93,14 @@ public final class InstanceShape {
      * array, which a list of them would only copy.
      */
     List<Slot> slotList(Value[] values) {
+        if (values.length > 2) {
+            return List.of(slots(values));
+        }
         checkCount(values);
         return switch (values.length) {
             case 0 -> List.of();
             case 1 -> List.of(templates.get(0).withValue(values[0]));
-            case 2 -> List.of(templates.get(0).withValue(values[0]), templates.get(1).withValue(values[1]));
-            default -> List.of(slots(values));
+            default -> List.of(templates.get(0).withValue(values[0]), templates.get(1).withValue(values[1]));
         };
     }
 

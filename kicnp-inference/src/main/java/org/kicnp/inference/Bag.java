@@ -14,7 +14,7 @@ import java.util.List;
  * an array or a collection themselves (the engine's are activations, binding keys, names and fact records), so the
  * field's class tells its form.
  *
- * <p>The one-element form (session 18): most bags hold one element all their life (a key's bucket in an alpha-memory
+ * <p>The one-element form: most bags hold one element all their life (a key's bucket in an alpha-memory
  * index, a derived fact's one dependent or fired binding), and an array for it was one more object to make and one
  * more cache line to read each time the fact is joined or fired.
  *

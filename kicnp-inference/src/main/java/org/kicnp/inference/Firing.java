@@ -103,7 +103,8 @@ final class Firing {
                     record.links = refs;
                     record.linksOf = instance;
                 } else {
-                    kb.add(Frame.instance(name, r.frame(), Provenance.RUNTIME, slotsOf(full)), framesOf(refs));
+                    kb.add(Frame.instance(name, r.frame(), Provenance.RUNTIME, slotsOf(full)),
+                            framesOf(refs, new Frame[refs.length]));
                 }
                 made.added(record);
                 break;
@@ -158,19 +159,20 @@ final class Firing {
         }
         for (int i = 0; i < n; i++) {
             values[i] = refs[i].ref();
-            frames[i] = refs[i].frame;
         }
         try {
-            return kb.addInstance(r.shape(), name, values, frames);
+            return kb.addInstance(r.shape(), name, values, framesOf(refs, frames));
         } finally {
             Arrays.fill(values, null); // nothing kept alive by a scratch array between firings
             Arrays.fill(frames, null);
         }
     }
 
-    /** The bound facts' frames as the engine last saw them (null where it has none): those the new instance names. */
-    private static Frame[] framesOf(FactView.Fact[] refs) {
-        Frame[] out = new Frame[refs.length];
+    /**
+     * The bound facts' frames as the engine last saw them (null where it has none), those the new instance names,
+     * put in {@code out} (as long as {@code refs}) and returned.
+     */
+    private static Frame[] framesOf(FactView.Fact[] refs, Frame[] out) {
         for (int i = 0; i < refs.length; i++) {
             out[i] = refs[i].frame;
         }
