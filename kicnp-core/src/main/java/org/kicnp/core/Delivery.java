@@ -1,5 +1,6 @@
 package org.kicnp.core;
 
+import java.util.ArrayDeque;
 import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -20,6 +21,13 @@ final class Delivery {
     private final List<KnowledgeListener> listeners = new CopyOnWriteArrayList<>();
     private final ConcurrentLinkedQueue<ChangeSet> undelivered = new ConcurrentLinkedQueue<>();
     private final ReentrantLock delivery = new ReentrantLock();
+    /**
+     * While a thread {@linkplain KnowledgeBase#hold holds} the knowledge base: the batches it has committed and not yet
+     * delivered, in commit order, and whether it is delivering one now (a listener's change then waits its turn here).
+     * Used by the holding thread only, under both locks.
+     */
+    private final ArrayDeque<ChangeSet> held = new ArrayDeque<>();
+    private boolean deliveringHeld;
 
     void add(KnowledgeListener listener) {
         listeners.add(listener);
@@ -66,6 +74,67 @@ final class Delivery {
         } else if (!cs.isEmpty()) {
             deliver();
         }
+    }
+
+    /**
+     * Starts a hold for this thread: takes the delivery lock (before the write lock, the order {@link #deliver} takes
+     * them in when a listener commits), unless this thread is delivering a batch now. Then the answer is false and
+     * there is no hold: its commits must wait for the batch being delivered to reach every listener.
+     */
+    boolean beginHold() {
+        if (delivery.isHeldByCurrentThread()) {
+            return false;
+        }
+        delivery.lock();
+        return true;
+    }
+
+    /**
+     * Once the hold has the write lock too: delivers what was queued before it, in order, before anything the holding
+     * thread commits.
+     */
+    void heldFromNow() {
+        ChangeSet cs;
+        while ((cs = undelivered.poll()) != null) {
+            held.add(cs);
+        }
+        deliverHeld();
+    }
+
+    /**
+     * A batch the holding thread committed: delivered now, in this thread, unless this thread is delivering one
+     * already (a listener's change), which then delivers it next.
+     */
+    void deliverHeld(ChangeSet cs) {
+        if (!cs.isEmpty()) {
+            held.add(cs);
+            deliverHeld();
+        }
+    }
+
+    private void deliverHeld() {
+        if (deliveringHeld) {
+            return;
+        }
+        deliveringHeld = true;
+        try {
+            ChangeSet cs;
+            while ((cs = held.poll()) != null) {
+                notifyListeners(cs);
+            }
+        } finally {
+            deliveringHeld = false;
+        }
+    }
+
+    /** Whether the holding thread is delivering a batch now (it is in a listener). */
+    boolean deliveringHeld() {
+        return deliveringHeld;
+    }
+
+    /** Ends a hold once the write lock is released: every batch it committed has been delivered. */
+    void endHold() {
+        delivery.unlock();
     }
 
     /** Delivers the queued batches in order; a change made by a listener is delivered by the outer loop. */

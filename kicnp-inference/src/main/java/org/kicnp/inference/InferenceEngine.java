@@ -76,7 +76,9 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
                 return actions.unfinished(robot);
             }
         });
-        this.scripts = new ScriptCalls(kb, host, api, supports, actions, this::trace, new ScriptCalls.Target() {
+        Burst burst = new Burst(kb);
+        ScriptHost releasing = burst.releasingBefore(host);
+        this.scripts = new ScriptCalls(kb, releasing, api, supports, actions, this::trace, new ScriptCalls.Target() {
             @Override public Set<String> destroy(String instance, String reason) {
                 return forward.destroyNow(instance, reason);
             }
@@ -87,7 +89,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
         });
         this.forward = new ForwardChainer(kb, facts, conditions, supports, scripts, this::trace, () -> !tracers.isEmpty());
         this.backward = new BackwardChainer(kb, options, supports, forward::rules);
-        this.loop = new RunLoop(lock, options, forward, actions, this::trace, runner);
+        this.loop = new RunLoop(lock, options, forward, actions, burst, this::trace, runner);
         this.listener = loop::changed;
     }
 

@@ -15,7 +15,7 @@ public final class InferenceLimitException extends InferenceException {
         this.topFrames = List.copyOf(topFrames);
     }
 
-    /** The frames that fired most in the run that was stopped, most frequent first. */
+    /** The frames that fired most in the stopped run's last 4,096 firings (or all of them), most frequent first. */
     public List<String> topFrames() {
         return topFrames;
     }

@@ -1,7 +1,7 @@
 package org.kicnp.inference;
 
 import java.util.Comparator;
-import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -29,6 +29,8 @@ final class RunLoop {
     private final EngineOptions options;
     private final ForwardChainer forward;
     private final ActionCoordinator actions;
+    /** The knowledge base held across firings (see {@link Burst}); given back whenever the run stops firing. */
+    private final Burst burst;
     private final Consumer<TraceEvent> tracer;
     private final Optional<Executor> runner;
     private final ConcurrentLinkedQueue<Runnable> inbox = new ConcurrentLinkedQueue<>();
@@ -41,13 +43,21 @@ final class RunLoop {
      * queued after it. Null: none. Read and written under {@link #lock} only.
      */
     private ChangeSet own;
+    /**
+     * The rules of the run's last {@link #RECENT} firings, a ring (firing {@code i} at {@code i % RECENT}): what the
+     * firing limit's error names. A runaway knowledge base is firing its loop by then, and a store per firing costs
+     * less than a count per frame kept up to date. Read and written under {@link #lock} only.
+     */
+    private final Rule[] recent = new Rule[RECENT];
+    private static final int RECENT = 4096;
 
-    RunLoop(ReentrantLock lock, EngineOptions options, ForwardChainer forward, ActionCoordinator actions,
+    RunLoop(ReentrantLock lock, EngineOptions options, ForwardChainer forward, ActionCoordinator actions, Burst burst,
             Consumer<TraceEvent> tracer, Optional<Executor> runner) {
         this.lock = lock;
         this.options = options;
         this.forward = forward;
         this.actions = actions;
+        this.burst = burst;
         this.tracer = tracer;
         this.runner = runner;
     }
@@ -59,14 +69,13 @@ final class RunLoop {
         running = true;
         try {
             int count = 0;
-            // Firings per frame, for the limit's message: a counter each, not an Integer boxed per firing.
-            Map<String, int[]> perFrame = new HashMap<>();
             while (true) {
                 drain();
                 actions.checkTimeouts();
                 drain();
                 Activation next = forward.next();
                 if (next == null) {
+                    burst.release();
                     actions.releaseSynchronized();
                     if (own == null && inbox.isEmpty()) {
                         return count;
@@ -76,19 +85,21 @@ final class RunLoop {
                 if (!forward.mayFire(next)) {
                     continue; // blocked when its turn came: not a firing, so not counted against the limit
                 }
+                recent[count % RECENT] = next.rule();
                 count++;
-                perFrame.computeIfAbsent(next.rule().frame(), f -> new int[1])[0]++;
                 if (count > options.maxFirings()) {
+                    burst.release();
                     forward.clearAgenda();
-                    List<String> top = perFrame.entrySet().stream()
-                            .sorted(Comparator.comparingInt((Map.Entry<String, int[]> e) -> e.getValue()[0]).reversed())
-                            .limit(3).map(Map.Entry::getKey).toList();
+                    List<String> top = mostFiring(Math.min(count, RECENT));
                     tracer.accept(new TraceEvent.LimitReached(options.maxFirings(), top));
                     throw new InferenceLimitException(options.maxFirings(), top);
                 }
+                burst.beforeFiring();
                 forward.fire(next);
+                burst.afterFiring();
             }
         } finally {
+            burst.release();
             if (outer) {
                 running = false;
                 if (own != null) { // a run that ended by an exception: the change set waits in the queue as any other
@@ -99,6 +110,20 @@ final class RunLoop {
             }
             lock.unlock();
         }
+    }
+
+    /**
+     * The frames that fired most among the last {@code n} firings, most first (at most three; ties in the order of
+     * each frame's first firing there).
+     */
+    private List<String> mostFiring(int n) {
+        Map<String, int[]> perFrame = new LinkedHashMap<>();
+        for (int i = 0; i < n; i++) {
+            perFrame.computeIfAbsent(recent[i].frame(), f -> new int[1])[0]++;
+        }
+        return perFrame.entrySet().stream()
+                .sorted(Comparator.comparingInt((Map.Entry<String, int[]> e) -> e.getValue()[0]).reversed())
+                .limit(3).map(Map.Entry::getKey).toList();
     }
 
     /** Forgets what was queued before the engine attached: {@link ForwardChainer#start} sees it all. */

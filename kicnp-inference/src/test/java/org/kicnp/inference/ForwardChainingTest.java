@@ -230,6 +230,24 @@ class ForwardChainingTest {
     }
 
     @Test
+    void cycleLimit_namesTheFramesFiringMostAmongTheLast4096Firings_theLoopNotWhatFiredBeforeIt() {
+        Fixture f = new Fixture();
+        f.cls("Thing", null).cls("Visitor", null);
+        f.kb.add(Frame.classFrame("Echo").parent("Thing").priority(1).slot(Fixture.inst("mIn", "Thing")).build());
+        f.kb.add(Frame.classFrame("Greet").priority(5).slot(Fixture.inst("mVisitor", "Visitor")).build());
+        InferenceEngine e = f.engine(EngineOptions.defaults().withMaxFirings(8_000));
+        f.assertFact("t0", "Thing");
+        for (int i = 0; i < 5_000; i++) {
+            f.assertFact("v" + i, "Visitor");
+        }
+        // 5,000 Greets first (higher priority), then Echo feeds itself: 3,001 Echos when the limit stops it. In the
+        // whole run Greet fired more; among the last 4,096 firings Echo did (3,001 to 1,095).
+        assertThatThrownBy(e::runToQuiescence).isInstanceOf(InferenceLimitException.class)
+                .satisfies(x -> assertThat(((InferenceLimitException) x).topFrames()).containsExactly("Echo", "Greet"));
+        assertThat(f.instancesOf("Greet")).hasSize(5_000);
+    }
+
+    @Test
     void cycleLimit_countsFirings_notActivationsBlockedWhenTheirTurnCame() {
         Fixture f = new Fixture();
         f.cls("User", null).cls("Cup", null);
