@@ -9,12 +9,9 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.CyclicBarrier;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicInteger;
-import java.util.stream.LongStream;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
@@ -26,6 +23,8 @@ import org.junit.jupiter.api.Test;
 class KnowledgeBaseHoldTest {
     /** Long enough for a thread that is not blocked to have finished a look-up many times over. */
     private static final long BLOCKED_MS = 300;
+    /** Changes each writer makes in the test of holds and plain changes from four threads at once. */
+    private static final int PER_WRITER = 2_000;
     /** Threads of their own for the other threads' calls: one left blocked must not hold up the next. */
     private final ExecutorService pool = Executors.newCachedThreadPool();
 
@@ -171,51 +170,23 @@ class KnowledgeBaseHoldTest {
     @Test
     void listenersHearEveryVersionOnceInCommitOrder_oneAtATime_whileHoldsAndPlainChangesInterleave() throws Exception {
         KnowledgeBase kb = figure1();
-        long start = kb.version();
-        List<Long> heard = Collections.synchronizedList(new ArrayList<>());
-        AtomicInteger inside = new AtomicInteger();
-        AtomicInteger overlaps = new AtomicInteger();
-        kb.addListener(cs -> {
-            if (inside.incrementAndGet() != 1) {
-                overlaps.incrementAndGet();
-            }
-            heard.add(cs.version());
-            Thread.onSpinWait();
-            inside.decrementAndGet();
-        });
-        int threads = 4;
-        int perThread = 2_000;
-        CyclicBarrier go = new CyclicBarrier(threads);
-        List<Thread> writers = new ArrayList<>();
-        for (int t = 0; t < threads; t++) {
-            int id = t;
-            writers.add(Thread.ofPlatform().start(() -> {
-                try {
-                    go.await();
-                } catch (Exception e) {
-                    throw new IllegalStateException(e);
-                }
-                int i = 0;
-                while (i < perThread) {
-                    if (id % 2 == 0) { // bursts of up to 10 changes in a hold
-                        try (KnowledgeBase.Hold h = kb.hold()) {
-                            for (int k = 0; k < 10 && i < perThread; k++, i++) {
-                                kb.add(i % 5 == 0 ? cls("C" + id + "_" + i, "Speech") : user("u" + id + "_" + i));
-                            }
+        DeliveryProbe probe = DeliveryProbe.on(kb);
+        DeliveryProbe.together(4, id -> {
+            int i = 0;
+            while (i < PER_WRITER) {
+                if (id % 2 == 0) { // bursts of up to 10 changes in a hold
+                    try (KnowledgeBase.Hold h = kb.hold()) {
+                        for (int k = 0; k < 10 && i < PER_WRITER; k++, i++) {
+                            kb.add(i % 5 == 0 ? cls("C" + id + "_" + i, "Speech") : user("u" + id + "_" + i));
                         }
-                    } else {
-                        kb.add(i % 5 == 0 ? cls("C" + id + "_" + i, "Speech") : user("u" + id + "_" + i));
-                        i++;
                     }
+                } else {
+                    kb.add(i % 5 == 0 ? cls("C" + id + "_" + i, "Speech") : user("u" + id + "_" + i));
+                    i++;
                 }
-            }));
-        }
-        for (Thread t : writers) {
-            t.join();
-        }
-        List<Long> expected = LongStream.rangeClosed(start + 1, start + threads * perThread).boxed().toList();
-        assertThat(heard).isEqualTo(expected);
-        assertThat(overlaps).hasValue(0);
-        assertThat(kb.countInstancesOf("NewUser")).isEqualTo(threads * perThread * 4 / 5);
+            }
+        });
+        probe.assertHeardInOrder(4 * PER_WRITER);
+        assertThat(kb.countInstancesOf("NewUser")).isEqualTo(4 * PER_WRITER * 4 / 5);
     }
 }

@@ -8,11 +8,7 @@ import static org.kicnp.core.Frames.instanceSlot;
 import static org.kicnp.core.Frames.str;
 
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.List;
-import java.util.concurrent.CyclicBarrier;
-import java.util.concurrent.atomic.AtomicInteger;
-import java.util.stream.LongStream;
 import org.junit.jupiter.api.Test;
 
 class KnowledgeBaseTest {
@@ -413,43 +409,16 @@ class KnowledgeBaseTest {
     @Test
     void listeners_hearEveryVersionOnceInCommitOrder_oneAtATime_whileThreadsCommitAtOnce() throws Exception {
         KnowledgeBase kb = figure1();
-        long start = kb.version();
-        List<Long> heard = Collections.synchronizedList(new ArrayList<>());
-        AtomicInteger inside = new AtomicInteger();
-        AtomicInteger overlaps = new AtomicInteger();
-        kb.addListener(cs -> {
-            if (inside.incrementAndGet() != 1) {
-                overlaps.incrementAndGet();
-            }
-            heard.add(cs.version());
-            Thread.onSpinWait();
-            inside.decrementAndGet();
-        });
-        int threads = 4;
+        DeliveryProbe probe = DeliveryProbe.on(kb);
         int perThread = 3_000;
-        CyclicBarrier go = new CyclicBarrier(threads);
-        List<Thread> writers = new ArrayList<>();
-        for (int t = 0; t < threads; t++) {
-            int id = t;
-            writers.add(Thread.ofPlatform().start(() -> {
-                try {
-                    go.await();
-                } catch (Exception e) {
-                    throw new IllegalStateException(e);
-                }
-                for (int i = 0; i < perThread; i++) {
-                    // plain instances (the short cut) and class frames (the general path), interleaved
-                    kb.add(i % 5 == 0 ? cls("C" + id + "_" + i, "Speech")
-                            : Frame.instance("u" + id + "_" + i, "NewUser").provenance(Provenance.RUNTIME).build());
-                }
-            }));
-        }
-        for (Thread t : writers) {
-            t.join();
-        }
-        List<Long> expected = LongStream.rangeClosed(start + 1, start + threads * perThread).boxed().toList();
-        assertThat(heard).isEqualTo(expected);
-        assertThat(overlaps).hasValue(0);
+        DeliveryProbe.together(4, id -> {
+            for (int i = 0; i < perThread; i++) {
+                // plain instances (the short cut) and class frames (the general path), interleaved
+                kb.add(i % 5 == 0 ? cls("C" + id + "_" + i, "Speech")
+                        : Frame.instance("u" + id + "_" + i, "NewUser").provenance(Provenance.RUNTIME).build());
+            }
+        });
+        probe.assertHeardInOrder(4 * perThread);
     }
 
     @Test
