@@ -7,7 +7,6 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import java.util.concurrent.locks.ReentrantReadWriteLock;
 import java.util.function.Consumer;
 import java.util.function.Function;
 import java.util.function.LongConsumer;
@@ -23,7 +22,8 @@ import java.util.function.Supplier;
  * set kept per class, so it costs O(1) per result and never scans.
  */
 public final class KnowledgeBase {
-    private final ReentrantReadWriteLock lock = new ReentrantReadWriteLock();
+    /** The locks, holds and delivery of batches to listeners. */
+    private final Access access = new Access();
     private final NodeIndex nodes = new NodeIndex();
     /**
      * What validation has learnt of the classes (acyclic IS-A chains, inherited slot declarations), kept between
@@ -35,7 +35,6 @@ public final class KnowledgeBase {
     /** Scratch list for validation and indexing, used under the write lock. */
     private final List<String> refs = new ArrayList<>();
     private final CommitLog commitLog;
-    private final Delivery delivery = new Delivery();
     private long version;
     /** Adds made by {@link PlainInstanceAdd}, for tests that must know the short cut was taken. */
     private long plainAdds;
@@ -43,14 +42,6 @@ public final class KnowledgeBase {
     private long classEpoch;
     /** Whether plain instances take {@link PlainInstanceAdd}; off only in tests that compare with the general path. */
     private boolean shortCuts = true;
-    /**
-     * The thread that {@linkplain #hold holds} this knowledge base, or null. Written by that thread only, under the
-     * write lock; another thread may read a stale value, never its own thread.
-     */
-    private Thread holder;
-    /** The hold was closed while its thread was in a listener: it ends once that delivery is over. */
-    private boolean holdEnding;
-    private static final Hold NO_HOLD = () -> { };
 
     private KnowledgeBase(CommitLog commitLog) {
         this.commitLog = requireNonNull(commitLog, "commitLog");
@@ -247,12 +238,7 @@ public final class KnowledgeBase {
 
     /** Makes every change take the general path, for tests that compare the short cut with it. */
     KnowledgeBase withoutShortCuts() {
-        lock.writeLock().lock();
-        try {
-            shortCuts = false;
-        } finally {
-            lock.writeLock().unlock();
-        }
+        access.write(() -> shortCuts = false);
         return this;
     }
 
@@ -299,7 +285,7 @@ public final class KnowledgeBase {
         requireNonNull(shape, "shape");
         requireNonNull(name, "name");
         requireNonNull(referred, "referred");
-        return applied(() -> commitInstance(shape, name, values, referred)).events().getFirst().frame();
+        return access.applied(() -> commitInstance(shape, name, values, referred)).events().getFirst().frame();
     }
 
     private ChangeSet commitInstance(InstanceShape shape, String name, Value[] values, Frame[] referred) {
@@ -339,7 +325,7 @@ public final class KnowledgeBase {
     /** As {@link #apply(List)}, with frames the batch's frames may refer to at hand ({@link Node#find}), or null. */
     private ChangeSet apply(List<? extends Change> changes, Frame[] near) {
         requireNonNull(changes, "changes");
-        return applied(() -> commit(changes, near));
+        return access.applied(() -> commit(changes, near));
     }
 
     /**
@@ -363,71 +349,7 @@ public final class KnowledgeBase {
      * delivery is over. Closing a hold twice, or from another thread, does nothing.
      */
     public Hold hold() {
-        Thread me = Thread.currentThread();
-        if (holder == me || !delivery.beginHold()) {
-            return NO_HOLD;
-        }
-        lock.writeLock().lock();
-        holder = me;
-        try {
-            delivery.heldFromNow(); // what other threads committed before the hold reaches the listeners first
-        } catch (Throwable t) {
-            endHold();
-            throw t;
-        }
-        return new Hold() {
-            private boolean closed;
-
-            @Override public void close() {
-                if (closed || holder != Thread.currentThread()) {
-                    return;
-                }
-                closed = true;
-                if (delivery.deliveringHeld()) {
-                    holdEnding = true;
-                } else {
-                    endHold();
-                }
-            }
-        };
-    }
-
-    private void endHoldIfAsked() {
-        if (holdEnding && !delivery.deliveringHeld()) {
-            endHold();
-        }
-    }
-
-    private void endHold() {
-        holdEnding = false;
-        holder = null;
-        lock.writeLock().unlock();
-        delivery.endHold();
-    }
-
-    /**
-     * Commits under the write lock and {@linkplain Delivery#queue readies} the change set there, in commit order; then,
-     * with the lock released, hands it to the listeners. In a {@linkplain #hold hold} of this thread's, commits and
-     * delivers with no lock to take.
-     */
-    private ChangeSet applied(Supplier<ChangeSet> commit) {
-        if (holder == Thread.currentThread()) {
-            ChangeSet committed = commit.get();
-            delivery.deliverHeld(committed);
-            endHoldIfAsked();
-            return committed;
-        }
-        ChangeSet committed;
-        boolean first;
-        lock.writeLock().lock();
-        try {
-            committed = commit.get();
-            first = delivery.queue(committed);
-        } finally {
-            lock.writeLock().unlock();
-        }
-        delivery.deliver(committed, first);
-        return committed;
+        return access.hold();
     }
 
     /**
@@ -462,16 +384,10 @@ public final class KnowledgeBase {
 
     /** Runs {@code part} of a staged batch under the read lock, with the version it sees. */
     void readStaged(LongConsumer part) {
-        if (holder == Thread.currentThread()) {
+        read(() -> {
             part.accept(version);
-            return;
-        }
-        lock.readLock().lock();
-        try {
-            part.accept(version);
-        } finally {
-            lock.readLock().unlock();
-        }
+            return null;
+        });
     }
 
     NodeIndex nodes() {
@@ -485,16 +401,16 @@ public final class KnowledgeBase {
      */
     ChangeSet commitStaged(long stagedAt, Supplier<List<FrameEvent>> finish, PreparedNodes prepared,
             boolean classesUnchanged, Supplier<List<Change>> adds) {
-        return applied(() -> version == stagedAt ? publish(finish.get(), classesUnchanged, prepared, null)
+        return access.applied(() -> version == stagedAt ? publish(finish.get(), classesUnchanged, prepared, null)
                 : commit(adds.get(), null));
     }
 
     public void addListener(KnowledgeListener listener) {
-        delivery.add(requireNonNull(listener, "listener"));
+        access.addListener(requireNonNull(listener, "listener"));
     }
 
     public void removeListener(KnowledgeListener listener) {
-        delivery.remove(listener);
+        access.removeListener(listener);
     }
 
     private ChangeSet commit(List<? extends Change> changes, Frame[] near) {
@@ -566,14 +482,6 @@ public final class KnowledgeBase {
     }
 
     private <T> T read(Supplier<T> body) {
-        if (holder == Thread.currentThread()) {
-            return body.get();
-        }
-        lock.readLock().lock();
-        try {
-            return body.get();
-        } finally {
-            lock.readLock().unlock();
-        }
+        return access.read(body);
     }
 }

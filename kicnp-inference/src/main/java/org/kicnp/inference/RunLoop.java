@@ -88,7 +88,6 @@ final class RunLoop {
                 recent[count % RECENT] = next.rule();
                 count++;
                 if (count > options.maxFirings()) {
-                    burst.release();
                     forward.clearAgenda();
                     List<String> top = mostFiring(Math.min(count, RECENT));
                     tracer.accept(new TraceEvent.LimitReached(options.maxFirings(), top));
