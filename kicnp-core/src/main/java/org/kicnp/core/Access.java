@@ -33,7 +33,7 @@ final class Access {
 
     /** Runs {@code body} under the read lock (with none to take in this thread's hold). */
     <T> T read(Supplier<T> body) {
-        if (holder == Thread.currentThread()) {
+        if (holding()) {
             return body.get();
         }
         lock.readLock().lock();
@@ -60,11 +60,8 @@ final class Access {
      * to take.
      */
     ChangeSet applied(Supplier<ChangeSet> commit) {
-        if (holder == Thread.currentThread()) {
-            ChangeSet committed = commit.get();
-            delivery.deliverHeld(committed);
-            endHoldIfAsked();
-            return committed;
+        if (holding()) {
+            return committedInHold(commit.get());
         }
         ChangeSet committed;
         boolean first;
@@ -76,6 +73,22 @@ final class Access {
             lock.writeLock().unlock();
         }
         delivery.deliver(committed, first);
+        return committed;
+    }
+
+    /** Whether this thread holds the knowledge base: it may then commit and read with no lock to take. */
+    boolean holding() {
+        return holder == Thread.currentThread();
+    }
+
+    /**
+     * Delivers a change set this thread committed in its {@link #holding hold} and returns it: the part of
+     * {@link #applied} after the commit, for a caller that commits without handing it a {@code Supplier} (the one
+     * object a firing's commit would make for nothing but the hand-over).
+     */
+    ChangeSet committedInHold(ChangeSet committed) {
+        delivery.deliverHeld(committed);
+        endHoldIfAsked();
         return committed;
     }
 

@@ -285,7 +285,9 @@ public final class KnowledgeBase {
         requireNonNull(shape, "shape");
         requireNonNull(name, "name");
         requireNonNull(referred, "referred");
-        return access.applied(() -> commitInstance(shape, name, values, referred)).events().getFirst().frame();
+        ChangeSet added = access.holding() ? access.committedInHold(commitInstance(shape, name, values, referred))
+                : access.applied(() -> commitInstance(shape, name, values, referred));
+        return added.events().getFirst().frame();
     }
 
     private ChangeSet commitInstance(InstanceShape shape, String name, Value[] values, Frame[] referred) {

@@ -53,6 +53,16 @@ final class Binding extends SlotBinding {
         return new Binding(List.of(s), f);
     }
 
+    /** The slots, in order (immutable). */
+    List<String> slotList() {
+        return slots;
+    }
+
+    /** The bound instances by position; not to be changed. */
+    String[] factArray() {
+        return facts;
+    }
+
     @Override int width() {
         return facts.length;
     }

@@ -24,10 +24,37 @@ final class CheckedConditions extends AbstractList<Derivation.CheckedCondition> 
     /** The value each checked pattern was tested on: a {@link Value}, or an instance's name. */
     private final Object[] tested;
 
-    private CheckedConditions(List<SlotPattern> patterns, int[] which, Object[] tested) {
+    /** The list of {@code tested[i]} as the value tested by {@code patterns.get(which == null ? i : which[i])}. */
+    CheckedConditions(List<SlotPattern> patterns, int[] which, Object[] tested) {
         this.patterns = patterns;
         this.which = which;
         this.tested = tested;
+    }
+
+    /**
+     * The values a firing of {@code r}, a rule with no optional slots, tests its conditions on: for each of its
+     * patterns (its required slots, in order) the value along the condition's left path from the fact bound there
+     * ({@code refs}, in the same order), or the fact's name. What {@link #of} takes, without the list around it.
+     */
+    static Object[] tested(Rule r, FactView.Fact[] refs, FactView facts, Conditions conditions) {
+        List<SlotPattern> patterns = r.required();
+        Object[] tested = new Object[refs.length];
+        for (int i = 0; i < refs.length; i++) {
+            tested[i] = testedOn(patterns.get(i), refs[i], refs[i].name, facts, conditions);
+        }
+        return tested;
+    }
+
+    /** The value pattern {@code p}'s condition is tested on: along its left path from the fact, or the fact's name. */
+    private static Object testedOn(SlotPattern p, FactView.Fact record, String fact, FactView facts,
+            Conditions conditions) {
+        List<String> path = p.condition().testedPath().orElse(null);
+        if (path == null) {
+            return fact;
+        }
+        Value v = record != null ? facts.followOrNull(record, path, conditions)
+                : conditions.follow(Value.ref(fact), path).orElse(null);
+        return v != null ? v : fact;
     }
 
     /**
@@ -55,15 +82,7 @@ final class CheckedConditions extends AbstractList<Derivation.CheckedCondition> 
                 }
                 continue;
             }
-            List<String> path = p.condition().testedPath().orElse(null);
-            Object value = fact;
-            if (path != null) {
-                Value v = record != null ? facts.followOrNull(record, path, conditions)
-                        : conditions.follow(Value.ref(fact), path).orElse(null);
-                if (v != null) {
-                    value = v;
-                }
-            }
+            Object value = testedOn(p, record, fact, facts, conditions);
             if (which != null) {
                 which[count] = i;
             }

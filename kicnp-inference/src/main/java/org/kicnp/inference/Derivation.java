@@ -5,6 +5,7 @@ import static java.util.Objects.requireNonNull;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Optional;
 
 /**
@@ -12,24 +13,123 @@ import java.util.Optional;
  * the value it was tested on, the firing number, the fact whose arrival completed the binding ({@code trigger}), and,
  * for an instance a script created, the instance whose firing ran that script. The binding is immutable and keeps
  * the order it was given in (the behavior frame's slot order for a firing).
+ *
+ * <p>A value class with the accessors, equality and text of a record of those seven components. Every derived
+ * instance keeps one for as long as it lives, and few are ever read: so it holds the binding as its slots and
+ * instances by position, and the conditions as the values tested, one object and an array where a binding map and a
+ * list of conditions were two more; {@link #binding()} and {@link #conditions()} are views made when asked.
  */
-public record Derivation(String instance, String frame, Map<String, String> binding, List<CheckedCondition> conditions,
-                         long firing, String trigger, Optional<String> createdBy) {
-    public Derivation {
-        requireNonNull(instance, "instance");
-        requireNonNull(frame, "frame");
-        binding = Binding.copyOf(binding);
+public final class Derivation {
+    private final String instance;
+    private final String frame;
+    /** The binding's slots and, by position, the instances bound to them (never changed once made). */
+    private final List<String> slots;
+    private final String[] facts;
+    /**
+     * The conditions: with {@link #patterns}, a firing's values tested, an {@code Object[]} by pattern (a
+     * {@link CheckedConditions} when asked); with no patterns (null), the list itself.
+     */
+    private final List<SlotPattern> patterns;
+    private final Object checked;
+    private final long firing;
+    private final String trigger;
+    private final Optional<String> createdBy;
+
+    public Derivation(String instance, String frame, Map<String, String> binding, List<CheckedCondition> conditions,
+                      long firing, String trigger, Optional<String> createdBy) {
+        Binding b = Binding.copyOf(binding);
+        this.instance = requireNonNull(instance, "instance");
+        this.frame = requireNonNull(frame, "frame");
+        this.slots = b.slotList();
+        this.facts = b.factArray();
+        this.patterns = null;
         // A firing's own list is immutable already, and copying it would make every record it defers at once.
-        conditions = conditions instanceof CheckedConditions ? conditions : List.copyOf(conditions);
-        requireNonNull(trigger, "trigger");
-        requireNonNull(createdBy, "createdBy");
+        this.checked = conditions instanceof CheckedConditions ? conditions : List.copyOf(conditions);
+        this.firing = firing;
+        this.trigger = requireNonNull(trigger, "trigger");
+        this.createdBy = requireNonNull(createdBy, "createdBy");
+    }
+
+    /**
+     * A firing's derivation: the rule's required slots bound to {@code facts} (never to be changed afterwards), and
+     * the conditions of {@code patterns} tested on {@code tested} ({@link CheckedConditions#tested}); no copies.
+     */
+    Derivation(String instance, String frame, List<String> slots, String[] facts, List<SlotPattern> patterns,
+               Object[] tested, long firing, String trigger) {
+        this.instance = instance;
+        this.frame = frame;
+        this.slots = slots;
+        this.facts = facts;
+        this.patterns = patterns;
+        this.checked = tested;
+        this.firing = firing;
+        this.trigger = trigger;
+        this.createdBy = Optional.empty();
+    }
+
+    public String instance() {
+        return instance;
+    }
+
+    public String frame() {
+        return frame;
+    }
+
+    /** The binding, slot → instance, in slot order (immutable). */
+    public Map<String, String> binding() {
+        return Binding.wrap(slots, facts);
+    }
+
+    /** Each bound slot's condition and the value it was tested on (immutable). */
+    @SuppressWarnings("unchecked")
+    public List<CheckedCondition> conditions() {
+        return patterns == null ? (List<CheckedCondition>) checked
+                : new CheckedConditions(patterns, null, (Object[]) checked);
+    }
+
+    public long firing() {
+        return firing;
+    }
+
+    public String trigger() {
+        return trigger;
+    }
+
+    public Optional<String> createdBy() {
+        return createdBy;
+    }
+
+    /** The number of bound slots. */
+    int width() {
+        return facts.length;
+    }
+
+    /** The instance bound to the slot at {@code position}. */
+    String factAt(int position) {
+        return facts[position];
     }
 
     /** The instances this one rests on: its binding, and the creating instance for a scripted creation. */
     List<String> supports() {
-        List<String> out = new ArrayList<>(binding.values());
+        List<String> out = new ArrayList<>(facts.length + 1);
+        out.addAll(List.of(facts));
         createdBy.ifPresent(out::add);
         return out;
+    }
+
+    @Override public boolean equals(Object o) {
+        return o instanceof Derivation d && d.firing == firing && d.instance.equals(instance) && d.frame.equals(frame)
+                && d.binding().equals(binding()) && d.conditions().equals(conditions()) && d.trigger.equals(trigger)
+                && d.createdBy.equals(createdBy);
+    }
+
+    @Override public int hashCode() {
+        return Objects.hash(instance, frame, binding(), conditions(), firing, trigger, createdBy);
+    }
+
+    @Override public String toString() {
+        return "Derivation[instance=" + instance + ", frame=" + frame + ", binding=" + binding() + ", conditions="
+                + conditions() + ", firing=" + firing + ", trigger=" + trigger + ", createdBy=" + createdBy + "]";
     }
 
     /** A slot condition as it was tested when the frame fired. */

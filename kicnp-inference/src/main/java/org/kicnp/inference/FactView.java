@@ -27,8 +27,11 @@ final class FactView implements Conditions.Reader {
         /** The frame as last seen; null when the network met the instance in the knowledge base before its event. */
         Frame frame;
         long stamp;
-        /** The fact's memberships of alpha memories, exactly as many as it has (null: none). */
-        AlphaMemory.Entry[] entries;
+        /**
+         * The fact's memberships of alpha memories: null (none), one {@link AlphaMemory.Entry} (most facts: one
+         * memory takes their class), or an array of exactly as many as it has.
+         */
+        private Object entries;
         /** The activations that bind it waiting on the agenda: a {@link Bag}. */
         Object activations;
         /** The bindings with this fact that have fired (refraction), {@link BindingKey}s: a {@link Bag}. */
@@ -63,8 +66,11 @@ final class FactView implements Conditions.Reader {
 
         /** The fact's membership of memory {@code m}, or null. */
         AlphaMemory.Entry entryIn(AlphaMemory m) {
+            if (entries instanceof AlphaMemory.Entry e) {
+                return e.memory == m ? e : null;
+            }
             if (entries != null) {
-                for (AlphaMemory.Entry e : entries) {
+                for (AlphaMemory.Entry e : (AlphaMemory.Entry[]) entries) {
                     if (e.memory == m) {
                         return e;
                     }
@@ -75,11 +81,18 @@ final class FactView implements Conditions.Reader {
 
         void enter(AlphaMemory.Entry e) {
             if (entries == null) {
-                entries = new AlphaMemory.Entry[] {e};
+                entries = e;
             } else {
-                entries = Arrays.copyOf(entries, entries.length + 1);
-                entries[entries.length - 1] = e;
+                AlphaMemory.Entry[] in = entryArray();
+                AlphaMemory.Entry[] more = Arrays.copyOf(in, in.length + 1);
+                more[in.length] = e;
+                entries = more;
             }
+        }
+
+        /** The memberships as an array (a new one for a single membership); null for none. */
+        private AlphaMemory.Entry[] entryArray() {
+            return entries instanceof AlphaMemory.Entry e ? new AlphaMemory.Entry[] {e} : (AlphaMemory.Entry[]) entries;
         }
 
         /** Forgets one memory (a rule was removed); the memory itself is dropped by the caller. */
@@ -87,9 +100,9 @@ final class FactView implements Conditions.Reader {
             if (entries == null) {
                 return;
             }
-            AlphaMemory.Entry[] kept = Arrays.stream(entries).filter(e -> e.memory != m)
+            AlphaMemory.Entry[] kept = Arrays.stream(entryArray()).filter(e -> e.memory != m)
                     .toArray(AlphaMemory.Entry[]::new);
-            entries = kept.length == 0 ? null : kept;
+            entries = kept.length == 0 ? null : kept.length == 1 ? kept[0] : kept;
         }
 
         /** Takes the fact out of every memory it is in. */
@@ -97,7 +110,7 @@ final class FactView implements Conditions.Reader {
             if (entries == null) {
                 return;
             }
-            AlphaMemory.Entry[] in = entries;
+            AlphaMemory.Entry[] in = entryArray();
             entries = null;
             for (AlphaMemory.Entry e : in) {
                 e.memory.remove(e);
@@ -132,6 +145,11 @@ final class FactView implements Conditions.Reader {
 
         void fired(BindingKey k) {
             fired = Bag.addIfAbsent(fired, k);
+        }
+
+        /** {@link #fired}, for a binding that has just fired: its key is in no fact's list yet, so no search. */
+        void firedNow(BindingKey k) {
+            fired = Bag.add(fired, k);
         }
 
         boolean hasFired(BindingKey k) {

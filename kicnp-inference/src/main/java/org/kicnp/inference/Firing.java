@@ -84,19 +84,27 @@ final class Firing {
     /** Fires one activation that {@link #mayFire may fire}: creates the instance and runs its onInstantiate script. */
     void fire(Activation a) {
         Rule r = a.rule();
-        Map<String, String> full = r.optional().isEmpty() ? a.binding() : withOptional(r, a.binding());
         FactView.Fact[] refs = a.refs();
+        // A rule with no optional slot (most) binds its required slots only: the derivation takes the activation's
+        // arrays and the values tested, with no binding map or list of conditions made for it.
+        boolean plain = r.optional().isEmpty();
+        Map<String, String> full = plain ? null : withOptional(r, a.binding());
         String trigger = newest(refs, full);
-        List<Derivation.CheckedCondition> checked = CheckedConditions.of(r, full, refs, facts, conditions);
+        Object[] tested = plain ? CheckedConditions.tested(r, refs, facts, conditions) : null;
+        List<Derivation.CheckedCondition> checked = plain ? null : CheckedConditions.of(r, full, refs, facts,
+                conditions);
         long firing = ++firings;
+        supports.markFired(a.key(), refs); // refracted even when the instance cannot be made
         String name;
         while (true) {
             name = made.next(r.frame());
-            Derivation d = new Derivation(name, r.frame(), full, checked, firing, trigger, Optional.empty());
-            supports.markFired(a.key(), refs);
+            Derivation d = plain
+                    ? new Derivation(name, r.frame(), r.requiredSlots(), a.facts(), r.required(), tested, firing,
+                            trigger)
+                    : new Derivation(name, r.frame(), full, checked, firing, trigger, Optional.empty());
             FactView.Fact record = supports.record(d, r, refs, made.number());
             try {
-                if (full.size() == refs.length) {
+                if (d.width() == refs.length) {
                     Frame instance = addInstance(r, name, refs);
                     // Its slots hold the required slots' facts in order: refs (shared: the activation is done with).
                     // Set after the add, yet before the engine handles its event: that waits for the next drain.
@@ -113,12 +121,13 @@ final class Firing {
                 if (kb.contains(name)) {
                     continue; // a frame the engine did not make has this name: take the next one
                 }
-                trace(new TraceEvent.Blocked(r.frame(), full, "the instance could not be created: " + e.getMessage()));
+                trace(new TraceEvent.Blocked(r.frame(), plain ? a.binding() : full,
+                        "the instance could not be created: " + e.getMessage()));
                 return;
             }
         }
         if (tracing.getAsBoolean()) {
-            trace(new TraceEvent.Fired(r.frame(), name, full, firings));
+            trace(new TraceEvent.Fired(r.frame(), name, plain ? a.binding() : full, firings));
         }
         Optional<String> script = r.onInstantiate();
         if (script.isPresent()) {
@@ -180,7 +189,7 @@ final class Firing {
     }
 
     /** The most recently asserted instance of a binding: the required slots' records, then any optional ones. */
-    private String newest(FactView.Fact[] refs, Map<String, String> full) {
+    private String newest(FactView.Fact[] refs, Map<String, String> full) { // full: null for required slots only
         String trigger = null;
         long newest = -1;
         for (FactView.Fact f : refs) {
@@ -189,7 +198,7 @@ final class Firing {
                 trigger = f.name;
             }
         }
-        if (full.size() > refs.length) {
+        if (full != null && full.size() > refs.length) {
             for (String f : full.values()) {
                 long st = facts.stamp(f);
                 if (st > newest) {

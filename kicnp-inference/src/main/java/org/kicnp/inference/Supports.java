@@ -72,9 +72,8 @@ final class Supports {
     FactView.Fact record(Derivation d, Rule rule, FactView.Fact[] known, int number) {
         FactView.Fact self = facts.touch(d.instance(), number);
         self.derivation = d;
-        Binding b = (Binding) d.binding(); // always one (Derivation makes it); d.supports() without its list
-        for (int i = 0, n = b.width(); i < n; i++) {
-            String support = b.factAt(i);
+        for (int i = 0, n = d.width(); i < n; i++) { // d.supports() without its list
+            String support = d.factAt(i);
             // A firing's known records are its required slots' facts, in the binding's order: usually no search.
             FactView.Fact r = i < known.length && known[i].name == support ? known[i] : recordOf(support, known);
             if (rule != null) {
@@ -267,9 +266,13 @@ final class Supports {
         return claims.containsKey(claimKey(frame, slot, fact));
     }
 
+    /**
+     * Refracts a binding that is firing now, once per firing: it was not refracted (else it would not fire), so its
+     * key is in none of its facts' lists yet (a binding holds each fact once), and is added without a search.
+     */
     void markFired(BindingKey key, FactView.Fact[] bound) {
         for (FactView.Fact f : bound) {
-            f.fired(key);
+            f.firedNow(key);
         }
     }
 

@@ -15,7 +15,8 @@ import org.kicnp.core.Value;
 
 /**
  * {@link FactView#follow} steps from fact to fact through the references it resolved once; it must read exactly what
- * {@link Conditions#follow(Value, List)} reads by name, whatever happened to the facts since.
+ * {@link Conditions#follow(Value, List)} reads by name, whatever happened to the facts since. And a fact's memberships
+ * of alpha memories, one held as itself and more as an array, are found, left and taken out alike.
  */
 class FactViewTest {
     private final Fixture f = new Fixture();
@@ -98,5 +99,42 @@ class FactViewTest {
         List<String> exact = new ArrayList<>(Collections.nCopies(Conditions.MAX_PATH, "mH"));
         assertThat(facts.follow(facts.get("loop"), exact, conditions))
                 .isEqualTo(conditions.follow(Value.ref("loop"), exact)).contains(Value.ref("loop"));
+    }
+
+    @Test
+    void memberships_oneHeldAsItself_moreAsAnArray_areFoundLeftAndTakenOutOfTheirMemories() {
+        List<SlotPattern> patterns = new ArrayList<>();
+        for (String slot : List.of("mA", "mB", "mC")) {
+            patterns.add(new SlotPattern(patterns.size(), slot, "Target", org.kicnp.core.Condition.ANY, "COND_ANY",
+                    true, true, false, false, java.util.Set.of(), Optional.empty()));
+        }
+        Rule r = Rule.of("R", 0, 1, 0, patterns, List.of(), Optional.empty());
+        List<AlphaMemory> memories = patterns.stream().map(p -> new AlphaMemory(r, p)).toList();
+        FactView.Fact t = facts.touch("t1");
+        List<AlphaMemory.Entry> entries = new ArrayList<>();
+        for (AlphaMemory m : memories) {
+            assertThat(t.entryIn(m)).isNull();
+            AlphaMemory.Entry e = m.add(t, (fact, path) -> null);
+            t.enter(e);
+            entries.add(e);
+            for (int i = 0; i < entries.size(); i++) {
+                assertThat(t.entryIn(memories.get(i))).isSameAs(entries.get(i));
+            }
+        }
+
+        t.leave(memories.get(0)); // three to two, then to one: each left memory is no longer found, the others are
+        assertThat(t.entryIn(memories.get(0))).isNull();
+        assertThat(t.entryIn(memories.get(1))).isSameAs(entries.get(1));
+        t.leave(memories.get(1));
+        assertThat(t.entryIn(memories.get(1))).isNull();
+        assertThat(t.entryIn(memories.get(2))).isSameAs(entries.get(2));
+        t.enter(entries.get(1)); // one to two again
+        assertThat(t.entryIn(memories.get(1))).isSameAs(entries.get(1));
+
+        t.leaveAll(); // takes it out of the memories it is in; the one it left stays as its caller leaves it
+        assertThat(memories).extracting(AlphaMemory::size).containsExactly(1, 0, 0);
+        assertThat(memories).allSatisfy(m -> assertThat(t.entryIn(m)).isNull());
+        t.enter(entries.get(0)); // and from none to one
+        assertThat(t.entryIn(memories.get(0))).isSameAs(entries.get(0));
     }
 }

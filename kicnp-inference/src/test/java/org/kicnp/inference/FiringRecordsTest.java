@@ -3,7 +3,10 @@ package org.kicnp.inference;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
@@ -70,6 +73,39 @@ class FiringRecordsTest {
         assertThat(f.instancesOf("Deliver")).containsExactly(made);
         assertThat(e.derivation(made).orElseThrow().conditions()).extracting(Derivation.CheckedCondition::value)
                 .containsExactly("u1", "2");
+    }
+
+    @Test
+    void derivation_ofAFiring_isAValueEqualToOneMadeFromItsParts_inSlotOrder_andReadOnly() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Order", null);
+        f.kb.add(Frame.classFrame("Deliver").slot(Fixture.inst("mUser", "User"))
+                .slot(Fixture.inst("mOrder", "Order", ".cups > 1")).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("o1", "Order", "cups", 2);
+        f.assertFact("u1", "User");
+        e.runToQuiescence();
+        String made = f.instancesOf("Deliver").getFirst();
+
+        Derivation d = e.derivation(made).orElseThrow();
+        Derivation fromParts = new Derivation(made, "Deliver", new LinkedHashMap<>(d.binding()),
+                new ArrayList<>(d.conditions()), d.firing(), "u1", Optional.empty());
+
+        assertThat(d.binding()).containsExactly(Map.entry("mUser", "u1"), Map.entry("mOrder", "o1"));
+        assertThat(d.conditions()).containsExactly(new Derivation.CheckedCondition("mUser", "COND_ANY", "u1"),
+                new Derivation.CheckedCondition("mOrder", ".cups > 1", "2"));
+        assertThat(d.trigger()).isEqualTo("u1");
+        assertThat(fromParts).isEqualTo(d).hasSameHashCodeAs(d).hasToString(d.toString());
+        assertThat(d.toString()).isEqualTo("Derivation[instance=" + made + ", frame=Deliver, binding={mUser=u1, "
+                + "mOrder=o1}, conditions=" + d.conditions() + ", firing=" + d.firing()
+                + ", trigger=u1, createdBy=Optional.empty]");
+        assertThat(new Derivation(made, "Deliver", d.binding(), d.conditions(), d.firing() + 1, "u1",
+                Optional.empty())).isNotEqualTo(d);
+        assertThat(new Derivation(made, "Deliver", Map.of("mUser", "u1"), d.conditions(), d.firing(), "u1",
+                Optional.empty())).isNotEqualTo(d);
+        assertThatThrownBy(() -> d.binding().put("mUser", "u2")).isInstanceOf(UnsupportedOperationException.class);
+        assertThatThrownBy(() -> d.conditions().set(0, null)).isInstanceOf(UnsupportedOperationException.class);
+        assertThat(e.derivation(made).orElseThrow().binding()).containsEntry("mUser", "u1");
     }
 
     @Test

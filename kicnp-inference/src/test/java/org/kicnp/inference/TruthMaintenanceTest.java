@@ -143,6 +143,29 @@ class TruthMaintenanceTest {
     }
 
     @Test
+    void conditionChange_afterTheFiringTookTheNextFreeName_retractsAndRefiresEachTimeItHoldsAgain() {
+        Fixture f = new Fixture();
+        f.cls("Order", null).cls("Note", null);
+        f.kb.add(Frame.classFrame("ServeTea").slot(Fixture.inst("mOrder", "Order", ".drink == \"tea\"")).build());
+        f.assertFact("ServeTea-1", "Note"); // the engine's first name for a ServeTea is taken: it takes the next one
+        InferenceEngine e = f.engine();
+        f.assertFact("o1", "Order", "drink", "tea");
+        e.runToQuiescence();
+        assertThat(f.instancesOf("ServeTea")).containsExactly("ServeTea-2");
+
+        // Each retraction lets the binding fire again (it is refracted once per firing, the retried name included).
+        for (int round = 0; round < 2; round++) {
+            f.kb.replace(f.kb.require("o1").withSlot(Fixture.str("drink", "coffee")));
+            e.runToQuiescence();
+            assertThat(f.instancesOf("ServeTea")).as("round %d, coffee", round).isEmpty();
+            f.kb.replace(f.kb.require("o1").withSlot(Fixture.str("drink", "tea")));
+            e.runToQuiescence();
+            assertThat(f.instancesOf("ServeTea")).as("round %d, tea", round).hasSize(1);
+        }
+        assertThat(f.traced(TraceEvent.Fired.class)).hasSize(3);
+    }
+
+    @Test
     void joinChange_whenPartnerValueChanges_retractsTheJoinedInstance() {
         Fixture f = new Fixture();
         f.cls("User", null).cls("Order", null);
