@@ -69,10 +69,14 @@ final class RunLoop {
         running = true;
         try {
             int count = 0;
+            // Firings since the run last took in a change from outside it: what the limit counts. A runaway knowledge
+            // base feeds itself; a stream of stimuli that each cause a few firings (a self-running engine whose next
+            // stimulus lands while it fires, run after run) is not one, however long the run lasts.
+            int inARow = 0;
             while (true) {
-                drain();
+                inARow = drain() ? 0 : inARow;
                 actions.checkTimeouts();
-                drain();
+                inARow = drain() ? 0 : inARow;
                 Activation next = forward.next();
                 if (next == null) {
                     burst.release();
@@ -87,9 +91,10 @@ final class RunLoop {
                 }
                 recent[count % RECENT] = next.rule();
                 count++;
-                if (count > options.maxFirings()) {
+                inARow++;
+                if (inARow > options.maxFirings()) {
                     forward.clearAgenda();
-                    List<String> top = mostFiring(Math.min(count, RECENT));
+                    List<String> top = mostFiring(count, Math.min(inARow, RECENT));
                     tracer.accept(new TraceEvent.LimitReached(options.maxFirings(), top));
                     throw new InferenceLimitException(options.maxFirings(), top);
                 }
@@ -112,13 +117,13 @@ final class RunLoop {
     }
 
     /**
-     * The frames that fired most among the last {@code n} firings, most first (at most three; ties in the order of
-     * each frame's first firing there).
+     * The frames that fired most among the last {@code n} of the run's {@code count} firings, most first (at most
+     * three; ties in the order of each frame's first firing there).
      */
-    private List<String> mostFiring(int n) {
+    private List<String> mostFiring(int count, int n) {
         Map<String, int[]> perFrame = new LinkedHashMap<>();
-        for (int i = 0; i < n; i++) {
-            perFrame.computeIfAbsent(recent[i].frame(), f -> new int[1])[0]++;
+        for (int i = count - n; i < count; i++) {
+            perFrame.computeIfAbsent(recent[i % RECENT].frame(), f -> new int[1])[0]++;
         }
         return perFrame.entrySet().stream()
                 .sorted(Comparator.comparingInt((Map.Entry<String, int[]> e) -> e.getValue()[0]).reversed())
@@ -139,9 +144,12 @@ final class RunLoop {
         submit(() -> forward.process(cs));
     }
 
-    /** Queues work for the engine thread and, on an engine that runs by itself, schedules a run. */
+    /**
+     * Queues work for the engine thread and, on an engine that runs by itself, schedules a run. Work from outside a
+     * run (another thread, or the engine thread between runs) is marked so, for the firing limit ({@link #run}).
+     */
     void submit(Runnable work) {
-        inbox.add(work);
+        inbox.add(lock.isHeldByCurrentThread() && running ? work : new FromOutside(work));
         runner.ifPresent(ex -> {
             if (scheduled.compareAndSet(false, true)) {
                 ex.execute(() -> {
@@ -156,8 +164,12 @@ final class RunLoop {
         });
     }
 
-    /** Runs what waits, the run's own commit first; called under the lock, before anything reads the engine. */
-    void drain() {
+    /**
+     * Runs what waits, the run's own commit first; called under the lock, before anything reads the engine. Returns
+     * whether any of it came from outside the run.
+     */
+    boolean drain() {
+        boolean fromOutside = false;
         while (true) {
             if (own != null) { // nothing is queued before it (see changed)
                 ChangeSet cs = own;
@@ -167,9 +179,17 @@ final class RunLoop {
             }
             Runnable r = inbox.poll();
             if (r == null) {
-                return;
+                return fromOutside;
             }
+            fromOutside |= r instanceof FromOutside;
             r.run();
+        }
+    }
+
+    /** Work queued from outside a run ({@link #submit}). */
+    private record FromOutside(Runnable work) implements Runnable {
+        @Override public void run() {
+            work.run();
         }
     }
 }

@@ -4,6 +4,10 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.util.List;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Test;
 import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
@@ -245,6 +249,69 @@ class ForwardChainingTest {
         assertThatThrownBy(e::runToQuiescence).isInstanceOf(InferenceLimitException.class)
                 .satisfies(x -> assertThat(((InferenceLimitException) x).topFrames()).containsExactly("Echo", "Greet"));
         assertThat(f.instancesOf("Greet")).hasSize(5_000);
+    }
+
+    /** Runs {@code change} on another thread, as a sensor's agent would, and waits until it is committed. */
+    private static void fromAnotherThread(ExecutorService outside, Runnable change) {
+        try {
+            outside.submit(change).get(10, TimeUnit.SECONDS);
+        } catch (Exception x) {
+            throw new AssertionError("the change from outside did not complete: " + x, x);
+        }
+    }
+
+    @Test
+    void cycleLimit_countsFiringsInARow_aStreamOfStimuliFromOutsideTheRunIsNoRunaway() throws Exception {
+        Fixture f = new Fixture();
+        f.cls("Ping", null);
+        f.kb.add(Frame.classFrame("Respond").slot(Fixture.inst("mPing", "Ping"))
+                .slot(Slot.ofValue("onInstantiate", DataType.STRING, Value.of("next-ping"))).build());
+        ExecutorService outside = Executors.newSingleThreadExecutor();
+        AtomicInteger sent = new AtomicInteger(1);
+        // Each response brings the next stimulus from another thread while the run still fires: it is queued before
+        // the run next looks at its agenda, so the agenda never empties until the 60th, three times the limit.
+        f.scripts.define("next-ping", g -> {
+            int i = sent.getAndIncrement();
+            if (i < 60) {
+                fromAnotherThread(outside, () -> f.assertFact("p" + i, "Ping"));
+            }
+            return null;
+        });
+        InferenceEngine e = f.engine(EngineOptions.defaults().withMaxFirings(20));
+        f.assertFact("p0", "Ping");
+        try {
+            assertThat(e.runToQuiescence()).as("one run, all sixty").isEqualTo(60);
+        } finally {
+            outside.shutdownNow();
+        }
+        assertThat(f.instancesOf("Respond")).hasSize(60);
+        assertThat(f.traced(TraceEvent.LimitReached.class)).isEmpty();
+    }
+
+    @Test
+    void cycleLimit_stopsARunawayAfterMaxFiringsInARow_countingAgainFromTheLastChangeFromOutside() throws Exception {
+        Fixture f = new Fixture();
+        f.cls("Thing", null).cls("Note", null);
+        f.kb.add(Frame.classFrame("Echo").parent("Thing").slot(Fixture.inst("mIn", "Thing"))
+                .slot(Slot.ofValue("onInstantiate", DataType.STRING, Value.of("note-at-30"))).build());
+        ExecutorService outside = Executors.newSingleThreadExecutor();
+        AtomicInteger echoes = new AtomicInteger();
+        f.scripts.define("note-at-30", g -> {
+            if (echoes.incrementAndGet() == 30) {
+                fromAnotherThread(outside, () -> f.assertFact("n1", "Note"));
+            }
+            return null;
+        });
+        InferenceEngine e = f.engine(EngineOptions.defaults().withMaxFirings(50));
+        f.assertFact("t0", "Thing");
+        try {
+            assertThatThrownBy(e::runToQuiescence).isInstanceOf(InferenceLimitException.class)
+                    .satisfies(x -> assertThat(((InferenceLimitException) x).topFrames()).containsExactly("Echo"));
+        } finally {
+            outside.shutdownNow();
+        }
+        // 30 firings, the note from outside, then 50 more in a row: the 81st is the one refused
+        assertThat(f.instancesOf("Echo")).hasSize(80);
     }
 
     @Test
