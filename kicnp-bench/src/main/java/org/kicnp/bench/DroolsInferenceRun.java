@@ -1,5 +1,6 @@
 package org.kicnp.bench;
 
+import java.lang.ref.Reference;
 import java.util.ArrayList;
 import java.util.List;
 import org.drools.model.codegen.ExecutableModelProject;
@@ -47,17 +48,7 @@ final class DroolsInferenceRun {
     }
 
     EngineResult run(InferenceWorkload w) {
-        List<Object> facts = new ArrayList<>(w.n());
-        try {
-            for (int i = 0; i < w.n(); i++) {
-                FactType t = stimulusTypes[i % InferenceWorkload.GROUP];
-                Object fact = t.newInstance();
-                t.set(fact, "key", InferenceWorkload.key(i));
-                facts.add(fact);
-            }
-        } catch (ReflectiveOperationException e) {
-            throw new IllegalStateException("Could not create a Drools stimulus fact: " + e.getMessage(), e);
-        }
+        List<Object> facts = stimuli(w);
         KieSession session = kieBase.newKieSession();
         try {
             long cpu = EngineResult.threadCpuNanos();
@@ -71,5 +62,43 @@ final class DroolsInferenceRun {
         } finally {
             session.dispose();
         }
+    }
+
+    /**
+     * The heap one run of {@code w} keeps reachable before its session is disposed, read with {@link HeapMeter} before
+     * the session is made (the stimulus facts made already) and after {@code fireAllRules()}: the session's network
+     * memories, agenda records and derived facts ({@link KicnpInferenceRun#retained} counts the same for K-ICNP).
+     */
+    long retained(InferenceWorkload w) {
+        List<Object> facts = stimuli(w);
+        long before = HeapMeter.usedAfterGc();
+        KieSession session = kieBase.newKieSession();
+        try {
+            for (Object fact : facts) {
+                session.insert(fact);
+            }
+            session.fireAllRules();
+            long after = HeapMeter.usedAfterGc();
+            Reference.reachabilityFence(facts);
+            return after - before;
+        } finally {
+            session.dispose();
+        }
+    }
+
+    /** The N stimulus facts, made through the declared types. */
+    private List<Object> stimuli(InferenceWorkload w) {
+        List<Object> facts = new ArrayList<>(w.n());
+        try {
+            for (int i = 0; i < w.n(); i++) {
+                FactType t = stimulusTypes[i % InferenceWorkload.GROUP];
+                Object fact = t.newInstance();
+                t.set(fact, "key", InferenceWorkload.key(i));
+                facts.add(fact);
+            }
+        } catch (ReflectiveOperationException e) {
+            throw new IllegalStateException("Could not create a Drools stimulus fact: " + e.getMessage(), e);
+        }
+        return facts;
     }
 }

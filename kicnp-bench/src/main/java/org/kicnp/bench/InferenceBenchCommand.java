@@ -123,8 +123,13 @@ final class InferenceBenchCommand implements Callable<Integer> {
                 kicnpCpu.add(k.cpuSeconds());
                 peerCpu.add(d.cpuSeconds());
             }
+            // What each engine keeps for the run, once, after the timed runs (a working set that no longer fits the
+            // caches costs an engine more when another tenant shares them: docs/benchmarks.md, session 21).
+            long kicnpRetained = KicnpInferenceRun.retained(w);
+            long droolsRetained = drools.retained(w);
             InferenceRun result = new InferenceRun(n, firings, kicnp.median(), peer.median(), kicnpCpu.median(),
-                    peerCpu.median(), logical.median(), store.median(), paired.median(), paired.min(), paired.max());
+                    peerCpu.median(), logical.median(), store.median(), paired.median(), paired.min(), paired.max(),
+                    kicnpRetained, droolsRetained);
             results.add(result);
             if (printRuns) {
                 for (int r = 0; r < runs; r++) {
@@ -136,6 +141,10 @@ final class InferenceBenchCommand implements Callable<Integer> {
             out.println(String.format(Locale.ROOT, "  N=%,d: %,d firings in both engines; K-ICNP %.3f s (CPU %.3f s), Drools %.3f s (CPU %.3f s), Drools insertLogical %.3f s, K-ICNP knowledge base only %.3f s",
                     n, firings, result.kicnpSeconds(), result.kicnpCpuSeconds(), result.droolsSeconds(),
                     result.droolsCpuSeconds(), result.droolsLogicalSeconds(), result.storeSeconds()));
+            out.println(String.format(Locale.ROOT, "  N=%,d: heap kept by one run (the stimuli not counted): K-ICNP %.1f MB "
+                    + "(%,.0f bytes per stimulus or firing), Drools %.1f MB (%,.0f bytes)", n, result.kicnpRetainedMb(),
+                    result.kicnpRetainedBytes() / (double) (n + firings), result.droolsRetainedMb(),
+                    result.droolsRetainedBytes() / (double) (n + firings)));
             out.flush();
         }
         ActionLatencyProbe.Figures figures = ActionLatencyProbe.measure(latencyWarmUp, latencySamples);
@@ -205,21 +214,31 @@ final class InferenceBenchCommand implements Callable<Integer> {
             sb.append(i == 0 ? "" : ", ").append(String.format(Locale.ROOT,
                     "{\"n\": %d, \"firings\": %d, \"kicnp_s\": %.6f, \"drools_s\": %.6f, \"ratio\": %.4f, "
                             + "\"drools_logical_s\": %.6f, \"ratio_logical\": %.4f, \"kicnp_kb_only_s\": %.6f, "
-                            + "\"ratio_paired_median\": %.4f, \"ratio_paired_min\": %.4f, \"ratio_paired_max\": %.4f}",
+                            + "\"ratio_paired_median\": %.4f, \"ratio_paired_min\": %.4f, \"ratio_paired_max\": %.4f, "
+                            + "\"kicnp_retained_mb\": %.2f, \"drools_retained_mb\": %.2f}",
                     r.n(), r.firings(), r.kicnpSeconds(), r.droolsSeconds(), r.ratio(), r.droolsLogicalSeconds(),
-                    r.logicalRatio(), r.storeSeconds(), r.pairedRatio(), r.pairedMin(), r.pairedMax()));
+                    r.logicalRatio(), r.storeSeconds(), r.pairedRatio(), r.pairedMin(), r.pairedMax(),
+                    r.kicnpRetainedMb(), r.droolsRetainedMb()));
         }
         return sb.append(String.format(Locale.ROOT, "], \"script_us_median\": %.2f, \"stimulus_to_action_us_p99\": %.2f}",
                 f.scriptMedianMicros(), f.latencyP99Micros())).toString();
     }
 
     /**
-     * One size's figures: medians of the timed runs, and the median, least and greatest of the paired ratios (each
-     * K-ICNP run over the Drools run that follows it).
+     * One size's figures: medians of the timed runs, the median, least and greatest of the paired ratios (each
+     * K-ICNP run over the Drools run that follows it), and the heap one run of each engine keeps (bytes).
      */
     record InferenceRun(int n, long firings, double kicnpSeconds, double droolsSeconds, double kicnpCpuSeconds,
             double droolsCpuSeconds, double droolsLogicalSeconds, double storeSeconds, double pairedRatio,
-            double pairedMin, double pairedMax) {
+            double pairedMin, double pairedMax, long kicnpRetainedBytes, long droolsRetainedBytes) {
+        double kicnpRetainedMb() {
+            return kicnpRetainedBytes / 1e6;
+        }
+
+        double droolsRetainedMb() {
+            return droolsRetainedBytes / 1e6;
+        }
+
         /** The goal: no slower than Drools, by the ratio of the medians and by the median of the paired ratios. */
         boolean met() {
             return ratio() <= 1 && pairedRatio <= 1;

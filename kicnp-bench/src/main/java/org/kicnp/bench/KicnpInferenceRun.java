@@ -1,5 +1,6 @@
 package org.kicnp.bench;
 
+import java.lang.ref.Reference;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -29,10 +30,8 @@ final class KicnpInferenceRun {
 
     private static EngineResult run(InferenceWorkload w, KnowledgeBase kb, List<Change> stimuli) {
         kb.apply(w.kicnpClasses());
-        long expected = w.expectedFirings();
-        int limit = (int) Math.min(Integer.MAX_VALUE - 1, Math.max(10_000, expected * 2));
         try (InferenceEngine engine = InferenceEngine.builder(kb)
-                .options(EngineOptions.defaults().withMaxFirings(limit)).build()) {
+                .options(EngineOptions.defaults().withMaxFirings(firingLimit(w))).build()) {
             long cpu = EngineResult.threadCpuNanos();
             long start = System.nanoTime();
             kb.apply(stimuli);
@@ -40,6 +39,34 @@ final class KicnpInferenceRun {
             long nanos = System.nanoTime() - start;
             return new EngineResult(fired, nanos, EngineResult.threadCpuNanos() - cpu);
         }
+    }
+
+    /**
+     * The heap one run of {@code w} keeps reachable when it is over: a fresh knowledge base with the classes and a fresh
+     * engine, the stimuli asserted and the engine run to quiescence, read with {@link HeapMeter} before and after. The
+     * stimuli's frames are made before the first reading, as Drools' facts are ({@link DroolsInferenceRun#retained}),
+     * so what is counted is each engine's own: K-ICNP's knowledge base (frames derived, indexes, nodes) and engine
+     * (fact records, memories, truth-maintenance records, explanations).
+     */
+    static long retained(InferenceWorkload w) {
+        List<Change> stimuli = w.kicnpStimuli();
+        long before = HeapMeter.usedAfterGc();
+        KnowledgeBase kb = KnowledgeBase.create();
+        kb.apply(w.kicnpClasses());
+        try (InferenceEngine engine = InferenceEngine.builder(kb)
+                .options(EngineOptions.defaults().withMaxFirings(firingLimit(w))).build()) {
+            kb.apply(stimuli);
+            engine.runToQuiescence();
+            long after = HeapMeter.usedAfterGc();
+            Reference.reachabilityFence(engine);
+            Reference.reachabilityFence(kb);
+            Reference.reachabilityFence(stimuli);
+            return after - before;
+        }
+    }
+
+    private static int firingLimit(InferenceWorkload w) {
+        return (int) Math.min(Integer.MAX_VALUE - 1, Math.max(10_000, w.expectedFirings() * 2));
     }
 
     /**

@@ -101,7 +101,7 @@ class InferenceBenchCommandTest {
         JsonNode run = json.get("runs").get(0);
         assertThat(run.fieldNames()).toIterable().containsExactly("n", "firings", "kicnp_s", "drools_s", "ratio",
                 "drools_logical_s", "ratio_logical", "kicnp_kb_only_s", "ratio_paired_median", "ratio_paired_min",
-                "ratio_paired_max");
+                "ratio_paired_max", "kicnp_retained_mb", "drools_retained_mb");
         assertThat(run.get("n").asInt()).isEqualTo(200);
         assertThat(run.get("firings").asLong()).isEqualTo(new InferenceWorkload(200).expectedFirings()).isEqualTo(400);
         assertThat(run.get("kicnp_s").asDouble()).isPositive();
@@ -118,6 +118,12 @@ class InferenceBenchCommandTest {
         assertThat(run.get("ratio_paired_min").asDouble()).isEqualTo(run.get("ratio_paired_median").asDouble());
         assertThat(run.get("ratio_paired_max").asDouble()).isEqualTo(run.get("ratio_paired_median").asDouble());
         assertThat(out.toString()).contains("KB only s").contains("KB/Drools").contains("paired (min-max)");
+        // 200 stimuli and 400 firings keep a few hundred kilobytes in either engine, within the heap reading's
+        // settling margin (a quarter of a megabyte), so only the scale is checked here
+        assertThat(run.get("kicnp_retained_mb").isNumber()).isTrue();
+        assertThat(run.get("kicnp_retained_mb").asDouble()).isBetween(-1.0, 10.0);
+        assertThat(run.get("drools_retained_mb").asDouble()).isBetween(-1.0, 10.0);
+        assertThat(out.toString()).contains("heap kept by one run");
         assertThat(json.get("script_us_median").asDouble()).isPositive();
         assertThat(json.get("stimulus_to_action_us_p99").asDouble()).isPositive();
         assertThat(out.toString()).doesNotContain(" run 1: ");
@@ -170,7 +176,8 @@ class InferenceBenchCommandTest {
     }
 
     private static InferenceBenchCommand.InferenceRun run(int n, double kicnp, double drools, double paired) {
-        return new InferenceBenchCommand.InferenceRun(n, 8, kicnp, drools, kicnp, drools, drools, 0.1, paired, 0.9, 1.3);
+        return new InferenceBenchCommand.InferenceRun(n, 8, kicnp, drools, kicnp, drools, drools, 0.1, paired, 0.9, 1.3,
+                1_000_000, 1_000_000);
     }
 
     /** The goal column of the table's one row. */
