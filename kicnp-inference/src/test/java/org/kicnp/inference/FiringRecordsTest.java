@@ -33,6 +33,22 @@ class FiringRecordsTest {
         return Rule.of(frame, 0, 1, 0, required, List.of(), Optional.empty());
     }
 
+    /** A behavior frame {@code Deliver} (a user; an order of more than one cup) fired once: for u1 and o1 (2 cups). */
+    private record Delivered(Fixture f, InferenceEngine e, String made) {
+        static Delivered fire() {
+            Fixture f = new Fixture();
+            f.cls("User", null).cls("Order", null);
+            f.kb.add(Frame.classFrame("Deliver").slot(Fixture.inst("mUser", "User"))
+                    .slot(Fixture.inst("mOrder", "Order", ".cups > 1")).build());
+            InferenceEngine e = f.engine();
+            f.assertFact("o1", "Order", "cups", 2);
+            f.assertFact("u1", "User");
+            e.runToQuiescence();
+            String made = f.instancesOf("Deliver").getFirst();
+            return new Delivered(f, e, made);
+        }
+    }
+
     @Test
     void checkedConditions_withAnOptionalSlotLeftEmptyBeforeABoundOne_nameEachBoundSlotWithItsConditionAndValue() {
         Fixture f = new Fixture();
@@ -57,15 +73,10 @@ class FiringRecordsTest {
 
     @Test
     void checkedConditions_afterTheTestedValueChanges_stillGiveTheValueTestedWhenTheFrameFired() {
-        Fixture f = new Fixture();
-        f.cls("User", null).cls("Order", null);
-        f.kb.add(Frame.classFrame("Deliver").slot(Fixture.inst("mUser", "User"))
-                .slot(Fixture.inst("mOrder", "Order", ".cups > 1")).build());
-        InferenceEngine e = f.engine();
-        f.assertFact("o1", "Order", "cups", 2);
-        f.assertFact("u1", "User");
-        e.runToQuiescence();
-        String made = f.instancesOf("Deliver").getFirst();
+        Delivered run = Delivered.fire();
+        Fixture f = run.f();
+        InferenceEngine e = run.e();
+        String made = run.made();
 
         f.kb.replace(f.kb.require("o1").withSlot(Fixture.num("cups", 3))); // still more than one: the instance stays
         e.runToQuiescence();
@@ -77,15 +88,9 @@ class FiringRecordsTest {
 
     @Test
     void derivation_ofAFiring_isAValueEqualToOneMadeFromItsParts_inSlotOrder_andReadOnly() {
-        Fixture f = new Fixture();
-        f.cls("User", null).cls("Order", null);
-        f.kb.add(Frame.classFrame("Deliver").slot(Fixture.inst("mUser", "User"))
-                .slot(Fixture.inst("mOrder", "Order", ".cups > 1")).build());
-        InferenceEngine e = f.engine();
-        f.assertFact("o1", "Order", "cups", 2);
-        f.assertFact("u1", "User");
-        e.runToQuiescence();
-        String made = f.instancesOf("Deliver").getFirst();
+        Delivered run = Delivered.fire();
+        InferenceEngine e = run.e();
+        String made = run.made();
 
         Derivation d = e.derivation(made).orElseThrow();
         Derivation fromParts = new Derivation(made, "Deliver", new LinkedHashMap<>(d.binding()),
