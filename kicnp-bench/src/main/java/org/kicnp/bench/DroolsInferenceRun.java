@@ -53,10 +53,7 @@ final class DroolsInferenceRun {
         try {
             long cpu = EngineResult.threadCpuNanos();
             long start = System.nanoTime();
-            for (Object fact : facts) {
-                session.insert(fact);
-            }
-            long fired = session.fireAllRules();
+            long fired = insertAndFire(session, facts);
             long nanos = System.nanoTime() - start;
             return new EngineResult(fired, nanos, EngineResult.threadCpuNanos() - cpu);
         } finally {
@@ -74,16 +71,21 @@ final class DroolsInferenceRun {
         long before = HeapMeter.usedAfterGc();
         KieSession session = kieBase.newKieSession();
         try {
-            for (Object fact : facts) {
-                session.insert(fact);
-            }
-            session.fireAllRules();
+            insertAndFire(session, facts);
             long after = HeapMeter.usedAfterGc();
             Reference.reachabilityFence(facts);
             return after - before;
         } finally {
             session.dispose();
         }
+    }
+
+    /** Inserts the facts and fires to quiescence; returns the firings. */
+    private static long insertAndFire(KieSession session, List<Object> facts) {
+        for (Object fact : facts) {
+            session.insert(fact);
+        }
+        return session.fireAllRules();
     }
 
     /** The N stimulus facts, made through the declared types. */

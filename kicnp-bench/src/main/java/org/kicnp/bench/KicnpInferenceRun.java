@@ -30,8 +30,7 @@ final class KicnpInferenceRun {
 
     private static EngineResult run(InferenceWorkload w, KnowledgeBase kb, List<Change> stimuli) {
         kb.apply(w.kicnpClasses());
-        try (InferenceEngine engine = InferenceEngine.builder(kb)
-                .options(EngineOptions.defaults().withMaxFirings(firingLimit(w))).build()) {
+        try (InferenceEngine engine = engine(kb, w)) {
             long cpu = EngineResult.threadCpuNanos();
             long start = System.nanoTime();
             kb.apply(stimuli);
@@ -53,8 +52,7 @@ final class KicnpInferenceRun {
         long before = HeapMeter.usedAfterGc();
         KnowledgeBase kb = KnowledgeBase.create();
         kb.apply(w.kicnpClasses());
-        try (InferenceEngine engine = InferenceEngine.builder(kb)
-                .options(EngineOptions.defaults().withMaxFirings(firingLimit(w))).build()) {
+        try (InferenceEngine engine = engine(kb, w)) {
             kb.apply(stimuli);
             engine.runToQuiescence();
             long after = HeapMeter.usedAfterGc();
@@ -65,8 +63,10 @@ final class KicnpInferenceRun {
         }
     }
 
-    private static int firingLimit(InferenceWorkload w) {
-        return (int) Math.min(Integer.MAX_VALUE - 1, Math.max(10_000, w.expectedFirings() * 2));
+    /** A fresh engine on {@code kb} whose firing limit leaves the workload's firings room (twice as many). */
+    private static InferenceEngine engine(KnowledgeBase kb, InferenceWorkload w) {
+        int limit = (int) Math.min(Integer.MAX_VALUE - 1, Math.max(10_000, w.expectedFirings() * 2));
+        return InferenceEngine.builder(kb).options(EngineOptions.defaults().withMaxFirings(limit)).build();
     }
 
     /**
