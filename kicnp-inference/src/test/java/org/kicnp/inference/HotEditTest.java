@@ -58,16 +58,26 @@ class HotEditTest {
         assertThat(f.instancesOf("Serve")).as("the cup fills the unshared slot of one live Serve only").hasSize(1);
     }
 
+    /** {@code Serve(mUser: User, mCup: Cup)}, its cup slot shared or not, with one cup and users u1 and u2, run. */
+    private record Served(Fixture f, InferenceEngine e) {
+        static Served twoUsersOneCup(boolean shared) {
+            Fixture f = new Fixture();
+            f.cls("User", null).cls("Cup", null);
+            f.kb.add(Frame.classFrame("Serve").slot(Fixture.inst("mUser", "User")).slot(cupSlot(shared)).build());
+            InferenceEngine e = f.engine();
+            f.assertFact("cup", "Cup");
+            f.assertFact("u1", "User");
+            f.assertFact("u2", "User");
+            e.runToQuiescence();
+            return new Served(f, e);
+        }
+    }
+
     @Test
     void hotEdit_whenASlotBecomesUnshared_aLaterInstanceHoldingTheSameInstanceIsRetracted() {
-        Fixture f = new Fixture();
-        f.cls("User", null).cls("Cup", null);
-        f.kb.add(Frame.classFrame("Serve").slot(Fixture.inst("mUser", "User")).slot(cupSlot(true)).build());
-        InferenceEngine e = f.engine();
-        f.assertFact("cup", "Cup");
-        f.assertFact("u1", "User");
-        f.assertFact("u2", "User");
-        e.runToQuiescence();
+        Served run = Served.twoUsersOneCup(true);
+        Fixture f = run.f();
+        InferenceEngine e = run.e();
         List<String> both = f.instancesOf("Serve");
         assertThat(both).hasSize(2);
 
@@ -84,14 +94,9 @@ class HotEditTest {
 
     @Test
     void hotEdit_whenAnUnsharedSlotBecomesShared_theBindingsItBlockedFire() {
-        Fixture f = new Fixture();
-        f.cls("User", null).cls("Cup", null);
-        f.kb.add(Frame.classFrame("Serve").slot(Fixture.inst("mUser", "User")).slot(cupSlot(false)).build());
-        InferenceEngine e = f.engine();
-        f.assertFact("cup", "Cup");
-        f.assertFact("u1", "User");
-        f.assertFact("u2", "User");
-        e.runToQuiescence();
+        Served run = Served.twoUsersOneCup(false);
+        Fixture f = run.f();
+        InferenceEngine e = run.e();
         assertThat(f.instancesOf("Serve")).hasSize(1);
 
         f.kb.replace(f.kb.require("Serve").withSlot(cupSlot(true)));
