@@ -118,7 +118,7 @@ final class Indexer {
             for (int i = 0, count = refs.size(); i < count; i++) {
                 Node target = Node.find(nodes, refs.get(i), near);
                 if (target != null && target != n) {
-                    target.referrers().add(n);
+                    target.addReferrer(n);
                 }
             }
         }
@@ -156,8 +156,8 @@ final class Indexer {
         References.collect(before, refs);
         for (int i = 0, count = refs.size(); i < count; i++) {
             Node target = nodes.get(refs.get(i));
-            if (target != null && target.referrers != null) {
-                target.referrers.remove(n);
+            if (target != null) {
+                target.removeReferrer(n);
             }
         }
     }

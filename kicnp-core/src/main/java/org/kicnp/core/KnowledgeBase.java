@@ -195,12 +195,10 @@ public final class KnowledgeBase {
         return read(() -> {
             Node n = node(name);
             List<SemanticLink> out = new ArrayList<>(own.apply(n.frame));
-            if (n.referrers != null) {
-                for (Node r : n.referrers) {
-                    for (SemanticLink l : mirrored.apply(r.frame)) {
-                        if (l.frame().equals(name)) {
-                            out.add(new SemanticLink(l.relation(), r.name()));
-                        }
+            for (Node r : n.referrers()) {
+                for (SemanticLink l : mirrored.apply(r.frame)) {
+                    if (l.frame().equals(name)) {
+                        out.add(new SemanticLink(l.relation(), r.name()));
                     }
                 }
             }
@@ -215,11 +213,12 @@ public final class KnowledgeBase {
     public List<String> referrers(String name) {
         return read(() -> {
             Node n = nodes.get(name);
-            if (n == null || n.referrers == null) {
+            if (n == null) {
                 return List.<String>of();
             }
-            List<String> out = new ArrayList<>(n.referrers.size());
-            for (Node r : n.referrers) {
+            List<Node> rs = n.referrers();
+            List<String> out = new ArrayList<>(rs.size());
+            for (Node r : rs) {
                 out.add(r.name());
             }
             return out;

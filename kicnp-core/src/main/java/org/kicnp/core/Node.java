@@ -1,5 +1,9 @@
 package org.kicnp.core;
 
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+
 /**
  * The knowledge base's bookkeeping for one frame: the frame itself, its revision, and the derived indexes
  * (children, every instance below a class, the frames that refer to it). Mutated only under the write lock. A
@@ -13,8 +17,14 @@ final class Node {
     NodeSet children;
     /** For a class: every instance of it or of any descendant class, in insertion order. */
     NodeSet instances;
-    /** Frames whose slots, parts or links mention this frame (A-kind-of is tracked by children). */
-    NodeSet referrers;
+    /**
+     * Frames whose slots, parts or links mention this frame (A-kind-of is tracked by children), in the order they came
+     * to, each once: null (none), the one referrer itself, a {@code Node[]} of at most {@value #FEW_REFERRERS} padded
+     * with trailing nulls, or, past that, a {@link NodeSet}. Most referred frames have one to three referrers all their
+     * life (an instance a few derived instances name), and a set of its own (an object and an array, 56 to 64 bytes)
+     * was a tenth of what a derived instance keeps in {@code bench inference}.
+     */
+    private Object referrers;
     /** Its place in the name index's order ({@link NodeIndex}); -1 when not in an index. */
     int order = -1;
     /** The name index that holds this node now, or null before it is put there and once it is removed. */
@@ -42,11 +52,94 @@ final class Node {
         return instances;
     }
 
-    NodeSet referrers() {
-        if (referrers == null) {
-            referrers = new NodeSet(2);
+    /** At most this many referrers are kept in a plain array, searched linearly; one more makes a {@link NodeSet}. */
+    static final int FEW_REFERRERS = 8;
+
+    /** Adds {@code r} to the referrers at the end unless it is one already. */
+    void addReferrer(Node r) {
+        Object rs = referrers;
+        if (rs == null) {
+            referrers = r;
+        } else if (rs instanceof Node one) {
+            if (one != r) {
+                referrers = new Node[] {one, r};
+            }
+        } else if (rs instanceof Node[] few) {
+            int n = 0;
+            while (n < few.length && few[n] != null) {
+                if (few[n] == r) {
+                    return;
+                }
+                n++;
+            }
+            if (n < few.length) {
+                few[n] = r;
+            } else if (n < FEW_REFERRERS) {
+                Node[] grown = Arrays.copyOf(few, Math.min(FEW_REFERRERS, 2 * n));
+                grown[n] = r;
+                referrers = grown;
+            } else {
+                NodeSet set = new NodeSet(2 * n);
+                for (Node x : few) {
+                    set.addNew(x);
+                }
+                set.addNew(r);
+                referrers = set;
+            }
+        } else {
+            ((NodeSet) rs).add(r);
         }
-        return referrers;
+    }
+
+    /** Removes {@code r} from the referrers, keeping the others' order. */
+    void removeReferrer(Node r) {
+        Object rs = referrers;
+        if (rs == r) {
+            referrers = null;
+        } else if (rs instanceof Node[] few) {
+            int n = 0;
+            while (n < few.length && few[n] != null) {
+                n++;
+            }
+            for (int i = 0; i < n; i++) {
+                if (few[i] == r) {
+                    System.arraycopy(few, i + 1, few, i, n - i - 1);
+                    few[n - 1] = null;
+                    referrers = n == 2 ? few[0] : few;
+                    return;
+                }
+            }
+        } else if (rs instanceof NodeSet set) {
+            set.remove(r);
+            if (set.isEmpty()) {
+                referrers = null;
+            }
+        }
+    }
+
+    /** The referrers, in the order they came to refer to this frame (a copy). */
+    List<Node> referrers() {
+        Object rs = referrers;
+        if (rs == null) {
+            return List.of();
+        }
+        if (rs instanceof Node one) {
+            return List.of(one);
+        }
+        List<Node> out = new ArrayList<>();
+        if (rs instanceof Node[] few) {
+            for (Node x : few) {
+                if (x == null) {
+                    break;
+                }
+                out.add(x);
+            }
+        } else {
+            for (Node x : (NodeSet) rs) {
+                out.add(x);
+            }
+        }
+        return out;
     }
 
     boolean hasChildren() {

@@ -296,7 +296,7 @@ final class PlainInstanceAdd {
         if (targets != null) {
             for (int i = 0, k = Math.min(targets.length, f.slots().size()); i < k; i++) {
                 if (targets[i] != null) {
-                    targets[i].referrers().add(n); // a probe: two slots may hold the same instance
+                    targets[i].addReferrer(n); // a probe: two slots may hold the same instance
                 }
             }
         }

@@ -64,7 +64,7 @@ final class PreparedNodes {
                 continue;
             }
             if (target != null) {
-                target.referrers().add(n);
+                target.addReferrer(n);
             } else {
                 target = base.get(refs.get(i));
                 if (target == null) {
@@ -94,7 +94,7 @@ final class PreparedNodes {
             }
         }
         for (int i = 0; i < baseReferences.size(); i += 2) {
-            baseReferences.get(i + 1).referrers().add(baseReferences.get(i));
+            baseReferences.get(i + 1).addReferrer(baseReferences.get(i));
         }
         for (Node n : nodes) {
             n.revision = version;

@@ -86,8 +86,8 @@ final class Validator {
             problems.add(Problem.of(name, "Frame '" + name + "' cannot be removed: it still has "
                     + (instances ? "instances " : "subclasses or instances ") + quoteList(kids) + "."));
         }
-        if (node != null && node.referrers != null) {
-            for (Node r : node.referrers) {
+        if (node != null) {
+            for (Node r : node.referrers()) {
                 if (!staged.containsKey(r.name())) {
                     problems.add(Problem.of(name, "Frame '" + name + "' cannot be removed: frame '" + r.name()
                             + "' refers to it."));
