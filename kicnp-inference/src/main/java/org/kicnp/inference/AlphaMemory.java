@@ -41,14 +41,14 @@ final class AlphaMemory {
 
     /**
      * One fact's membership: where it sits, and the index keys it is filed under (null where a path reached nothing).
-     * The key under the first index is a field: most memories have one index (one equality join reads the slot), and
-     * an array per membership for it was an object per fact and memory.
+     * The keys are one field: the key under the first index itself while no other index has one (most memories have
+     * one index, one equality join reading the slot), else a {@code Value[]} by index number. An array per membership
+     * was an object per fact and memory, and a field for each form 8 bytes more per membership (32 bytes, not 24).
      */
     static final class Entry {
         final AlphaMemory memory;
-        private Value firstKey;
-        /** The keys under the other indexes, by index number less one; null until one is set. */
-        private Value[] otherKeys;
+        /** The first index's key (a {@link Value} or null) or every index's keys (a {@code Value[]}). */
+        private Object keys;
         int at;
 
         private Entry(AlphaMemory memory, int at) {
@@ -58,25 +58,26 @@ final class AlphaMemory {
 
         /** The key it is filed under in index {@code index}; null: none. */
         Value key(int index) {
-            if (index == 0) {
-                return firstKey;
+            Object k = keys;
+            if (k instanceof Value[] all) {
+                return all[index];
             }
-            return otherKeys == null ? null : otherKeys[index - 1];
+            return index == 0 ? (Value) k : null;
         }
 
         /** Sets the key of index {@code index} of the {@code count} the memory has. */
         void key(int index, Value key, int count) {
-            if (index == 0) {
-                firstKey = key;
-                return;
+            Object k = keys;
+            if (k instanceof Value[] all) {
+                all[index] = key;
+            } else if (index == 0) {
+                keys = key;
+            } else if (key != null) {
+                Value[] all = new Value[count];
+                all[0] = (Value) k;
+                all[index] = key;
+                keys = all;
             }
-            if (otherKeys == null) {
-                if (key == null) {
-                    return;
-                }
-                otherKeys = new Value[count - 1];
-            }
-            otherKeys[index - 1] = key;
         }
     }
 

@@ -32,17 +32,68 @@ final class CheckedConditions extends AbstractList<Derivation.CheckedCondition> 
     }
 
     /**
-     * The values a firing of {@code r}, a rule with no optional slots, tests its conditions on: for each of its
-     * patterns (its required slots, in order) the value along the condition's left path from the fact bound there
-     * ({@code refs}, in the same order), or the fact's name. What {@link #of} takes, without the list around it.
+     * What a firing of {@code r}, a rule with no optional slots, keeps of the values it tests its conditions on: for
+     * each of its patterns (its required slots, in order) whose condition reads a path, the value along that path from
+     * the fact bound there ({@code refs}, in the same order), or the fact's name where the path leads nowhere. The
+     * other patterns are tested on the fact's name, which the binding holds already, so nothing is kept for them: the
+     * result is null (no pattern reads a path), the one value itself, or an array of them in pattern order. Every
+     * derived instance keeps this for as long as it lives; {@link #expand} gives back what {@link #of} would list.
      */
-    static Object[] tested(Rule r, FactView.Fact[] refs, FactView facts, Conditions conditions) {
+    static Object kept(Rule r, FactView.Fact[] refs, FactView facts, Conditions conditions) {
         List<SlotPattern> patterns = r.required();
-        Object[] tested = new Object[refs.length];
+        Object one = null;
+        Object[] many = null;
+        int k = 0;
         for (int i = 0; i < refs.length; i++) {
-            tested[i] = testedOn(patterns.get(i), refs[i], refs[i].name, facts, conditions);
+            SlotPattern p = patterns.get(i);
+            if (!readsPath(p)) {
+                continue;
+            }
+            Object v = testedOn(p, refs[i], refs[i].name, facts, conditions);
+            if (k == 0) {
+                one = v;
+            } else {
+                if (many == null) {
+                    many = new Object[pathsRead(patterns, refs.length)];
+                    many[0] = one;
+                }
+                many[k] = v;
+            }
+            k++;
+        }
+        return many != null ? many : one;
+    }
+
+    /**
+     * The value each of the first {@code facts.length} patterns was tested on, from what {@link #kept} kept and the
+     * facts bound to them ({@code facts}, in the same order).
+     */
+    static Object[] expand(List<SlotPattern> patterns, String[] facts, Object kept) {
+        int paths = pathsRead(patterns, facts.length);
+        Object[] tested = new Object[facts.length];
+        for (int i = 0, k = 0; i < facts.length; i++) {
+            if (readsPath(patterns.get(i))) {
+                tested[i] = paths == 1 ? kept : ((Object[]) kept)[k];
+                k++;
+            } else {
+                tested[i] = facts[i];
+            }
         }
         return tested;
+    }
+
+    private static boolean readsPath(SlotPattern p) {
+        return p.condition().testedPath().isPresent();
+    }
+
+    private static int pathsRead(List<SlotPattern> patterns, int n) {
+        int count = 0;
+        for (int i = 0; i < n; i++) {
+            if (readsPath(patterns.get(i))) {
+                count++;
+            }
+        }
+        return count;
     }
 
     /** The value pattern {@code p}'s condition is tested on: along its left path from the fact, or the fact's name. */

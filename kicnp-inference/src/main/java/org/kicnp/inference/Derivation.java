@@ -16,8 +16,9 @@ import java.util.Optional;
  *
  * <p>A value class with the accessors, equality and text of a record of those seven components. Every derived
  * instance keeps one for as long as it lives, and few are ever read: so it holds the binding as its slots and
- * instances by position, and the conditions as the values tested, one object and an array where a binding map and a
- * list of conditions were two more; {@link #binding()} and {@link #conditions()} are views made when asked.
+ * instances by position, and of the conditions only the values read along their paths (a condition with no path is
+ * tested on the bound instance's name, which the binding holds), one object where a binding map and a list of
+ * conditions were two more; {@link #binding()} and {@link #conditions()} are views made when asked.
  */
 public final class Derivation {
     private final String instance;
@@ -26,7 +27,8 @@ public final class Derivation {
     private final List<String> slots;
     private final String[] facts;
     /**
-     * The conditions: with {@link #patterns}, a firing's values tested, an {@code Object[]} by pattern (a
+     * The conditions: with {@link #patterns}, what a firing kept of the values it tested, those of the patterns whose
+     * condition reads a path ({@link CheckedConditions#kept}: null, the one value or an array; a
      * {@link CheckedConditions} when asked); with no patterns (null), the list itself.
      */
     private final List<SlotPattern> patterns;
@@ -52,10 +54,11 @@ public final class Derivation {
 
     /**
      * A firing's derivation: the rule's required slots bound to {@code facts} (never to be changed afterwards), and
-     * the conditions of {@code patterns} tested on {@code tested} ({@link CheckedConditions#tested}); no copies.
+     * the conditions of {@code patterns} tested on the values {@code tested} keeps ({@link CheckedConditions#kept});
+     * no copies.
      */
     Derivation(String instance, String frame, List<String> slots, String[] facts, List<SlotPattern> patterns,
-               Object[] tested, long firing, String trigger) {
+               Object tested, long firing, String trigger) {
         this.instance = instance;
         this.frame = frame;
         this.slots = slots;
@@ -84,7 +87,7 @@ public final class Derivation {
     @SuppressWarnings("unchecked")
     public List<CheckedCondition> conditions() {
         return patterns == null ? (List<CheckedCondition>) checked
-                : new CheckedConditions(patterns, null, (Object[]) checked);
+                : new CheckedConditions(patterns, null, CheckedConditions.expand(patterns, facts, checked));
     }
 
     public long firing() {

@@ -90,7 +90,7 @@ final class Firing {
         boolean plain = r.optional().isEmpty();
         Map<String, String> full = plain ? null : withOptional(r, a.binding());
         String trigger = newest(refs, full);
-        Object[] tested = plain ? CheckedConditions.tested(r, refs, facts, conditions) : null;
+        Object tested = plain ? CheckedConditions.kept(r, refs, facts, conditions) : null;
         List<Derivation.CheckedCondition> checked = plain ? null : CheckedConditions.of(r, full, refs, facts,
                 conditions);
         long firing = ++firings;

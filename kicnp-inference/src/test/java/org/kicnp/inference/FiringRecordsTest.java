@@ -86,6 +86,36 @@ class FiringRecordsTest {
                 .containsExactly("u1", "2");
     }
 
+    /**
+     * A firing keeps only the values its conditions read along a path (none, one, or several) and takes the others
+     * from its binding: whichever it is, the list names every bound slot, in slot order, with what it was tested on.
+     */
+    @Test
+    void checkedConditions_withNoneOneOrSeveralConditionsReadingAPath_listEverySlotInOrderWithTheValueTested() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Room", null).cls("Order", null);
+        f.kb.add(Frame.classFrame("Greet").slot(Fixture.inst("mUser", "User"))
+                .slot(Fixture.inst("mRoom", "Room")).build());
+        f.kb.add(Frame.classFrame("Serve").slot(Fixture.inst("mUser", "User", ".age > 1"))
+                .slot(Fixture.inst("mRoom", "Room")).slot(Fixture.inst("mOrder", "Order", ".cups > 1")).build());
+        InferenceEngine e = f.engine();
+        f.assertFact("u1", "User", "age", 30);
+        f.assertFact("r1", "Room");
+        f.assertFact("o1", "Order", "cups", 2);
+        e.runToQuiescence();
+
+        Derivation greet = e.derivation(f.instancesOf("Greet").getFirst()).orElseThrow();
+        Derivation serve = e.derivation(f.instancesOf("Serve").getFirst()).orElseThrow();
+
+        assertThat(greet.conditions()).containsExactly(new Derivation.CheckedCondition("mUser", "COND_ANY", "u1"),
+                new Derivation.CheckedCondition("mRoom", "COND_ANY", "r1"));
+        assertThat(serve.conditions()).containsExactly(new Derivation.CheckedCondition("mUser", ".age > 1", "30"),
+                new Derivation.CheckedCondition("mRoom", "COND_ANY", "r1"),
+                new Derivation.CheckedCondition("mOrder", ".cups > 1", "2"));
+        assertThat(new Derivation(serve.instance(), "Serve", serve.binding(), List.copyOf(serve.conditions()),
+                serve.firing(), serve.trigger(), Optional.empty())).isEqualTo(serve).hasSameHashCodeAs(serve);
+    }
+
     @Test
     void derivation_ofAFiring_isAValueEqualToOneMadeFromItsParts_inSlotOrder_andReadOnly() {
         Delivered run = Delivered.fire();
