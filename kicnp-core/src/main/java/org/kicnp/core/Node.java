@@ -22,7 +22,7 @@ final class Node {
      * to, each once: null (none), the one referrer itself, a {@code Node[]} of at most {@value #FEW_REFERRERS} padded
      * with trailing nulls, or, past that, a {@link NodeSet}. Most referred frames have one to three referrers all their
      * life (an instance a few derived instances name), and a set of its own (an object and an array, 56 to 64 bytes)
-     * was a tenth of what a derived instance keeps in {@code bench inference}.
+     * for each was about a twentieth of what a run of {@code bench inference} keeps.
      */
     private Object referrers;
     /** Its place in the name index's order ({@link NodeIndex}); -1 when not in an index. */
