@@ -22,6 +22,11 @@ final class BindingKey {
         this.facts = facts;
     }
 
+    /** The behavior frame. */
+    String frame() {
+        return frame;
+    }
+
     /** The bound instances, in slot order; not to be changed. */
     String[] facts() {
         return facts;

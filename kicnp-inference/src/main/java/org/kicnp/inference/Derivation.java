@@ -22,10 +22,13 @@ import java.util.Optional;
  */
 public final class Derivation {
     private final String instance;
-    private final String frame;
+    /**
+     * The behavior frame and the instances bound, by position: the refraction key of the binding ({@link BindingKey}),
+     * the one the firing's activation had, so a firing keeps one object for both.
+     */
+    private final BindingKey key;
     /** The binding's slots and, by position, the instances bound to them (never changed once made). */
     private final List<String> slots;
-    private final String[] facts;
     /**
      * The conditions: with {@link #patterns}, what a firing kept of the values it tested, those of the patterns whose
      * condition reads a path ({@link CheckedConditions#kept}: null, the one value or an array; a
@@ -41,9 +44,8 @@ public final class Derivation {
                       long firing, String trigger, Optional<String> createdBy) {
         Binding b = Binding.copyOf(binding);
         this.instance = requireNonNull(instance, "instance");
-        this.frame = requireNonNull(frame, "frame");
+        this.key = new BindingKey(requireNonNull(frame, "frame"), b.factArray());
         this.slots = b.slotList();
-        this.facts = b.factArray();
         this.patterns = null;
         // A firing's own list is immutable already, and copying it would make every record it defers at once.
         this.checked = conditions instanceof CheckedConditions ? conditions : List.copyOf(conditions);
@@ -53,16 +55,15 @@ public final class Derivation {
     }
 
     /**
-     * A firing's derivation: the rule's required slots bound to {@code facts} (never to be changed afterwards), and
-     * the conditions of {@code patterns} tested on the values {@code tested} keeps ({@link CheckedConditions#kept});
-     * no copies.
+     * A firing's derivation: the rule's required slots bound to the instances of {@code key}, the refraction key of
+     * the firing's activation (its instances never to be changed afterwards), and the conditions of {@code patterns}
+     * tested on the values {@code tested} keeps ({@link CheckedConditions#kept}); no copies.
      */
-    Derivation(String instance, String frame, List<String> slots, String[] facts, List<SlotPattern> patterns,
-               Object tested, long firing, String trigger) {
+    Derivation(String instance, BindingKey key, List<String> slots, List<SlotPattern> patterns, Object tested,
+               long firing, String trigger) {
         this.instance = instance;
-        this.frame = frame;
+        this.key = key;
         this.slots = slots;
-        this.facts = facts;
         this.patterns = patterns;
         this.checked = tested;
         this.firing = firing;
@@ -75,19 +76,19 @@ public final class Derivation {
     }
 
     public String frame() {
-        return frame;
+        return key.frame();
     }
 
     /** The binding, slot → instance, in slot order (immutable). */
     public Map<String, String> binding() {
-        return Binding.wrap(slots, facts);
+        return Binding.wrap(slots, key.facts());
     }
 
     /** Each bound slot's condition and the value it was tested on (immutable). */
     @SuppressWarnings("unchecked")
     public List<CheckedCondition> conditions() {
         return patterns == null ? (List<CheckedCondition>) checked
-                : new CheckedConditions(patterns, null, CheckedConditions.expand(patterns, facts, checked));
+                : new CheckedConditions(patterns, null, CheckedConditions.expand(patterns, key.facts(), checked));
     }
 
     public long firing() {
@@ -104,16 +105,17 @@ public final class Derivation {
 
     /** The number of bound slots. */
     int width() {
-        return facts.length;
+        return key.facts().length;
     }
 
     /** The instance bound to the slot at {@code position}. */
     String factAt(int position) {
-        return facts[position];
+        return key.facts()[position];
     }
 
     /** The instances this one rests on: its binding, and the creating instance for a scripted creation. */
     List<String> supports() {
+        String[] facts = key.facts();
         List<String> out = new ArrayList<>(facts.length + 1);
         out.addAll(List.of(facts));
         createdBy.ifPresent(out::add);
@@ -121,17 +123,18 @@ public final class Derivation {
     }
 
     @Override public boolean equals(Object o) {
-        return o instanceof Derivation d && d.firing == firing && d.instance.equals(instance) && d.frame.equals(frame)
+        return o instanceof Derivation d && d.firing == firing && d.instance.equals(instance)
+                && d.frame().equals(frame())
                 && d.binding().equals(binding()) && d.conditions().equals(conditions()) && d.trigger.equals(trigger)
                 && d.createdBy.equals(createdBy);
     }
 
     @Override public int hashCode() {
-        return Objects.hash(instance, frame, binding(), conditions(), firing, trigger, createdBy);
+        return Objects.hash(instance, frame(), binding(), conditions(), firing, trigger, createdBy);
     }
 
     @Override public String toString() {
-        return "Derivation[instance=" + instance + ", frame=" + frame + ", binding=" + binding() + ", conditions="
+        return "Derivation[instance=" + instance + ", frame=" + frame() + ", binding=" + binding() + ", conditions="
                 + conditions() + ", firing=" + firing + ", trigger=" + trigger + ", createdBy=" + createdBy + "]";
     }
 

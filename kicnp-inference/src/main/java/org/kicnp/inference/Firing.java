@@ -99,8 +99,7 @@ final class Firing {
         while (true) {
             name = made.next(r.frame());
             Derivation d = plain
-                    ? new Derivation(name, r.frame(), r.requiredSlots(), a.facts(), r.required(), tested, firing,
-                            trigger)
+                    ? new Derivation(name, a.key(), r.requiredSlots(), r.required(), tested, firing, trigger)
                     : new Derivation(name, r.frame(), full, checked, firing, trigger, Optional.empty());
             FactView.Fact record = supports.record(d, r, refs, made.number());
             try {
