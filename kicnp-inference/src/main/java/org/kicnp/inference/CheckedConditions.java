@@ -41,25 +41,19 @@ final class CheckedConditions extends AbstractList<Derivation.CheckedCondition> 
      */
     static Object kept(Rule r, FactView.Fact[] refs, FactView facts, Conditions conditions) {
         List<SlotPattern> patterns = r.required();
+        int paths = pathsRead(patterns, refs.length);
+        Object[] many = paths > 1 ? new Object[paths] : null;
         Object one = null;
-        Object[] many = null;
-        int k = 0;
-        for (int i = 0; i < refs.length; i++) {
+        for (int i = 0, k = 0; i < refs.length; i++) {
             SlotPattern p = patterns.get(i);
-            if (!readsPath(p)) {
-                continue;
-            }
-            Object v = testedOn(p, refs[i], refs[i].name, facts, conditions);
-            if (k == 0) {
-                one = v;
-            } else {
-                if (many == null) {
-                    many = new Object[pathsRead(patterns, refs.length)];
-                    many[0] = one;
+            if (readsPath(p)) {
+                Object v = testedOn(p, refs[i], refs[i].name, facts, conditions);
+                if (many != null) {
+                    many[k++] = v;
+                } else {
+                    one = v;
                 }
-                many[k] = v;
             }
-            k++;
         }
         return many != null ? many : one;
     }
