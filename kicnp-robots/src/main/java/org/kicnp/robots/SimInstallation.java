@@ -7,6 +7,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 
@@ -77,10 +78,14 @@ public record SimInstallation(Path simDir, Path python) {
             Process p = new ProcessBuilder("bash", script.toString()).redirectErrorStream(true)
                     .redirectOutput(log.toFile()).start();
             if (!p.waitFor(timeout.toMillis(), TimeUnit.MILLISECONDS)) {
-                p.descendants().forEach(ProcessHandle::destroyForcibly);
+                // What the script said before we gave up, read before anything is killed: a shell whose child is
+                // killed first reports "Killed" on its way out, which is noise in the message.
+                String said = Files.readString(log).strip();
+                List<ProcessHandle> children = p.descendants().toList(); // once the script is gone they are orphans
                 p.destroyForcibly();
+                children.forEach(ProcessHandle::destroyForcibly);
                 throw new SimulatorException("'" + script + "' did not finish within " + timeout.toSeconds()
-                        + " s; its output: " + Files.readString(log).strip());
+                        + " s; its output: " + said);
             }
             if (p.exitValue() != 0) {
                 throw new SimulatorException("'" + script + "' failed with exit code " + p.exitValue() + ": "

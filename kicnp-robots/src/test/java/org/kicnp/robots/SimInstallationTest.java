@@ -57,14 +57,21 @@ class SimInstallationTest {
 
     @Test
     @Timeout(value = 20, unit = TimeUnit.SECONDS)
-    void locate_whenTheSetupScriptHangs_givesUpAfterTheTimeoutSayingSo() throws IOException {
-        fakeSim("echo 'pip: connecting...'\nsleep 60\n");
+    void locate_whenTheSetupScriptHangs_givesUpAfterTheTimeoutSayingSo() throws IOException, InterruptedException {
+        Path sim = fakeSim("echo 'pip: connecting...'\nsleep 60 &\necho $! > \"$(dirname \"$0\")/child.pid\"\nwait\n");
 
         long start = System.nanoTime();
         assertThatThrownBy(() -> SimInstallation.locate(Optional.of(repo), Duration.ofSeconds(1)))
                 .isInstanceOf(SimulatorException.class)
                 .hasMessageEndingWith("setup-venv.sh' did not finish within 1 s; its output: pip: connecting...");
         assertThat(System.nanoTime() - start).isLessThan(TimeUnit.SECONDS.toNanos(5));
+        // nothing the script started is left behind
+        long child = Long.parseLong(Files.readString(sim.resolve("child.pid")).strip());
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+        while (ProcessHandle.of(child).filter(ProcessHandle::isAlive).isPresent() && System.nanoTime() < deadline) {
+            Thread.sleep(20);
+        }
+        assertThat(ProcessHandle.of(child).filter(ProcessHandle::isAlive)).as("the script's child %d", child).isEmpty();
     }
 
     @Test
