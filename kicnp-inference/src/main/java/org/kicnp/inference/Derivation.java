@@ -105,12 +105,12 @@ public final class Derivation {
 
     /** The number of bound slots. */
     int width() {
-        return key.facts().length;
+        return key.width();
     }
 
     /** The instance bound to the slot at {@code position}. */
     String factAt(int position) {
-        return key.facts()[position];
+        return key.fact(position);
     }
 
     /** The instances this one rests on: its binding, and the creating instance for a scripted creation. */

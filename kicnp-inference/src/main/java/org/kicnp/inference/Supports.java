@@ -277,8 +277,8 @@ final class Supports {
     }
 
     void unmarkFired(BindingKey key) {
-        for (String name : key.facts()) {
-            FactView.Fact f = facts.get(name);
+        for (int i = 0, n = key.width(); i < n; i++) {
+            FactView.Fact f = facts.get(key.fact(i));
             if (f != null) {
                 f.unfire(key);
             }
@@ -286,7 +286,7 @@ final class Supports {
     }
 
     private static String facts0(BindingKey key) {
-        return key.facts()[0];
+        return key.fact(0);
     }
 
     /** A fact left: bindings with it can never recur, and a re-asserted fact of that name is a new fact. */
