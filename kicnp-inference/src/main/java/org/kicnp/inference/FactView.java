@@ -22,10 +22,17 @@ final class FactView implements Conditions.Reader {
     private final FactTable facts = new FactTable();
 
     /** What the engine knows of one instance. Fields are null until needed. */
+    /** The stamp of a fact that has left the view ({@link Fact#gone}). */
+    static final long GONE = Long.MIN_VALUE;
+
     static final class Fact {
         final String name;
-        /** The frame as last seen; null when the network met the instance in the knowledge base before its event. */
+        /**
+         * The frame as last seen; null when the network met the instance in the knowledge base before its event. Set
+         * through {@link #seen}, which keeps {@link #links} true to it.
+         */
         Frame frame;
+        /** When the engine asserted it (recency); {@link #GONE} once it has left the view. */
         long stamp;
         /**
          * The fact's memberships of alpha memories: null (none), one {@link AlphaMemory.Entry} (most facts: one
@@ -41,19 +48,34 @@ final class FactView implements Conditions.Reader {
         /** The derived instances that rest on this one, in the order they were made: a {@link Bag} of names. */
         Object dependents;
         /**
-         * The facts the slots of {@link #linksOf} refer to, by the slot's position in its frame (null: not resolved
-         * yet); valid while {@link #frame} is {@code linksOf}. Lets a path step from fact to fact without looking the
-         * next name up again ({@link FactView#follow}).
+         * The facts the slots of {@link #frame} refer to, by the slot's position in it (null: not resolved yet); let
+         * go whenever the frame is replaced by another, so it never needs the frame it was made for beside it. A firing
+         * sets it before the engine has seen its instance's frame ({@link #frame} still null), for that very frame.
+         * Lets a path step from fact to fact without looking the next name up again ({@link FactView#follow}).
          */
         Fact[] links;
-        Frame linksOf;
-        /** Set when the fact leaves the view: a link to it is stale (its name may come back as another fact). */
-        boolean gone;
         /** A reference to this fact, made once for the slots of every instance derived from it; null until needed. */
         private Value ref;
 
         Fact(String name) {
             this.name = name;
+        }
+
+        /** The frame the instance has now (added or replaced); links made for another frame are let go. */
+        void seen(Frame now) {
+            if (frame != now && frame != null) {
+                links = null;
+            }
+            frame = now;
+        }
+
+        /**
+         * Whether the fact has left the view: a link to it is stale (its name may come back as another fact). Kept in
+         * the stamp, which a fact that left never takes again, rather than in a field of its own: one field fewer
+         * makes a record 56 bytes instead of 64.
+         */
+        boolean gone() {
+            return stamp == GONE;
         }
 
         /** A reference to this fact ({@code Value.ref(name)}), the same one each time. */
@@ -168,7 +190,7 @@ final class FactView implements Conditions.Reader {
     /** Records the instance's frame (as added or replaced) and returns its fact. */
     Fact put(Frame instance) {
         Fact f = touch(instance.name());
-        f.frame = instance;
+        f.seen(instance);
         return f;
     }
 
@@ -195,7 +217,7 @@ final class FactView implements Conditions.Reader {
     void remove(String name) {
         Fact f = facts.remove(name);
         if (f != null) {
-            f.gone = true;
+            f.stamp = GONE;
         }
     }
 
@@ -270,12 +292,11 @@ final class FactView implements Conditions.Reader {
             if (!(s.effectiveValueOrNull() instanceof Value.Ref r)) {
                 return null;
             }
-            if (f.linksOf != frame) {
+            if (f.links == null || f.links.length != slots.size()) {
                 f.links = new Fact[slots.size()];
-                f.linksOf = frame;
             }
             Fact to = f.links[j];
-            if (to == null || to.gone) {
+            if (to == null || to.gone()) {
                 to = facts.get(r.frame());
                 f.links[j] = to;
             }

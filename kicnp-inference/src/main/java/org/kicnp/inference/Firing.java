@@ -104,11 +104,11 @@ final class Firing {
             FactView.Fact record = supports.record(d, r, refs, made.number());
             try {
                 if (d.width() == refs.length) {
-                    Frame instance = addInstance(r, name, refs);
+                    addInstance(r, name, refs);
                     // Its slots hold the required slots' facts in order: refs (shared: the activation is done with).
-                    // Set after the add, yet before the engine handles its event: that waits for the next drain.
+                    // Set after the add, yet before the engine handles its event (that waits for the next drain),
+                    // which gives the record this frame (Fact#seen keeps links given for the frame to come).
                     record.links = refs;
-                    record.linksOf = instance;
                 } else {
                     kb.add(Frame.instance(name, r.frame(), Provenance.RUNTIME, slotsOf(full)),
                             framesOf(refs, new Frame[refs.length]));

@@ -206,10 +206,10 @@ final class ForwardChainer {
         String cls = f.parent().orElseThrow();
         FactView.Fact fact = made.take(f);
         if (fact == null) {
-            fact = prepared != null && !prepared.gone ? prepared
+            fact = prepared != null && !prepared.gone() ? prepared
                     : facts.touch(f.name(), NameTable.numberOf(f)); // the number the knowledge base read off the name
         }
-        fact.frame = f;
+        fact.seen(f);
         fact.stamp = stamp;
         if (tracing.getAsBoolean()) {
             trace(new TraceEvent.FactAsserted(f.name(), cls, stamp));

@@ -137,4 +137,24 @@ class FactViewTest {
         t.enter(entries.get(0)); // and from none to one
         assertThat(t.entryIn(memories.get(0))).isSameAs(entries.get(0));
     }
+
+    /**
+     * A firing gives its new instance's record the links of the frame it just added before the engine has seen that
+     * frame: they are kept when the frame arrives, and let go only when another frame replaces it.
+     */
+    @Test
+    void linksGivenBeforeTheFrameIsSeen_areKeptForIt_andLetGoWhenAnotherFrameReplacesIt() {
+        Frame h1 = f.kb.frame("h1").orElseThrow();
+        FactView.Fact fresh = new FactView.Fact("h9");
+        FactView.Fact[] given = {facts.get("t1"), null};
+        fresh.links = given;
+
+        fresh.seen(h1);
+        assertThat(fresh.links).isSameAs(given);
+        fresh.seen(h1); // the same frame again
+        assertThat(fresh.links).isSameAs(given);
+        fresh.seen(h1.withSlot(Slot.ofValue("mS", DataType.FRAME, Value.ref("t2"))));
+        assertThat(fresh.links).isNull();
+        assertThat(fresh.gone()).isFalse();
+    }
 }
