@@ -21,10 +21,10 @@ final class FactView implements Conditions.Reader {
     private final KnowledgeBase kb;
     private final FactTable facts = new FactTable();
 
-    /** What the engine knows of one instance. Fields are null until needed. */
     /** The stamp of a fact that has left the view ({@link Fact#gone}). */
     static final long GONE = Long.MIN_VALUE;
 
+    /** What the engine knows of one instance. Fields are null until needed. */
     static final class Fact {
         final String name;
         /**
