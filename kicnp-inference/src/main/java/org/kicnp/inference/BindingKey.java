@@ -73,7 +73,11 @@ final class BindingKey {
     @Override public int hashCode() {
         int h = hash;
         if (h == 0) {
-            h = 31 * frame.hashCode() + Arrays.hashCode(facts()); // as before the fields: a key's hash is unchanged
+            int facts = 1; // Arrays.hashCode of the instances, as when they were an array: a key's hash is unchanged
+            for (int i = 0, n = width(); i < n; i++) {
+                facts = 31 * facts + fact(i).hashCode();
+            }
+            h = 31 * frame.hashCode() + facts;
             hash = h; // a benign race, as String's: every thread works out the same value
         }
         return h;

@@ -238,7 +238,7 @@ final class Supports {
 
     /** Why a binding may not fire now, if it may not: refracted, consumed by an unshared slot, or key taken. */
     Optional<String> blocked(Rule r, String[] facts, BindingKey key) {
-        return blocked(r, facts, this.facts.get(facts0(key)), key);
+        return blocked(r, facts, this.facts.get(key.fact(0)), key);
     }
 
     /** As {@link #blocked(Rule, String[], BindingKey)}, with the first bound instance's record (or null) at hand. */
@@ -283,10 +283,6 @@ final class Supports {
                 f.unfire(key);
             }
         }
-    }
-
-    private static String facts0(BindingKey key) {
-        return key.fact(0);
     }
 
     /** A fact left: bindings with it can never recur, and a re-asserted fact of that name is a new fact. */
