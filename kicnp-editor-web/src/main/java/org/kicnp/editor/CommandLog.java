@@ -18,12 +18,20 @@ final class CommandLog {
     static final int LIMIT = 50;
 
     private final LinkedHashMap<String, Map<String, Object>> entries = new LinkedHashMap<>();
+    /**
+     * Counts every change to any row; a row's {@code rev} is the count at its last change. Rows reach a page by two
+     * roads that can overtake each other (the answer to a send, stop or "wrong", and the {@code feedback} events that
+     * feedback from another thread pushes), so a page keeps, of two copies of a row, the one with the higher
+     * {@code rev}: a stop's answer taken before the cancellation's feedback never turns a failed command back into a
+     * started one.
+     */
+    private long revision;
 
     /** Records a command the editor sent; answers its row. */
     synchronized Map<String, Object> sent(String id, String robot, String action, Map<String, String> args) {
         Map<String, Object> row = row(id, robot, action);
         row.put("args", Collections.unmodifiableMap(new LinkedHashMap<>(args)));
-        return snapshot(row);
+        return changed(row);
     }
 
     /** Records feedback; answers the command's row as it now is. */
@@ -32,21 +40,21 @@ final class CommandLog {
         row.put("status", f.status().name().toLowerCase(Locale.ROOT));
         row.put("detail", f.detail());
         row.put("at", f.at().toString());
-        return snapshot(row);
+        return changed(row);
     }
 
     /** Records a "wrong" judgement; answers the row. */
     synchronized Map<String, Object> wrong(String id, String reason) {
         Map<String, Object> row = row(id, "", "");
         row.put("wrong", reason);
-        return snapshot(row);
+        return changed(row);
     }
 
     /** Records that the person asked for the action to be stopped, and why; answers the row. */
     synchronized Map<String, Object> stopAsked(String id, String reason) {
         Map<String, Object> row = row(id, "", "");
         row.put("stop", reason);
-        return snapshot(row);
+        return changed(row);
     }
 
     /** Newest first. */
@@ -54,6 +62,12 @@ final class CommandLog {
         List<Map<String, Object>> out = new ArrayList<>();
         entries.values().forEach(r -> out.addFirst(snapshot(r)));
         return out;
+    }
+
+    /** Stamps a row that just changed with the next revision; answers a copy. */
+    private Map<String, Object> changed(Map<String, Object> row) {
+        row.put("rev", ++revision);
+        return snapshot(row);
     }
 
     private static Map<String, Object> snapshot(Map<String, Object> row) {

@@ -101,10 +101,9 @@ export async function loadCommands() {
 /** A `feedback` event (or the answer to a send): the command's row as it now is. */
 export function feedbackEvent(row) {
   const known = commands.get(row.id);
-  // Rows arrive out of order only when an answer (to a send or a stop) races the command's feedback: never go back.
-  if (known && row.status === 'sent' && known.status !== 'sent') {
-    row = { ...row, status: known.status, detail: known.detail, at: known.at };
-  }
+  // An answer (to a send, a stop, a "wrong") can be overtaken by the command's feedback, or the other way round:
+  // keep the copy the server changed last (its rev), so a row never goes back.
+  if (known && known.rev > row.rev) return;
   commands.delete(row.id);
   commands.set(row.id, { ...known, ...row });
   while (commands.size > 50) commands.delete(commands.keys().next().value);
