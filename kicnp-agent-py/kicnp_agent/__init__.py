@@ -10,10 +10,10 @@ from .errors import (ActionFailedError, AgentError, AgentTimeoutError, Authentic
                      ProtocolError, RequestRefusedError)
 from .frames import Frame, frame_xml
 from .messages import (BindingOutcome, Changed, Command, Feedback, NotFired, ProofNode, Reason, Ref, Relay,
-                       SlotCandidates)
+                       SlotCandidates, Snapshot)
 from .options import AgentKind, AgentOptions
 
 __all__ = ["ActionFailedError", "ActionHandle", "Agent", "AgentError", "AgentKind", "AgentOptions",
            "AgentTimeoutError", "AuthenticationError", "BindingOutcome", "Changed", "Command", "CommandTicket",
            "Feedback", "Frame", "NotConnectedError", "NotFired", "ProofNode", "ProtocolError", "Reason", "Ref",
-           "Relay", "RequestRefusedError", "SlotCandidates", "frame_xml"]
+           "Relay", "RequestRefusedError", "SlotCandidates", "Snapshot", "frame_xml"]

@@ -8,7 +8,7 @@ from .actions import CommandRunner, CommandTicket
 from .dispatch import EventQueue, PendingRequests
 from .errors import AgentError, AgentTimeoutError, NotConnectedError, ProtocolError, RequestRefusedError
 from .frames import Frame
-from .messages import Command, Feedback, NotFired, ProofNode, Reason, value_from_json, value_to_json
+from .messages import Command, Feedback, NotFired, ProofNode, Reason, Snapshot, value_from_json, value_to_json
 from .options import AgentKind, AgentOptions
 from .supervisor import Supervisor, _sentence
 from .wire import MAX_NAME_LENGTH, check_lengths, length
@@ -207,10 +207,15 @@ class Agent:
 
     def query(self, of_class, timeout=None):
         """Every instance of a class (and of the classes below it), as :class:`Frame` s."""
+        return self.snapshot(of_class, timeout).frames
+
+    def snapshot(self, of_class, timeout=None):
+        """As :meth:`query`, with the server's clock when it read the frames: a :class:`Snapshot`. The times the
+        frames hold (a sensor signal's ``time`` and ``expires``) are on that clock, which need not be this machine's."""
         check_lengths("query", of_class=of_class)
         answer = self._request({"type": "query", "ofClass": of_class}, "frames", "the query of class '%s'" % of_class,
                                timeout)
-        return [Frame.parse(xml) for xml in answer["frames"]]
+        return Snapshot([Frame.parse(xml) for xml in answer["frames"]], answer.get("time"))
 
     def ask(self, frame, slot, timeout=None):
         """The effective value of a slot, inherited along IS-A; None when it has none."""

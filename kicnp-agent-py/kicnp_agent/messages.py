@@ -102,6 +102,15 @@ class Changed:
 
 
 @dataclass(frozen=True)
+class Snapshot:
+    """What :meth:`Agent.snapshot` answers: the frames, and ``server_time``, the server's clock (epoch milliseconds)
+    when it read them — the clock of the times they hold, such as a sensor signal's ``expires`` — or None from a
+    server that does not say."""
+    frames: List[object]
+    server_time: Optional[int] = None
+
+
+@dataclass(frozen=True)
 class Reason:
     """Why an instance exists (the answer to ``why``), back to the stimuli through ``supports``."""
     instance: str

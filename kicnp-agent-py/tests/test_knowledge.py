@@ -1,5 +1,6 @@
 """The knowledge base through a real gateway: query, ask, assert, destroy, subscribe, and prove/why/why_not."""
 import threading
+import time
 import unittest
 
 from harness import GatewayTestCase, eventually
@@ -17,6 +18,15 @@ class KnowledgeTest(GatewayTestCase):
         self.assertIn("cup1", cups)
         self.assertEqual(("Cup", True), (cups["cup1"].isa, cups["cup1"].is_instance))
         self.assertEqual({"ml": 250, "colour": "blue"}, cups["cup1"].slots)
+
+    def test_snapshot_isTheQuerysFrames_withTheServersClockWhenItReadThem(self):
+        before = int(time.time() * 1000)
+        snapshot = self.user.snapshot("Cup")
+        after = int(time.time() * 1000)
+        self.assertIn("cup1", [f.name for f in snapshot.frames])
+        # The test's gateway runs on this machine, so its clock is this one's.
+        self.assertIsInstance(snapshot.server_time, int)
+        self.assertTrue(before <= snapshot.server_time <= after, (before, snapshot.server_time, after))
 
     def test_ask_givesTheSlotsValue_noneWithoutOne_andARefusalNamingTheRequest(self):
         self.assertEqual(250, self.user.ask("cup1", "ml"))

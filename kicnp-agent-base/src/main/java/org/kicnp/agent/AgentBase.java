@@ -206,8 +206,28 @@ public abstract class AgentBase implements AutoCloseable {
 
     /** Every instance of a class (and of the classes below it). */
     public final List<Frame> query(String ofClass) {
+        return snapshot(ofClass).frames();
+    }
+
+    /**
+     * Every instance of a class (and of the classes below it), as {@link #query}, with the server's clock when it read
+     * them: the clock of the times the frames hold (a sensor signal's {@code time} and {@code expires}), which need
+     * not be this machine's.
+     */
+    public final Snapshot snapshot(String ofClass) {
         Message.Frames f = (Message.Frames) request(new Message.Query(nextId(), ofClass));
-        return parse(f.frames());
+        return new Snapshot(parse(f.frames()), f.time());
+    }
+
+    /**
+     * What {@link #snapshot} answers: the frames, and the server's clock (epoch milliseconds) when it read them, empty
+     * from a server that does not say (before protocol.md gave {@code frames} its {@code time}).
+     */
+    public record Snapshot(List<Frame> frames, Optional<Long> serverTime) {
+        public Snapshot {
+            frames = List.copyOf(frames);
+            requireNonNull(serverTime, "serverTime");
+        }
     }
 
     /** The effective value of a slot, inherited along IS-A; empty when it has none. */

@@ -17,6 +17,7 @@ import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Test;
+import org.kicnp.core.Frame;
 import org.kicnp.protocol.AgentKind;
 import org.kicnp.protocol.ErrorCode;
 import org.kicnp.protocol.Framing;
@@ -153,6 +154,38 @@ class AgentBaseTest {
             assertThatThrownBy(() -> a.startAndAwait(Duration.ofSeconds(10))).isInstanceOf(AuthenticationException.class)
                     .hasMessage("Server refused agent 'alice': Send 'hello' first.");
             assertThat(server.connections()).isEqualTo(1);
+        }
+    }
+
+    /**
+     * A snapshot is the query's frames with the server's clock when it read them; from a server that does not send
+     * that clock (before 'frames' had 'time'), the frames alone, the clock empty. {@code query} gives the frames either way.
+     */
+    @Test
+    void snapshot_carriesTheServersClock_whenItSaysIt_andIsEmptyWhenItDoesNot() throws Exception {
+        String cup = "<FRAME><NAME>cup1</NAME><ISA>Cup</ISA><ISINSTANCE>TRUE</ISINSTANCE></FRAME>";
+        try (FakeGateway server = new FakeGateway(peer -> {
+            peer.register();
+            Message.Query q = (Message.Query) peer.readSkippingHeartbeats();
+            peer.send(new Message.Frames(q.id(), List.of(cup), Optional.of(1_234_567_890_123L)));
+            q = (Message.Query) peer.readSkippingHeartbeats();
+            peer.send(new Message.Frames(q.id(), List.of(cup), Optional.empty()));
+            q = (Message.Query) peer.readSkippingHeartbeats();
+            peer.send(new Message.Frames(q.id(), List.of(cup), Optional.empty()));
+            peer.drain();
+        });
+             UserAgent a = new UserAgent(alice(server))) {
+            a.startAndAwait(Duration.ofSeconds(10));
+
+            AgentBase.Snapshot told = a.snapshot("Cup");
+            AgentBase.Snapshot untold = a.snapshot("Cup");
+            List<Frame> queried = a.query("Cup");
+
+            assertThat(told.serverTime()).contains(1_234_567_890_123L);
+            assertThat(told.frames()).extracting(Frame::name).containsExactly("cup1");
+            assertThat(untold.serverTime()).isEmpty();
+            assertThat(untold.frames()).extracting(Frame::name).containsExactly("cup1");
+            assertThat(queried).extracting(Frame::name).containsExactly("cup1");
         }
     }
 

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import java.time.Duration;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -23,7 +24,7 @@ class EventQueueTest {
                 peer.send(Message.Relay.toAgent("", "bob", "alice", "n", Integer.toString(i)));
             }
             Message.Query q = (Message.Query) peer.readSkippingHeartbeats();
-            peer.send(new Message.Frames(q.id(), List.of()));
+            peer.send(new Message.Frames(q.id(), List.of(), Optional.empty()));
             peer.drain();
         });
              SlowAgent a = new SlowAgent(AgentOptions.of("127.0.0.1", server.port(), "alice", AgentKind.USER, "t")

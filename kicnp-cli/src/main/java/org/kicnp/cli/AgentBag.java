@@ -22,6 +22,8 @@ import java.util.TreeMap;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.function.LongSupplier;
+import org.kicnp.agent.AgentBase;
 import org.kicnp.agent.NotConnectedException;
 import org.kicnp.agent.RequestRefusedException;
 import org.kicnp.cli.AgentCommand.CliAgent;
@@ -47,6 +49,11 @@ import picocli.CommandLine.Parameters;
  */
 final class AgentBag {
     static final String SENSOR_SIGNAL = "SensorSignal";
+    /**
+     * This machine's clock (epoch milliseconds), read where a server's clock cannot be had; tests set it apart from
+     * the server's to show which one a recording's times come from.
+     */
+    static volatile LongSupplier wallClock = System::currentTimeMillis;
 
     private AgentBag() {
     }
@@ -108,7 +115,7 @@ final class AgentBag {
                 }
                 // Read after subscribing, so that a change in between is in the snapshot, heard, or both; never lost.
                 Signals signals = new Signals(err);
-                List<Bag.Signal> present = snapshot(a, recorded, signals);
+                List<Bag.Signal> present = snapshot(a, recorded, signals, err);
                 // Opened only now, so that a server that cannot be reached or refuses leaves an earlier file as it was.
                 try (BufferedWriter file = open(out)) {
                     write(file, new Bag.Header(started, agent.gateway, recorded));
@@ -130,13 +137,26 @@ final class AgentBag {
          * values are asked for typed (a frame's XML holds them as text); a signal gone before it is asked for is
          * left out, its removal being heard. Ordered by instance name, so the same state makes the same lines.
          */
-        private static List<Bag.Signal> snapshot(CliAgent a, List<String> recorded, Signals signals) {
+        private static List<Bag.Signal> snapshot(CliAgent a, List<String> recorded, Signals signals,
+                PrintWriter err) {
             Map<String, Frame> byName = new TreeMap<>();
+            Map<String, Long> readAt = new HashMap<>(); // the server's clock when it read the frame
+            boolean toldClock = false;
             for (String c : recorded) {
-                a.query(c).forEach(f -> byName.put(f.name(), f)); // a frame of two recorded classes comes twice
+                long local = wallClock.getAsLong();
+                AgentBase.Snapshot answer = a.snapshot(c);
+                if (answer.serverTime().isEmpty() && !toldClock) {
+                    err.println("The server does not say its clock (it predates 'frames' with 'time'): the times to "
+                            + "live of the signals there at the start are reckoned on this machine's clock.");
+                    toldClock = true;
+                }
+                long at = answer.serverTime().orElse(local);
+                for (Frame f : answer.frames()) { // a frame of two recorded classes comes twice: the later read wins
+                    byName.put(f.name(), f);
+                    readAt.put(f.name(), at);
+                }
             }
             List<Bag.Signal> present = new ArrayList<>();
-            long now = System.currentTimeMillis();
             for (Frame f : byName.values()) {
                 signals.known(f); // to name the agent and sensor of a signal that goes
                 if (Signals.signal(f).isEmpty()) {
@@ -151,6 +171,7 @@ final class AgentBag {
                     }
                     continue;
                 }
+                long now = readAt.get(f.name());
                 values.flatMap(v -> Signals.present(f, v, now)).ifPresent(present::add);
             }
             return present;
@@ -248,8 +269,9 @@ final class AgentBag {
 
         /**
          * A signal there when the recording started, as an added line at t=0: its values as the server holds them,
-         * and as time to live what was left of it at {@code now} (epoch ms, this machine's clock against the
-         * server's {@code expires}), so that played it expires where it would have. Empty when it has no values list.
+         * and as time to live what was left of it at {@code now} (epoch ms on the server's clock, the clock of its
+         * {@code expires}: when the server read it), so that played it expires where it would have, whatever this
+         * machine's clock says. Empty when it has no values list.
          */
         static Optional<Bag.Signal> present(Frame f, Value values, long now) {
             if (!(values instanceof Value.Lst list)) {

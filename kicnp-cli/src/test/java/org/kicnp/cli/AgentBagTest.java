@@ -11,8 +11,10 @@ import java.io.StringWriter;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Clock;
 import java.time.Duration;
 import java.time.Instant;
+import java.time.InstantSource;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
@@ -53,6 +55,7 @@ class AgentBagTest {
     @TempDir Path dir;
     private KnowledgeBase kb;
     private GatewayServer server;
+    private AgentDirectory agents;
     private Path tokens;
 
     @BeforeEach
@@ -62,7 +65,7 @@ class AgentBagTest {
                 new Change.Add(Frame.classFrame("SensorSignal").build()),
                 new Change.Add(Frame.classFrame("Person").slot(Slot.builder("name", DataType.STRING).build()).build()),
                 new Change.Add(Frame.instance("ken", "Person").build())));
-        AgentDirectory agents = AgentDirectory.empty()
+        agents = AgentDirectory.empty()
                 .with("director", "director-secret", AgentKind.USER)
                 .with("listener", "listener-secret", AgentKind.USER)
                 .with("scout", "scout-secret", AgentKind.ROBOT);
@@ -232,6 +235,43 @@ class AgentBagTest {
         CliRun r2 = second.get(30, TimeUnit.SECONDS);
         assertThat(r2.exitCode()).as(r2.err()).isZero();
         assertThat(withoutTimes(lines(again))).containsExactlyElementsOf(expected);
+    }
+
+    /**
+     * The time to live left of a signal there at the start is reckoned on the server's clock, the clock of its
+     * {@code expires}, not on the recorder's: with the server's clock an hour behind this machine's (two machines whose
+     * clocks disagree), what was left of a minute is still under a minute — on this machine's clock it would have
+     * been long gone (1 ms) — while this machine's clock, moved another hour away, changes nothing.
+     */
+    @Test
+    void record_reckonsWhatIsLeftOfATimeToLiveOnTheServersClock_notOnThisMachines() throws Exception {
+        server.close();
+        server = GatewayServer.start(GatewayConfig.defaults().withPort(0)
+                .withClock(InstantSource.offset(Clock.systemUTC(), Duration.ofHours(-1))), agents, kb,
+                FeedbackListener.NONE);
+        AgentBag.wallClock = () -> System.currentTimeMillis() + Duration.ofHours(1).toMillis();
+        Path bag = dir.resolve("skewed.jsonl");
+        try (UserAgent scout = new UserAgent(AgentOptions.of("127.0.0.1", server.port(), "scout", AgentKind.ROBOT,
+                "scout-secret"))) {
+            scout.startAndAwait(Duration.ofSeconds(10));
+            scout.sensor("sonar", Duration.ofMinutes(1), Value.of(0.4));
+            awaitTrue(() -> kb.contains("signal_scout_sonar"));
+            CompletableFuture<CliRun> recording = recording(bag, 1);
+            scout.sensor("door", Duration.ofSeconds(20), Value.of("open"));
+            awaitTrue(() -> lines(bag).size() == 3);
+            CliRun r = recording.get(30, TimeUnit.SECONDS);
+            assertThat(r.exitCode()).as(r.err()).isZero();
+            assertThat(r.err()).doesNotContain("does not say its clock");
+        } finally {
+            AgentBag.wallClock = System::currentTimeMillis;
+        }
+
+        List<String> lines = lines(bag);
+        assertThat(JSON.readTree(lines.get(1)).get("sensor").asText()).isEqualTo("sonar");
+        assertThat(JSON.readTree(lines.get(1)).get("ttlMs").asLong()).as("what was left of its minute")
+                .isBetween(30_000L, 60_000L);
+        assertThat(JSON.readTree(lines.get(2)).get("ttlMs").asLong()).as("a signal heard: its own time to live")
+                .isEqualTo(20_000L);
     }
 
     @Test

@@ -10,6 +10,7 @@ import io.netty.handler.timeout.IdleState;
 import io.netty.handler.timeout.IdleStateEvent;
 import java.io.IOException;
 import java.time.Duration;
+import java.time.InstantSource;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
@@ -39,6 +40,8 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter implements Frame
     private final MessageCodec codec;
     private final long heartbeatNanos;
     private final int maxFrameBytes;
+    /** The wall clock of a heartbeat's time ({@link GatewayConfig#clock}). */
+    private final InstantSource clock;
     private Session session;
     private ScheduledFuture<?> heartbeats;
 
@@ -47,8 +50,9 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter implements Frame
      * @param maxFrameBytes the longest answer sent as it is (the server's frame limit)
      */
     GatewayHandler(ServerAgent server, GatewayMetrics metrics, MessageCodec codec, Duration heartbeatEvery,
-            int maxFrameBytes) {
+            int maxFrameBytes, InstantSource clock) {
         this.maxFrameBytes = maxFrameBytes;
+        this.clock = clock;
         this.server = server;
         this.metrics = metrics;
         this.codec = codec;
@@ -73,7 +77,7 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter implements Frame
 
     private void heartbeatIfQuiet() {
         if (System.nanoTime() - session.lastWriteNanos() >= heartbeatNanos) {
-            server.out().send(session, new Message.Heartbeat(System.currentTimeMillis()));
+            server.out().send(session, new Message.Heartbeat(clock.millis()));
         }
     }
 

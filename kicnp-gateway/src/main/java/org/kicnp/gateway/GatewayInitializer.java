@@ -44,7 +44,7 @@ final class GatewayInitializer extends ChannelInitializer<SocketChannel> {
         long timeout = config.heartbeatTimeout().toMillis();
         p.addLast("idle", new IdleStateHandler(timeout, 0, 0, TimeUnit.MILLISECONDS));
         GatewayHandler agent = new GatewayHandler(server, metrics, codec, Duration.ofMillis(Math.max(10, timeout / 3)),
-                config.maxFrameBytes());
+                config.maxFrameBytes(), config.clock());
         p.addLast("frames", new FrameDecoder(config.maxFrameBytes(), agent)); // the prefix stays in each frame
         p.addLast("decoder", new MessageDecoder(codec));
         p.addLast("encoder", new MessageEncoder(codec, config.maxFrameBytes()));

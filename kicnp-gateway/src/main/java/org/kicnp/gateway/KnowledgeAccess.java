@@ -1,5 +1,6 @@
 package org.kicnp.gateway;
 
+import java.time.InstantSource;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
@@ -40,13 +41,17 @@ final class KnowledgeAccess implements KnowledgeListener {
     private final Outbound out;
     private final Retraction retraction;
     private final Reasoning reasoning;
+    /** The wall clock of a {@code frames} answer's time ({@link GatewayConfig#clock}). */
+    private final InstantSource clock;
     private final Set<Session> subscribers = ConcurrentHashMap.newKeySet();
 
-    KnowledgeAccess(KnowledgeBase kb, Outbound out, Retraction retraction, Reasoning reasoning) {
+    KnowledgeAccess(KnowledgeBase kb, Outbound out, Retraction retraction, Reasoning reasoning,
+            InstantSource clock) {
         this.kb = kb;
         this.out = out;
         this.retraction = retraction;
         this.reasoning = reasoning;
+        this.clock = clock;
     }
 
     Message query(Message.Query q) {
@@ -57,8 +62,9 @@ final class KnowledgeAccess implements KnowledgeListener {
         if (c.get().isInstance()) {
             return notAClass(q.id(), q.ofClass(), "query");
         }
+        long now = clock.millis(); // the clock RuntimeFrames stamps a signal's time and expires with
         return new Message.Frames(q.id(), FrameText.toXml(kb.instancesOf(q.ofClass()).stream()
-                .map(this::selfDescribed).toList()));
+                .map(this::selfDescribed).toList()), Optional.of(now));
     }
 
     /** A slot's effective value; an empty answer means the slot has no value, a slot no frame declares is refused. */
@@ -317,7 +323,8 @@ final class KnowledgeAccess implements KnowledgeListener {
             return ErrorReply.to(p.id(), ErrorCode.REJECTED, "'" + p.root().get() + "' exists only at run time on "
                     + "this platform; pull sends durable frames (declared and learned), so it has none to send.");
         }
-        return new Message.Frames(p.id(), FrameText.toXml(Subtree.of(kb, p.root())));
+        long now = clock.millis();
+        return new Message.Frames(p.id(), FrameText.toXml(Subtree.of(kb, p.root())), Optional.of(now));
     }
 
     void connectionClosed(Session s) {

@@ -1,5 +1,6 @@
 package org.kicnp.gateway;
 
+import java.time.InstantSource;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -41,10 +42,13 @@ final class RuntimeFrames {
     private final Retraction retraction;
     private final Map<String, Set<String>> framesByAgent = new ConcurrentHashMap<>();
     private final Map<String, Expiry> expiries = new ConcurrentHashMap<>();
+    /** The wall clock of the times stamped on the frames ({@link GatewayConfig#clock}). */
+    private final InstantSource clock;
 
-    RuntimeFrames(KnowledgeBase kb, Retraction retraction) {
+    RuntimeFrames(KnowledgeBase kb, Retraction retraction, InstantSource clock) {
         this.kb = kb;
         this.retraction = retraction;
+        this.clock = clock;
     }
 
     static String presenceName(String agent) {
@@ -59,7 +63,7 @@ final class RuntimeFrames {
                 .slot(Slot.ofValue("kind", DataType.STRING, Value.of(kind.name().toLowerCase(Locale.ROOT))))
                 .slot(Slot.ofValue("capabilities", DataType.LIST,
                         new Value.Lst(capabilities.stream().map(Value::of).toList())))
-                .slot(Slot.ofValue("since", DataType.INTEGER, Value.of(System.currentTimeMillis())))
+                .slot(Slot.ofValue("since", DataType.INTEGER, Value.of(clock.millis())))
                 .build();
         put(agent, f);
     }
@@ -81,7 +85,7 @@ final class RuntimeFrames {
      */
     void signal(SensorSignal s, Later later) {
         ensureClass(SENSOR_SIGNAL);
-        long now = System.currentTimeMillis();
+        long now = clock.millis();
         String name = "signal_" + s.source() + "_" + s.sensor();
         refuseOthers(name, s.source());
         Frame.Builder b = Frame.instance(name, SENSOR_SIGNAL)

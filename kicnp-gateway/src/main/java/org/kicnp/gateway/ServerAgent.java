@@ -55,8 +55,8 @@ final class ServerAgent {
                               GatewayMetrics metrics) {
         AgentRegistry registry = new AgentRegistry();
         Outbound out = new Outbound(metrics, config.maxShedBeforeDrop());
-        RuntimeFrames runtime = new RuntimeFrames(kb, retraction);
-        KnowledgeAccess knowledge = new KnowledgeAccess(kb, out, retraction, reasoning);
+        RuntimeFrames runtime = new RuntimeFrames(kb, retraction, config.clock());
+        KnowledgeAccess knowledge = new KnowledgeAccess(kb, out, retraction, reasoning, config.clock());
         Commands commands = new Commands(registry, out, runtime, feedback);
         return new ServerAgent(config.serverName(), directory, registry, kb, runtime, out, commands, knowledge);
     }

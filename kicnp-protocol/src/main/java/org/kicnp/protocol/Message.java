@@ -221,11 +221,16 @@ public sealed interface Message {
         }
     }
 
-    /** Frames as XML text: the answer to {@link Query} and {@link Pull}. */
-    record Frames(String id, List<String> frames) implements Message {
+    /**
+     * Frames as XML text: the answer to {@link Query} and {@link Pull}. {@code time} is the server's clock (epoch
+     * milliseconds) when it read them, the clock its frames' times ({@code time}, {@code expires}, {@code since}) are
+     * on, so an agent whose own clock differs can tell what was left of a time to live; empty from servers before it.
+     */
+    record Frames(String id, List<String> frames, Optional<Long> time) implements Message {
         public Frames {
             requireNonNull(id, "id");
             frames = List.copyOf(frames);
+            requireNonNull(time, "time");
         }
     }
 

@@ -30,7 +30,7 @@ final class Samples {
                         Value.of("near"), Value.ref("user1"), new Value.Lst(List.of(Value.of(1L))))),
                 new Message.SensorSignal("robovie", "face_seen", List.of(Value.of("Ken")), Optional.of(1500L)),
                 new Message.Query("5", "Robot"),
-                new Message.Frames("5", List.of(FRAME)),
+                new Message.Frames("5", List.of(FRAME), Optional.of(1_780_000_000_000L)),
                 new Message.Ask("6", "scout", "speed"),
                 new Message.Answer("6", Optional.of(Value.of(2L))),
                 new Message.Answer("6", Optional.empty()),
