@@ -426,8 +426,19 @@ final class AgentBag {
                     + ") as " + String.join(", ", connected.keySet()) + (rate == 1 ? "" : " at " + rate + "x") + ".");
             err.flush();
             long start = System.nanoTime();
+            Unconfirmed unconfirmed = null;
             for (int round = 0; round < loops; round++) {
                 for (Bag.Numbered n : bag.lines()) {
+                    CliAgent through = switch (n.line()) {
+                        case Bag.Signal s -> connected.get(oneAgent ? agent.as : s.agent());
+                        case Bag.Removal r -> connected.get(oneAgent ? agent.as : r.agent());
+                        case Bag.FrameChange f -> null;
+                        case Bag.Header h -> null;
+                    };
+                    if (unconfirmed != null && through != null && through != unconfirmed.agent()) {
+                        unconfirmed.await(); // before waiting for this line's time, so the round trip overlaps it
+                        unconfirmed = null;
+                    }
                     long due = Math.round((round * span + Bag.time(n.line())) * 1e6 / rate);
                     long left;
                     while ((left = due - (System.nanoTime() - start)) > 0) {
@@ -441,18 +452,18 @@ final class AgentBag {
                     }
                     switch (n.line()) {
                         case Bag.Signal s -> {
-                            CliAgent a = connected.get(oneAgent ? agent.as : s.agent());
                             Value[] values = s.values().toArray(Value[]::new);
                             if (s.ttlMs().isPresent()) {
-                                a.sensor(s.sensor(), Duration.ofMillis(scaled(s.ttlMs().get())), values);
+                                through.sensor(s.sensor(), Duration.ofMillis(scaled(s.ttlMs().get())), values);
                             } else {
-                                a.sensor(s.sensor(), values);
+                                through.sensor(s.sensor(), values);
                             }
+                            unconfirmed = new Unconfirmed(through, s.sensor());
                             signals++;
                         }
                         case Bag.Removal r -> {
-                            CliAgent a = connected.get(oneAgent ? agent.as : r.agent());
-                            withdraw(a, r.sensor());
+                            withdraw(through, r.sensor()); // a request: answered once the server has done it
+                            unconfirmed = null;
                             removals++;
                         }
                         case Bag.FrameChange f -> frames++;
@@ -469,6 +480,25 @@ final class AgentBag {
                     + (frames == 0 ? "" : "; " + frames + " frame line" + (frames == 1 ? "" : "s") + " not sent")
                     + ".");
             return 0;
+        }
+
+        /**
+         * The last signal sent, which the server has not been seen to take yet. A signal is sent without an answer, and
+         * each agent sends on a connection of its own, which the server may read on another of its threads: a line of
+         * another agent sent right after it (two lines of one millisecond) could be taken first. So before such a
+         * line, play asks the server, on the signal's own connection, for the time of the signal it keeps; the server
+         * answers a connection's messages in order, so the answer comes once the signal is taken.
+         */
+        private record Unconfirmed(CliAgent agent, String sensor) {
+            void await() {
+                try {
+                    agent.ask("signal_" + agent.name() + "_" + sensor, "time");
+                } catch (RequestRefusedException e) {
+                    if (e.code() != ErrorCode.UNKNOWN_FRAME) { // taken, and gone again by its time to live
+                        throw e;
+                    }
+                }
+            }
         }
 
         /**

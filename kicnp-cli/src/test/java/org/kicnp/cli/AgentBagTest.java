@@ -32,6 +32,7 @@ import org.kicnp.cli.platform.PlatformConfig;
 import org.kicnp.core.Change;
 import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
+import org.kicnp.core.FrameEvent;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Provenance;
 import org.kicnp.core.Slot;
@@ -391,6 +392,33 @@ class AgentBagTest {
                 + "\\(2 rounds\\)\\.\\R");
         awaitTrue(() -> revisions.size() >= 5); // 4 puts, then the retraction when play disconnected
         assertThat((revisions.get(1) - revisions.get(0)) / 1e9).as("2 s at 4x").isBetween(0.3, 1.5);
+    }
+
+    /**
+     * Lines of two agents recorded in one millisecond reach the server in their recorded order, though each agent
+     * sends on a connection of its own (which the server reads on either of its I/O threads): before a line goes
+     * through another agent than the last signal's, play waits until the server has taken that signal.
+     */
+    @Test
+    void play_keepsTheRecordedOrder_acrossAgents_evenWithinOneMillisecond() throws Exception {
+        int count = 80;
+        List<String> lines = new ArrayList<>(List.of(HEADER));
+        for (int i = 0; i < count; i++) {
+            lines.add("{\"t\":0,\"event\":\"added\",\"agent\":\"" + (i % 2 == 0 ? "director" : "scout")
+                    + "\",\"sensor\":\"tick\",\"values\":[" + i + "]}");
+        }
+        Path bag = Files.write(dir.resolve("burst.jsonl"), lines);
+        List<Long> heard = new java.util.concurrent.CopyOnWriteArrayList<>();
+        kb.addListener(changes -> changes.events().stream()
+                .filter(e -> e.name().startsWith("signal_") && !(e instanceof FrameEvent.Removed))
+                .forEach(e -> heard.add(
+                        ((Value.Int) e.frame().ownSlot("value").orElseThrow().value().orElseThrow()).value())));
+
+        CliRun r = agent("play", bag.toString());
+
+        assertThat(r.exitCode()).as(r.err()).isZero();
+        assertThat(heard).as("the order the server took them in")
+                .containsExactlyElementsOf(java.util.stream.LongStream.range(0, count).boxed().toList());
     }
 
     @Test
