@@ -5,10 +5,15 @@ import static org.assertj.core.api.Assertions.assertThat;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.io.UncheckedIOException;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Clock;
@@ -42,6 +47,9 @@ import org.kicnp.gateway.FeedbackListener;
 import org.kicnp.gateway.GatewayConfig;
 import org.kicnp.gateway.GatewayServer;
 import org.kicnp.protocol.AgentKind;
+import org.kicnp.protocol.Framing;
+import org.kicnp.protocol.Message;
+import org.kicnp.protocol.MessageCodec;
 
 /**
  * {@code kicnp agent record} and {@code play} against a real gateway on loopback: what the recording holds, line by
@@ -392,6 +400,46 @@ class AgentBagTest {
                 + "\\(2 rounds\\)\\.\\R");
         awaitTrue(() -> revisions.size() >= 5); // 4 puts, then the retraction when play disconnected
         assertThat((revisions.get(1) - revisions.get(0)) / 1e9).as("2 s at 4x").isBetween(0.3, 1.5);
+    }
+
+    /**
+     * From a server that does not say its clock in its answer to a query (one from before 'frames' had 'time'), the
+     * recorder falls back on this machine's clock and says so. The server here is a socket speaking the protocol.
+     */
+    @Test
+    void record_fromAServerThatDoesNotSayItsClock_saysSo_andRecordsAsBefore() throws Exception {
+        MessageCodec codec = new MessageCodec();
+        try (ServerSocket old = new ServerSocket(0, 5, InetAddress.getLoopbackAddress())) {
+            Thread.ofVirtual().start(() -> {
+                try (Socket s = old.accept()) {
+                    DataInputStream in = new DataInputStream(s.getInputStream());
+                    DataOutputStream out = new DataOutputStream(s.getOutputStream());
+                    while (true) {
+                        Message m = codec.decode(Framing.read(in, 1 << 20));
+                        Message answer = switch (m) {
+                            case Message.Hello h -> new Message.AuthResult(h.id(), true, "old", Optional.empty());
+                            case Message.Query q -> new Message.Frames(q.id(), List.of(), Optional.empty());
+                            case Message.Request r -> new Message.Ack(r.id());
+                            default -> null;
+                        };
+                        if (answer != null) {
+                            Framing.write(out, codec.encode(answer));
+                        }
+                    }
+                } catch (Exception ignored) {
+                    // the recorder has gone
+                }
+            });
+            Path bag = dir.resolve("old.jsonl");
+            CliRun r = agent(old.getLocalPort(), tokens, "--as", "listener", "record", "--out", bag.toString(),
+                    "--for", "1");
+
+            assertThat(r.exitCode()).as(r.err()).isZero();
+            assertThat(r.err()).contains("The server does not say its clock (it predates 'frames' with 'time'): the "
+                    + "times to live of the signals there at the start are reckoned on this machine's clock.")
+                    .contains("Recorded 0 lines to " + bag + ".");
+            assertThat(lines(bag)).hasSize(1); // the header
+        }
     }
 
     /**
