@@ -2,12 +2,15 @@ package org.kicnp.inference;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.lang.ref.WeakReference;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.kicnp.core.Change;
 import org.kicnp.core.DataType;
 import org.kicnp.core.Frame;
+import org.kicnp.core.KnowledgeBase;
+import org.kicnp.core.Provenance;
 import org.kicnp.core.Slot;
 import org.kicnp.core.Value;
 
@@ -174,6 +177,30 @@ class HotEditTest {
         f.kb.replace(f.kb.require("Taro").toBuilder().parent("KnownUser").build());
         e.runToQuiescence();
         assertThat(f.instancesOf("Greeting")).hasSize(1);
+    }
+
+    /**
+     * A behavior frame removed with its instances is let go by the engine once the run is over: nothing it keeps
+     * between runs (the rules of the last firings, which the firing limit's message names) holds its rule, which
+     * holds the frame.
+     */
+    @Test
+    void removingABehaviorFrame_theEngineKeepsNothingOfItAfterTheRun() {
+        KnowledgeBase kb = KnowledgeBase.create();
+        kb.add(Frame.classFrame("User").build());
+        kb.add(Frame.classFrame("Serve").slot(Fixture.inst("mUser", "User")).build());
+        kb.add(Frame.instance("u1", "User").provenance(Provenance.RUNTIME).build());
+        try (InferenceEngine e = InferenceEngine.builder(kb).build()) {
+            assertThat(e.runToQuiescence()).isEqualTo(1);
+            WeakReference<Frame> serve = new WeakReference<>(kb.frame("Serve").orElseThrow());
+            kb.apply(List.of(new Change.Remove(kb.instancesOf("Serve").getFirst().name()), new Change.Remove("Serve")));
+            e.runToQuiescence();
+
+            for (int i = 0; i < 20 && serve.get() != null; i++) {
+                System.gc();
+            }
+            assertThat(serve.get()).as("the removed behavior frame, once collected").isNull();
+        }
     }
 
     @Test
