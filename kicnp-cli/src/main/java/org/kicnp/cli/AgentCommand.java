@@ -60,7 +60,7 @@ import picocli.CommandLine.Spec;
             AgentCommand.Send.class,
             AgentSensor.Sensor.class,
             AgentBag.Record.class,
-            AgentBag.Play.class,
+            AgentPlay.class,
             AgentActions.Order.class,
             AgentActions.Cancel.class,
         },

@@ -1,6 +1,5 @@
 package org.kicnp.inference;
 
-import java.util.Arrays;
 import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -51,11 +50,6 @@ final class RunLoop {
      */
     private final Rule[] recent = new Rule[RECENT];
     private static final int RECENT = 4096;
-    /**
-     * How many slots of {@link #recent} the runs under way have written (from the first): emptied when the outermost
-     * run ends, so that a rule removed since is not kept between runs. Under {@link #lock} only.
-     */
-    private int recentUsed;
 
     RunLoop(ReentrantLock lock, EngineOptions options, ForwardChainer forward, ActionCoordinator actions, Burst burst,
             Consumer<TraceEvent> tracer, Optional<Executor> runner) {
@@ -73,8 +67,8 @@ final class RunLoop {
         lock.lock();
         boolean outer = !running;
         running = true;
-        int count = 0;
         try {
+            int count = 0;
             // Firings since the run last took in a change from outside it: what the limit counts. A runaway knowledge
             // base feeds itself; a stream of stimuli that each cause a few firings (a self-running engine whose next
             // stimulus lands while it fires, run after run) is not one, however long the run lasts.
@@ -110,10 +104,12 @@ final class RunLoop {
             }
         } finally {
             burst.release();
-            recentUsed = Math.max(recentUsed, Math.min(count, RECENT));
             if (outer) {
-                Arrays.fill(recent, 0, recentUsed, null);
-                recentUsed = 0;
+                // Every run writes the ring from its first slot on, and this empties it, so what the runs wrote is the
+                // slots before the first empty one: let go, so that a rule removed since is not kept between runs.
+                for (int i = 0; i < RECENT && recent[i] != null; i++) {
+                    recent[i] = null;
+                }
                 running = false;
                 if (own != null) { // a run that ended by an exception: the change set waits in the queue as any other
                     ChangeSet cs = own;
