@@ -77,8 +77,9 @@ final class AgentQuestions {
     @Command(name = "prove", mixinStandardHelpOptions = true,
             description = "Backward chaining on the server: every instance of the class that exists or could be "
                     + "derived from what exists (slots fixed by SLOT=INSTANCE), each with its proof, as one JSON "
-                    + "array: {ofClass, instance (when it exists), slots: {slot: proof}, assumptions}. Nothing is "
-                    + "created and no script runs.")
+                    + "array: {ofClass, instance (when it exists), slots: {slot: proof}, assumptions (the script "
+                    + "conditions of a binding that holds an instance still to be derived; those of existing "
+                    + "instances are run)}. Nothing is created.")
     static final class Prove extends Subcommand {
 
         @Parameters(index = "0", paramLabel = "CLASS", description = "The class.")

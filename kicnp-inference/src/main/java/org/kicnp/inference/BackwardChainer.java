@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import java.util.function.BiFunction;
 import java.util.function.Supplier;
 import org.kicnp.core.Condition;
 import org.kicnp.core.Frame;
@@ -17,8 +18,11 @@ import org.kicnp.core.Value;
 /**
  * Backward chaining: to find the instances of a class, take those that exist, then for every behavior frame at or
  * below the class find, slot by slot, instances that exist or could themselves be derived, and keep the combinations
- * whose declarative conditions hold. Read-only: nothing is created, no script runs. Bounded in depth and answers;
- * a frame is not used again inside its own proof.
+ * whose conditions hold. A script condition is decided by running it when every instance of the binding exists (as
+ * forward chaining runs it when it matches the binding: side-effect free, it is given {@code s} only) and assumed when
+ * the binding holds a hypothetical instance, whose slots are not known before its {@code onInstantiate} would run.
+ * Read-only: nothing is created, no action or {@code onInstantiate} runs. Bounded in depth and answers; a frame is
+ * not used again inside its own proof.
  */
 final class BackwardChainer {
     private static final String HYPO = "?";
@@ -26,13 +30,17 @@ final class BackwardChainer {
     private final EngineOptions options;
     private final Supports supports;
     private final Supplier<List<Rule>> rules;
+    /** Why a script condition of a binding of real instances is false or fails, if one is ({@link ScriptCalls}). */
+    private final BiFunction<Rule, Map<String, String>, Optional<String>> scriptFails;
     private long hypotheses;
 
-    BackwardChainer(KnowledgeBase kb, EngineOptions options, Supports supports, Supplier<List<Rule>> rules) {
+    BackwardChainer(KnowledgeBase kb, EngineOptions options, Supports supports, Supplier<List<Rule>> rules,
+                    BiFunction<Rule, Map<String, String>, Optional<String>> scriptFails) {
         this.kb = kb;
         this.options = options;
         this.supports = supports;
         this.rules = rules;
+        this.scriptFails = scriptFails;
     }
 
     List<Answer> ask(String className, Map<String, Value> partial) {
@@ -136,13 +144,19 @@ final class BackwardChainer {
             if (new HashSet<>(binding.values()).size() < binding.size() || blocked(r, binding)) {
                 return;
             }
+            boolean real = binding.values().stream().noneMatch(n -> n.startsWith(HYPO));
             List<String> assumptions = new ArrayList<>();
             for (SlotPattern p : r.required()) {
                 if (p.condition() instanceof Condition.Script s) {
-                    assumptions.add(p.slot() + ": " + s.text());
+                    if (!real) {
+                        assumptions.add(p.slot() + ": " + s.text());
+                    }
                 } else if (!conds.holds(p.condition(), Value.ref(binding.get(p.slot())), r.frame(), binding)) {
                     return;
                 }
+            }
+            if (real && r.scripted() && scriptFails.apply(r, binding).isPresent()) {
+                return;
             }
             out.add(new Proof.Derivable(r.frame(), chosen, assumptions));
             return;

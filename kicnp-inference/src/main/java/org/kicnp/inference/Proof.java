@@ -13,8 +13,10 @@ public sealed interface Proof {
     record Exists(String instance, String className) implements Proof { }
 
     /**
-     * An instance {@code frame} would create, with a proof for each required slot. Script conditions are not run by
-     * backward chaining; those the proof relies on are listed as {@code assumptions} ("slot: js: ...").
+     * An instance {@code frame} would create, with a proof for each required slot. A script condition is run when
+     * every instance of the binding exists (a binding it rejects is no proof); one whose binding holds an instance that
+     * would itself be derived cannot be run before that instance exists, and is listed as an {@code assumption}
+     * ("slot: js: ...").
      */
     record Derivable(String frame, Map<String, Proof> slots, List<String> assumptions) implements Proof {
         public Derivable {

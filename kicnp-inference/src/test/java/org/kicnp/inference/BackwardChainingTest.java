@@ -132,6 +132,69 @@ class BackwardChainingTest {
     }
 
     @Test
+    void ask_runsTheScriptConditionOfABindingOfExistingInstances_andGivesNoAnswerItRejects() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("User").slot(Slot.builder("age", DataType.INTEGER).build()).build());
+        f.kb.add(Frame.classFrame("Greet").slot(Fixture.inst("mUser", "User", "js: adult")).build());
+        f.scripts.define("adult", g -> ((Number) ((Map<?, ?>) Fixture.view(g).get("mUser")).get("age")).longValue() >= 18);
+        f.assertFact("ann", "User", "age", 20L);
+        f.assertFact("bob", "User", "age", 12L);
+        InferenceEngine e = f.engine(); // matched (ann's binding waits on the agenda), not run
+        long version = f.kb.version();
+        int matched = f.scripts.calls("adult");
+
+        List<Answer> answers = e.ask("Greet", Map.of());
+
+        assertThat(answers).as("bob's binding is one forward chaining refuses: its script condition is false")
+                .singleElement().satisfies(a -> {
+                    assertThat(a.slots()).containsEntry("mUser", "ann");
+                    assertThat(((Proof.Derivable) a.proof()).assumptions()).as("decided, not assumed").isEmpty();
+                });
+        assertThat(f.scripts.calls("adult") - matched).as("run once per binding by ask").isEqualTo(2);
+        assertThat(e.ask("Greet", Map.of("mUser", Value.ref("bob")))).isEmpty();
+        assertThat(f.kb.version()).isEqualTo(version);
+        assertThat(e.runToQuiescence()).as("what forward chaining then does").isEqualTo(1);
+        assertThat(f.instancesOf("Greet")).singleElement()
+                .satisfies(g -> assertThat(f.kb.value(g, "mUser")).contains(Value.ref("ann")));
+    }
+
+    @Test
+    void ask_assumesTheScriptConditionOfABindingWithAHypotheticalInstance_withoutRunningIt() {
+        Fixture f = ForwardChainingTest.chain3();
+        f.kb.add(Frame.classFrame("Late").slot(Fixture.inst("mStep", "Step1", "js: never")).build());
+        f.scripts.define("never", g -> false);
+        f.assertFact("s1", "Stimulus");
+        InferenceEngine e = f.engine();
+
+        List<Answer> answers = e.ask("Late", Map.of());
+
+        assertThat(answers).as("Step1 is not made yet: what its instance will hold is not known before it fires")
+                .singleElement().satisfies(a -> assertThat(((Proof.Derivable) a.proof()).assumptions())
+                        .containsExactly("mStep: js: never"));
+        assertThat(f.scripts.calls("never")).isZero();
+        e.runToQuiescence();
+        assertThat(f.scripts.calls("never")).as("forward chaining runs it once Step1 exists").isEqualTo(1);
+        assertThat(e.ask("Late", Map.of())).as("now the binding is of existing instances, and the script says no")
+                .isEmpty();
+    }
+
+    @Test
+    void ask_aScriptConditionThatThrows_rejectsTheBinding_asForwardChainingDoes() {
+        Fixture f = new Fixture();
+        f.cls("User", null);
+        f.kb.add(Frame.classFrame("Greet").slot(Fixture.inst("mUser", "User", "js: broken")).build());
+        f.scripts.define("broken", g -> {
+            throw new IllegalStateException("s.mUser.profile is undefined");
+        });
+        f.assertFact("ann", "User");
+        InferenceEngine e = f.engine();
+
+        assertThat(e.ask("Greet", Map.of())).isEmpty();
+        assertThat(f.traced(TraceEvent.ScriptFailed.class)).isNotEmpty()
+                .allSatisfy(t -> assertThat(t.message()).contains("s.mUser.profile is undefined"));
+    }
+
+    @Test
     void ask_fromScript_returnsAnswersAsPlainMaps() {
         Fixture f = ForwardChainingTest.chain3();
         f.kb.add(Frame.classFrame("Probe").slot(Fixture.inst("mIn", "Step1"))

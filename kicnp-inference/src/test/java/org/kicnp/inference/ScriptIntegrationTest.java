@@ -162,6 +162,31 @@ class ScriptIntegrationTest {
     }
 
     @Test
+    void ask_runsTheScriptConditionOfABindingOfExistingInstances_fromJavaAndFromAScriptRunningInTheEngine() {
+        KnowledgeBase kb = small("log('talking to', s.mUser.name)", "js: s.mUser.age > 3");
+        kb.add(Frame.classFrame("Trigger").build());
+        kb.add(Frame.classFrame("Probe").slot(Slot.builder("mT", DataType.INSTANCE).argument("Trigger").required(true)
+                .build()).slot(Slot.ofValue("onInstantiate", DataType.STRING, Value.of(
+                        "sendmsg('m1', ask('Talk', {}).map(a => a.slots.mUser).join(','))"))).build());
+        InferenceEngine e = engine(kb);
+        fact(kb, "baby", "User", Slot.ofValue("age", DataType.INTEGER, Value.of(2)));
+        fact(kb, "kid", "User", Slot.ofValue("age", DataType.INTEGER, Value.of(7)));
+
+        assertThat(e.ask("Talk", Map.of())).as("baby is too young: the condition's script says so").singleElement()
+                .satisfies(a -> {
+                    assertThat(a.slots()).containsEntry("mUser", "kid");
+                    assertThat(((Proof.Derivable) a.proof()).assumptions()).isEmpty();
+                });
+
+        fact(kb, "t1", "Trigger");
+        e.runToQuiescence();
+        // Whether Talk fired before Probe or after, kid answers (derivable, or made) and baby does not.
+        assertThat(sent).filteredOn(a -> a.name().equals("say")).singleElement()
+                .satisfies(a -> assertThat(a.args()).containsExactly("kid"));
+        assertThat(trace).noneMatch(t -> t instanceof TraceEvent.ScriptFailed);
+    }
+
+    @Test
     void scriptApi_createLearnCommandAndLog_takeEffectAfterTheScriptSucceeds() {
         KnowledgeBase kb = small("""
                 log('registering', s.mUser.name);

@@ -323,7 +323,7 @@ public sealed interface Message {
     /**
      * Backward chaining: every instance of {@code ofClass} (or a class below it) that exists, or that behavior frames
      * could derive from what exists, whose instance slots hold the instances {@code bindings} names (slot → instance).
-     * Nothing is created and no script runs on the server.
+     * Nothing is created; a script condition runs on a binding of instances that exist (it cannot change anything).
      */
     record Prove(String id, String ofClass, Map<String, String> bindings) implements Request {
         public Prove {
@@ -344,7 +344,8 @@ public sealed interface Message {
     /**
      * One step of a proof: an instance that exists ({@code instance} present), or an instance the behavior frame
      * {@code ofClass} could create, with a proof for each of its required slots and the script conditions the proof
-     * assumes (backward chaining runs no script).
+     * assumes: those of a binding that holds an instance still to be derived (a binding of existing instances has its
+     * script conditions run).
      */
     record ProofNode(String ofClass, Optional<String> instance, Map<String, ProofNode> slots, List<String> assumptions) {
         public ProofNode {
