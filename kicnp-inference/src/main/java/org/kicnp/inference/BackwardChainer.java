@@ -1,5 +1,6 @@
 package org.kicnp.inference;
 
+import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -8,6 +9,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import java.util.TreeMap;
 import java.util.function.BiFunction;
 import java.util.function.Supplier;
 import org.kicnp.core.Condition;
@@ -32,7 +34,6 @@ final class BackwardChainer {
     private final Supplier<List<Rule>> rules;
     /** Why a script condition of a binding of real instances is false or fails, if one is ({@link ScriptCalls}). */
     private final BiFunction<Rule, Map<String, String>, Optional<String>> scriptFails;
-    private long hypotheses;
 
     BackwardChainer(KnowledgeBase kb, EngineOptions options, Supports supports, Supplier<List<Rule>> rules,
                     BiFunction<Rule, Map<String, String>, Optional<String>> scriptFails) {
@@ -141,7 +142,8 @@ final class BackwardChainer {
         if (k == options.size()) {
             Map<String, String> binding = new LinkedHashMap<>();
             chosen.forEach((s, p) -> binding.put(s, name(p, hypo)));
-            if (new HashSet<>(binding.values()).size() < binding.size() || blocked(r, binding)) {
+            if (new HashSet<>(binding.values()).size() < binding.size() || blocked(r, binding)
+                    || claimsClash(r, binding, hypo)) {
                 return;
             }
             boolean real = binding.values().stream().noneMatch(n -> n.startsWith(HYPO));
@@ -168,19 +170,80 @@ final class BackwardChainer {
         }
     }
 
-    /** The name a proof's instance goes by while conditions are tested: real, or a made-up hypothetical one. */
+    /**
+     * The name a proof's instance goes by while conditions are tested: real, or a hypothetical one made of its frame
+     * and binding, so that two proofs of the same frame with the same binding name one instance, as forward chaining
+     * makes one (a binding fires once) — and a binding that would need it twice is seen holding one instance twice.
+     */
     private String name(Proof p, Map<String, Map<String, Value>> hypo) {
         return switch (p) {
             case Proof.Exists e -> e.instance();
             case Proof.Derivable d -> {
-                String n = HYPO + d.frame() + "#" + (++hypotheses);
-                Map<String, Value> slots = new HashMap<>();
+                Map<String, Value> slots = new TreeMap<>();
                 d.slots().forEach((s, sub) -> slots.put(s, Value.ref(name(sub, hypo))));
-                hypo.put(n, slots);
-                hypo.put(n + "/class", Map.of("class", Value.of(d.frame())));
-                yield n;
+                StringBuilder n = new StringBuilder(HYPO).append(d.frame()).append('(');
+                slots.forEach((s, v) -> n.append(s).append('=').append(((Value.Ref) v).frame()).append(';'));
+                String name = n.append(')').toString();
+                hypo.putIfAbsent(name, slots);
+                hypo.putIfAbsent(name + "/class", Map.of("class", Value.of(d.frame())));
+                yield name;
             }
         };
+    }
+
+    /**
+     * Whether two different instances of one proof — the one {@code r} would make with {@code binding}, and the
+     * hypothetical ones below it — would claim the same thing, which forward chaining lets only one of them do: the
+     * same instance in an unshared slot of the same frame, or the same unique key of the same frame. (Claims of the
+     * instances that exist are checked against what live instances hold, by {@link #blocked}.)
+     */
+    private boolean claimsClash(Rule r, Map<String, String> binding, Map<String, Map<String, Value>> hypo) {
+        Map<String, String> owners = new HashMap<>();
+        if (!claim(r, binding, "", owners)) {
+            return true;
+        }
+        ArrayDeque<String> todo = new ArrayDeque<>(binding.values());
+        Set<String> seen = new HashSet<>();
+        while (!todo.isEmpty()) {
+            String n = todo.pop();
+            if (!n.startsWith(HYPO) || !seen.add(n)) {
+                continue;
+            }
+            Map<String, String> its = new LinkedHashMap<>();
+            hypo.get(n).forEach((slot, v) -> its.put(slot, ((Value.Ref) v).frame()));
+            String frame = hypo.get(n + "/class").get("class").text();
+            Optional<Rule> rule = rules.get().stream().filter(x -> x.frame().equals(frame)).findFirst();
+            if (rule.isPresent() && !claim(rule.get(), its, n, owners)) {
+                return true;
+            }
+            todo.addAll(its.values());
+        }
+        return false;
+    }
+
+    /** Records what instance {@code id} of rule {@code r} would claim; false when another instance claims it. */
+    private static boolean claim(Rule r, Map<String, String> binding, String id, Map<String, String> owners) {
+        if (!r.claims()) {
+            return true;
+        }
+        List<String> keys = new ArrayList<>();
+        for (SlotPattern p : r.required()) {
+            if (!p.shared()) {
+                keys.add("c\u0000" + r.frame() + '\u0000' + p.slot() + '\u0000' + binding.get(p.slot()));
+            }
+        }
+        if (!r.uniqueSlots().isEmpty()) {
+            StringBuilder k = new StringBuilder("u\u0000").append(r.frame());
+            r.uniqueSlots().forEach(s -> k.append('\u0000').append(binding.getOrDefault(s, "")));
+            keys.add(k.toString());
+        }
+        for (String k : keys) {
+            String owner = owners.putIfAbsent(k, id);
+            if (owner != null && !owner.equals(id)) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private Optional<Value> read(Map<String, Map<String, Value>> hypo, String frame, String slot) {
@@ -200,8 +263,8 @@ final class BackwardChainer {
 
     /**
      * Whether forward chaining would refuse the binding: it fired already (refraction), an unshared slot's instance
-     * or an optional unique slot's instance is claimed, or the frame's unique key is taken by a live instance. Only
-     * real instances claim anything: a hypothetical one is free.
+     * or an optional unique slot's instance is claimed, or the frame's unique key is taken by a live instance. What
+     * the hypothetical instances of the same proof would claim is {@link #claimsClash}'s.
      */
     private boolean blocked(Rule r, Map<String, String> binding) {
         String[] facts = Activation.factsOf(r, binding);

@@ -195,6 +195,62 @@ class BackwardChainingTest {
     }
 
     @Test
+    void ask_aBindingThatNeedsOneDerivableInstanceTwice_isNoAnswer_asForwardChainingMakesItOnce() {
+        Fixture f = ForwardChainingTest.chain3();
+        f.kb.add(Frame.classFrame("Pair").slot(Fixture.inst("mA", "Step1")).slot(Fixture.inst("mB", "Step1")).build());
+        f.assertFact("s1", "Stimulus");
+        InferenceEngine e = f.engine();
+
+        assertThat(e.ask("Pair", Map.of())).as("s1 gives one Step1 (one binding fires once), and a pair needs two")
+                .isEmpty();
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Pair")).isEmpty();
+
+        f.assertFact("s2", "Stimulus");
+        assertThat(e.ask("Pair", Map.of()).stream().filter(Answer::derivable)).as("Step1 of s2 and of s1, both ways")
+                .hasSize(2);
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Pair")).hasSize(2);
+    }
+
+    @Test
+    void ask_twoDerivableInstancesThatWouldClaimTheSameInstance_areNotBothInOneAnswer() {
+        Fixture f = new Fixture();
+        f.cls("Tool", null).cls("Job", null);
+        f.kb.add(Frame.classFrame("Use").slot(Slot.builder("mTool", DataType.INSTANCE).argument("Tool").required(true)
+                .shared(false).build()).slot(Fixture.inst("mJob", "Job")).build());
+        f.kb.add(Frame.classFrame("TwoUses").slot(Fixture.inst("mA", "Use")).slot(Fixture.inst("mB", "Use")).build());
+        f.assertFact("t1", "Tool");
+        f.assertFact("j1", "Job");
+        f.assertFact("j2", "Job");
+        InferenceEngine e = f.engine();
+
+        assertThat(e.ask("Use", Map.of())).as("each on its own could be made").hasSize(2);
+        assertThat(e.ask("TwoUses", Map.of())).as("the unshared slot takes t1 for one Use only").isEmpty();
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Use")).hasSize(1);
+        assertThat(f.instancesOf("TwoUses")).isEmpty();
+    }
+
+    @Test
+    void ask_twoDerivableInstancesWithTheSameUniqueKey_areNotBothInOneAnswer() {
+        Fixture f = new Fixture();
+        f.cls("User", null).cls("Mouth", null);
+        f.kb.add(Frame.classFrame("Greet").slot(Fixture.inst("mUser", "User")).slot(Slot.builder("mMouth",
+                DataType.INSTANCE).argument("Mouth").required(true).build()).build());
+        f.kb.add(Frame.classFrame("Twice").slot(Fixture.inst("mA", "Greet")).slot(Fixture.inst("mB", "Greet")).build());
+        f.assertFact("u1", "User");
+        f.assertFact("m1", "Mouth");
+        f.assertFact("m2", "Mouth");
+        InferenceEngine e = f.engine();
+
+        assertThat(e.ask("Twice", Map.of())).as("u1 is the unique key of one Greet only").isEmpty();
+        e.runToQuiescence();
+        assertThat(f.instancesOf("Greet")).hasSize(1);
+        assertThat(f.instancesOf("Twice")).isEmpty();
+    }
+
+    @Test
     void ask_fromScript_returnsAnswersAsPlainMaps() {
         Fixture f = ForwardChainingTest.chain3();
         f.kb.add(Frame.classFrame("Probe").slot(Fixture.inst("mIn", "Step1"))
