@@ -21,8 +21,9 @@ import org.kicnp.core.Value;
  * Backward chaining: to find the instances of a class, take those that exist, then for every behavior frame at or
  * below the class find, slot by slot, instances that exist or could themselves be derived, and keep the combinations
  * whose conditions hold. A script condition is decided by running it when every instance of the binding exists (as
- * forward chaining runs it when it matches the binding: side-effect free, it is given {@code s} only) and assumed when
- * the binding holds a hypothetical instance, whose slots are not known before its {@code onInstantiate} would run.
+ * forward chaining runs it when it matches the binding: side-effect free, it is given {@code s} only; for at most
+ * {@code maxAnswers} bindings per question) and assumed when the binding holds a hypothetical instance, whose slots
+ * are not known before its {@code onInstantiate} would run.
  * Read-only: nothing is created, no action or {@code onInstantiate} runs. Bounded in depth and answers; a frame is
  * not used again inside its own proof.
  */
@@ -34,6 +35,8 @@ final class BackwardChainer {
     private final Supplier<List<Rule>> rules;
     /** Why a script condition of a binding of real instances is false or fails, if one is ({@link ScriptCalls}). */
     private final BiFunction<Rule, Map<String, String>, Optional<String>> scriptFails;
+    /** The bindings whose script conditions the current question has run (at most {@code maxAnswers}). */
+    private int scriptRuns;
 
     BackwardChainer(KnowledgeBase kb, EngineOptions options, Supports supports, Supplier<List<Rule>> rules,
                     BiFunction<Rule, Map<String, String>, Optional<String>> scriptFails) {
@@ -48,6 +51,7 @@ final class BackwardChainer {
         if (!kb.contains(className)) {
             throw new org.kicnp.core.UnknownFrameException(className);
         }
+        scriptRuns = 0;
         Map<String, Map<String, Value>> hypo = new HashMap<>();
         Conditions conds = new Conditions((f, s) -> read(hypo, f, s));
         List<Answer> out = new ArrayList<>();
@@ -146,19 +150,25 @@ final class BackwardChainer {
                     || claimsClash(r, binding, hypo)) {
                 return;
             }
-            boolean real = binding.values().stream().noneMatch(n -> n.startsWith(HYPO));
+            // Run the scripts of a binding of real instances, up to a budget per question: a question over many
+            // instances whose scripts all say no must not hold the engine for a script run per combination.
+            boolean decide = r.scripted() && scriptRuns < this.options.maxAnswers()
+                    && binding.values().stream().noneMatch(n -> n.startsWith(HYPO));
             List<String> assumptions = new ArrayList<>();
             for (SlotPattern p : r.required()) {
                 if (p.condition() instanceof Condition.Script s) {
-                    if (!real) {
+                    if (!decide) {
                         assumptions.add(p.slot() + ": " + s.text());
                     }
                 } else if (!conds.holds(p.condition(), Value.ref(binding.get(p.slot())), r.frame(), binding)) {
                     return;
                 }
             }
-            if (real && r.scripted() && scriptFails.apply(r, binding).isPresent()) {
-                return;
+            if (decide) {
+                scriptRuns++;
+                if (scriptFails.apply(r, binding).isPresent()) {
+                    return;
+                }
             }
             out.add(new Proof.Derivable(r.frame(), chosen, assumptions));
             return;

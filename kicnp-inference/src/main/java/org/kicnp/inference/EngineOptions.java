@@ -28,4 +28,8 @@ public record EngineOptions(int maxFirings, Duration actionTimeout, int maxProof
     public EngineOptions withActionTimeout(Duration d) {
         return new EngineOptions(maxFirings, d, maxProofDepth, maxAnswers);
     }
+
+    public EngineOptions withMaxAnswers(int n) {
+        return new EngineOptions(maxFirings, actionTimeout, maxProofDepth, n);
+    }
 }

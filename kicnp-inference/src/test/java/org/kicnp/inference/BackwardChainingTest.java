@@ -159,6 +159,28 @@ class BackwardChainingTest {
     }
 
     @Test
+    void ask_runsTheScriptConditionsOfAtMostMaxAnswersBindings_andAssumesThoseOfTheRest() {
+        Fixture f = new Fixture();
+        f.cls("User", null);
+        f.kb.add(Frame.classFrame("Greet").slot(Fixture.inst("mUser", "User", "js: never")).build());
+        f.scripts.define("never", g -> false);
+        for (int i = 1; i <= 5; i++) {
+            f.assertFact("u" + i, "User");
+        }
+        InferenceEngine e = f.engine(EngineOptions.defaults().withMaxAnswers(3));
+        int matched = f.scripts.calls("never");
+
+        List<Answer> answers = e.ask("Greet", Map.of());
+
+        assertThat(f.scripts.calls("never") - matched).as("a question runs at most maxAnswers bindings' scripts")
+                .isEqualTo(3);
+        assertThat(answers).as("the other two are answers only on the assumption that the script holds").hasSize(2)
+                .allSatisfy(a -> assertThat(((Proof.Derivable) a.proof()).assumptions())
+                        .containsExactly("mUser: js: never"));
+        assertThat(e.ask("Greet", Map.of("mUser", Value.ref("u5")))).as("a new question, a new budget").isEmpty();
+    }
+
+    @Test
     void ask_assumesTheScriptConditionOfABindingWithAHypotheticalInstance_withoutRunningIt() {
         Fixture f = ForwardChainingTest.chain3();
         f.kb.add(Frame.classFrame("Late").slot(Fixture.inst("mStep", "Step1", "js: never")).build());
