@@ -250,7 +250,8 @@ public abstract class AgentBase implements AutoCloseable {
 
     /**
      * Why a behavior frame has not fired, with the required slots {@code bindings} names held (slot → instance):
-     * each slot's candidates, then each binding of them with what stops it. Nothing is created, no script runs.
+     * each slot's candidates, then each binding of them with what stops it. Nothing is created (script conditions
+     * run, as on matching, and cannot change anything).
      */
     public final Message.NotFired whyNot(String frame, Map<String, String> bindings) {
         return (Message.NotFired) request(new Message.WhyNot(nextId(), frame, bindings));

@@ -121,8 +121,8 @@ final class AgentQuestions {
     @Command(name = "why-not", mixinStandardHelpOptions = true,
             description = "Why a behavior frame has not fired, as one JSON object: {frame, summary, slots: [{slot, "
                     + "argument, condition, candidates, rejected, candidateCount, rejectedCount}], bindings: [{binding, "
-                    + "outcome, reason}], truncated}; the summary also on stderr. Nothing is created and no script "
-                    + "runs.")
+                    + "outcome, reason}], truncated}; the summary also on stderr. Nothing is created (script "
+                    + "conditions run, as on matching, and change nothing).")
     static final class WhyNot extends Subcommand {
 
         @Parameters(index = "0", paramLabel = "FRAME", description = "The behavior frame.")

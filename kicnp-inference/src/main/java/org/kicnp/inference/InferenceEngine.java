@@ -307,8 +307,9 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
     /**
      * Why a behavior frame has not fired, or not with some slots held: the instances that could fill each required
      * slot, then every binding of them (up to {@link EngineOptions#maxAnswers}) with what stops it now — a false
-     * condition, refraction or a claim by an earlier firing, its place on the agenda — or that nothing does. No
-     * side effects: no script runs, nothing is created.
+     * condition, refraction or a claim by an earlier firing, its place on the agenda, a false or failing script
+     * condition (run as on matching: it cannot change anything) — or that nothing does. No side effects: nothing is
+     * created.
      *
      * @param partialBindings slot → instance for required slots to hold fixed (an instance that cannot fill its
      *                        slot is reported among that slot's rejected candidates)
@@ -330,7 +331,7 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
             for (Activation a : forward.agenda()) {
                 waiting.add(a.key());
             }
-            return new WhyNotCheck(kb, supports, options.maxAnswers()).check(r, partialBindings, waiting);
+            return new WhyNotCheck(kb, supports, scripts::conditionFails, options.maxAnswers()).check(r, partialBindings, waiting);
         } finally {
             lock.unlock();
         }

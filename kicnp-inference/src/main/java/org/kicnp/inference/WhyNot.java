@@ -60,11 +60,12 @@ public record WhyNot(String frame, List<SlotCandidates> slots, List<Verdict> bin
         BLOCKED("blocked"),
         /** It is on the agenda and fires when its turn comes. */
         WAITING("waiting on the agenda"),
-        /** Nothing declarative stops it; a script condition decided, and whyNot does not run scripts. */
-        SCRIPT_CONDITION("left to a script condition"),
+        /** Nothing declarative stops it, but a script condition is false for it or its script fails (whyNot runs it). */
+        SCRIPT_CONDITION("fails a script condition"),
         /**
-         * Nothing whyNot can see stops it, yet it is not on the agenda: the engine has not matched it. Not expected
-         * once the engine has processed its changes (whyNot processes them first); reported rather than hidden.
+         * Nothing whyNot can see stops it, yet it is not on the agenda: the engine has not matched it (its reason says
+         * why when a script condition that holds now did not when the binding was matched). Not expected otherwise once
+         * the engine has processed its changes (whyNot processes them first); reported rather than hidden.
          */
         WOULD_FIRE("not matched yet");
 
@@ -81,7 +82,7 @@ public record WhyNot(String frame, List<SlotCandidates> slots, List<Verdict> bin
 
         /** How the outcome reads after a count of bindings ("2 fail a condition"). */
         public String phrase(int count) {
-            return count != 1 && this == CONDITION_FALSE ? "fail a condition" : phrase;
+            return count == 1 || !phrase.startsWith("fails ") ? phrase : "fail " + phrase.substring("fails ".length());
         }
     }
 

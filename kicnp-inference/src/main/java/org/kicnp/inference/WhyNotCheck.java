@@ -5,24 +5,30 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import java.util.function.BiFunction;
 import org.kicnp.core.Frame;
 import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.Value;
 
 /**
  * Works out a {@link WhyNot}: the candidates of each required slot of a behavior frame, then every binding of them
- * with what forward chaining would make of it now. Read-only; runs on the engine's thread, under its lock.
+ * with what forward chaining would make of it now, script conditions run as forward chaining runs them on matching
+ * (given {@code s} only, they cannot change anything). Read-only; runs on the engine's thread, under its lock.
  */
 final class WhyNotCheck {
     private final KnowledgeBase kb;
     private final Supports supports;
     private final Conditions conditions;
+    /** Why a script condition of a binding is false or fails, if one is ({@link ScriptCalls#conditionFails}). */
+    private final BiFunction<Rule, Map<String, String>, Optional<String>> scriptFails;
     private final int limit;
 
-    WhyNotCheck(KnowledgeBase kb, Supports supports, int limit) {
+    WhyNotCheck(KnowledgeBase kb, Supports supports, BiFunction<Rule, Map<String, String>, Optional<String>> scriptFails,
+                int limit) {
         this.kb = kb;
         this.supports = supports;
         this.conditions = new Conditions(kb::value);
+        this.scriptFails = scriptFails;
         this.limit = limit;
     }
 
@@ -134,13 +140,14 @@ final class WhyNotCheck {
         if (waiting.contains(key)) {
             return new WhyNot.Verdict(binding, WhyNot.Outcome.WAITING, "on the agenda: it fires when its turn comes");
         }
-        for (SlotPattern p : r.required()) {
-            if (p.isScript()) {
-                return new WhyNot.Verdict(binding, WhyNot.Outcome.SCRIPT_CONDITION, "slot '" + p.slot()
-                        + "' has a script condition, which the engine ran when it matched this binding and which"
-                        + " whyNot does not run: if the binding did not fire, it was false or threw (the trace's"
-                        + " blocked event says which)");
+        if (r.scripted()) {
+            Optional<String> fails = scriptFails.apply(r, binding);
+            if (fails.isPresent()) {
+                return new WhyNot.Verdict(binding, WhyNot.Outcome.SCRIPT_CONDITION, fails.get());
             }
+            return new WhyNot.Verdict(binding, WhyNot.Outcome.WOULD_FIRE, "its script conditions hold now, but not "
+                    + "when the engine matched the binding: a script runs when its binding is matched, and a binding is "
+                    + "matched again when an instance it binds changes, not when something else the script reads does");
         }
         return new WhyNot.Verdict(binding, WhyNot.Outcome.WOULD_FIRE,
                 "nothing that whyNot sees stops it, yet the engine has not matched it; run the engine");

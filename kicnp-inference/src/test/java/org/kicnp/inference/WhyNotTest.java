@@ -114,7 +114,7 @@ class WhyNotTest {
     }
 
     @Test
-    void whyNot_ofABindingWithAScriptCondition_namesItWithoutRunningIt_andADestroyedInstancesBindingStaysRefracted() {
+    void whyNot_ofABindingWithAScriptCondition_runsItAndSaysItIsFalse_andADestroyedInstancesBindingStaysRefracted() {
         Fixture f = new Fixture();
         f.cls("User", null).cls("Mouth", null);
         f.kb.add(Frame.classFrame("Talk").slot(Fixture.inst("mUser", "User", "js: old-enough"))
@@ -133,11 +133,55 @@ class WhyNotTest {
 
         assertThat(talk.bindings()).singleElement().satisfies(v -> {
             assertThat(v.outcome()).isEqualTo(WhyNot.Outcome.SCRIPT_CONDITION);
-            assertThat(v.reason()).startsWith("slot 'mUser' has a script condition");
+            assertThat(v.reason()).isEqualTo("the script condition of slot 'mUser' is false");
         });
-        assertThat(f.scripts.calls("old-enough")).as("whyNot runs no script").isEqualTo(calls);
+        assertThat(talk.summary()).contains("1 fails a script condition");
+        assertThat(f.scripts.calls("old-enough")).as("whyNot runs it once, for the one binding").isEqualTo(calls + 1);
+        assertThat(f.instancesOf("Talk")).isEmpty();
         assertThat(e.whyNot("Listen", Map.of()).bindings()).as("the same binding never fires twice")
                 .singleElement().satisfies(v -> assertThat(v.outcome()).isEqualTo(WhyNot.Outcome.BLOCKED));
+    }
+
+    @Test
+    void whyNot_ofAScriptConditionThatThrows_givesTheScriptsError() {
+        Fixture f = new Fixture();
+        f.cls("User", null);
+        f.kb.add(Frame.classFrame("Talk").slot(Fixture.inst("mUser", "User", "js: broken")).build());
+        f.scripts.define("broken", g -> {
+            throw new IllegalStateException("s.mUser.profile is undefined");
+        });
+        InferenceEngine e = f.engine();
+        f.assertFact("u1", "User");
+        e.runToQuiescence();
+
+        f.assertFact("u2", "User");
+        WhyNot talk = e.whyNot("Talk", Map.of());
+
+        assertThat(talk.bindings()).hasSize(2).allSatisfy(v -> {
+            assertThat(v.outcome()).isEqualTo(WhyNot.Outcome.SCRIPT_CONDITION);
+            assertThat(v.reason()).isEqualTo("the script condition of slot 'mUser' failed: s.mUser.profile is undefined");
+        });
+        assertThat(talk.summary()).isEqualTo("'Talk' has 2 bindings: 2 fail a script condition.");
+    }
+
+    @Test
+    void whyNot_ofAScriptConditionThatHoldsNowButDidNotWhenMatched_saysTheBindingIsNotMatchedAgainByWhatTheScriptReads() {
+        Fixture f = new Fixture();
+        f.cls("User", null);
+        f.kb.add(Frame.classFrame("Talk").slot(Fixture.inst("mUser", "User", "js: open")).build());
+        boolean[] open = {false}; // something the script reads that is no instance of the binding
+        f.scripts.define("open", g -> open[0]);
+        InferenceEngine e = f.engine();
+        f.assertFact("u1", "User");
+        e.runToQuiescence();
+        open[0] = true;
+
+        assertThat(e.whyNot("Talk", Map.of()).bindings()).singleElement().satisfies(v -> {
+            assertThat(v.outcome()).isEqualTo(WhyNot.Outcome.WOULD_FIRE);
+            assertThat(v.reason()).startsWith("its script conditions hold now, but not when the engine matched the "
+                    + "binding");
+        });
+        assertThat(e.runToQuiescence()).as("as said: nothing matches it again").isZero();
     }
 
     @Test

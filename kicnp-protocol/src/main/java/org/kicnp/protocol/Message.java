@@ -391,7 +391,8 @@ public sealed interface Message {
 
     /**
      * Why the behavior frame {@code frame} has not fired, with the required slots {@code bindings} names held fixed
-     * (slot → instance). Nothing is created and no script runs on the server.
+     * (slot → instance). Nothing is created on the server (script conditions run, as on matching, and cannot change
+     * anything).
      */
     record WhyNot(String id, String frame, Map<String, String> bindings) implements Request {
         public WhyNot {
