@@ -21,6 +21,7 @@ import org.kicnp.core.KnowledgeBase;
 import org.kicnp.core.KnowledgeException;
 import org.kicnp.core.StaleRevisionException;
 import org.kicnp.core.UnknownFrameException;
+import org.kicnp.inference.QuestionTooBroadException;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -83,6 +84,8 @@ final class ApiHandler extends Handler.Abstract {
             reply = error(404, e.getMessage(), List.of());
         } catch (KnowledgeException e) {
             reply = error(422, e.getMessage(), List.of(ApiProblem.of("", "", e.getMessage())));
+        } catch (QuestionTooBroadException e) {
+            reply = error(422, e.getMessage(), List.of());
         } catch (RuntimeException e) {
             LOG.error("Editor API request {} {} failed", request.getMethod(), path, e);
             reply = error(500, "The editor failed on this request: " + e.getMessage(), List.of());

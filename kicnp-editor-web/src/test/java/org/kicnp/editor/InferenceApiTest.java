@@ -228,6 +228,21 @@ class InferenceApiTest {
         ws.abort();
     }
 
+    @Test void ask_tooBroadForTheEnginesLimit_is422_sayingHowToNarrowIt() {
+        setUpUserAndMouth();
+        kb.add(Frame.instance("userB", "NewUser").provenance(Provenance.RUNTIME).build());
+        try (InferenceEngine narrow = InferenceEngine.builder(kb).options(org.kicnp.inference.EngineOptions.defaults()
+                .withMaxQuestionSteps(1)).build();
+             EditorServer other = EditorServer.start(EditorConfig.defaults().withPort(0), kb, narrow)) {
+            var answer = new Http(other.port()).get("/api/inference/ask?class=AskUserName");
+
+            assertThat(answer.statusCode()).isEqualTo(422);
+            assertThat(json(answer).get("error").asText()).startsWith("The question about 'AskUserName' is too broad")
+                    .endsWith("hold some of the slots fixed to narrow it.");
+        }
+        assertThat(http.get("/api/inference/ask?class=AskUserName").statusCode()).isEqualTo(200);
+    }
+
     @Test void inference_withoutEngine_answers501AndSessionSaysSo() {
         try (EditorServer plain = EditorServer.start(EditorConfig.defaults().withPort(0), kb)) {
             Http other = new Http(plain.port());

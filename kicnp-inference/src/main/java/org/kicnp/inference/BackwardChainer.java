@@ -24,8 +24,8 @@ import org.kicnp.core.Value;
  * forward chaining runs it when it matches the binding: side-effect free, it is given {@code s} only; for at most
  * {@code maxAnswers} bindings per question) and assumed when the binding holds a hypothetical instance, whose slots
  * are not known before its {@code onInstantiate} would run.
- * Read-only: nothing is created, no action or {@code onInstantiate} runs. Bounded in depth and answers; a frame is
- * not used again inside its own proof.
+ * Read-only: nothing is created, no action or {@code onInstantiate} runs. Bounded in depth, answers and combinations
+ * tried ({@link QuestionTooBroadException}); a frame is not used again inside its own proof.
  */
 final class BackwardChainer {
     private static final String HYPO = "?";
@@ -37,6 +37,9 @@ final class BackwardChainer {
     private final BiFunction<Rule, Map<String, String>, Optional<String>> scriptFails;
     /** The bindings whose script conditions the current question has run (at most {@code maxAnswers}). */
     private int scriptRuns;
+    /** The class the current question is about, and the combinations of instances it has tried. */
+    private String question;
+    private int steps;
 
     BackwardChainer(KnowledgeBase kb, EngineOptions options, Supports supports, Supplier<List<Rule>> rules,
                     BiFunction<Rule, Map<String, String>, Optional<String>> scriptFails) {
@@ -52,6 +55,8 @@ final class BackwardChainer {
             throw new org.kicnp.core.UnknownFrameException(className);
         }
         scriptRuns = 0;
+        question = className;
+        steps = 0;
         Map<String, Map<String, Value>> hypo = new HashMap<>();
         Conditions conds = new Conditions((f, s) -> read(hypo, f, s));
         List<Answer> out = new ArrayList<>();
@@ -144,6 +149,9 @@ final class BackwardChainer {
             return;
         }
         if (k == options.size()) {
+            if (++steps > this.options.maxQuestionSteps()) {
+                throw new QuestionTooBroadException(question, steps - 1);
+            }
             Map<String, String> binding = new LinkedHashMap<>();
             chosen.forEach((s, p) -> binding.put(s, name(p, hypo)));
             if (new HashSet<>(binding.values()).size() < binding.size() || blocked(r, binding)

@@ -1,6 +1,7 @@
 package org.kicnp.inference;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.util.List;
 import java.util.Map;
@@ -270,6 +271,29 @@ class BackwardChainingTest {
         e.runToQuiescence();
         assertThat(f.instancesOf("Greet")).hasSize(1);
         assertThat(f.instancesOf("Twice")).isEmpty();
+    }
+
+    @Test
+    void ask_thatWouldTryMoreCombinationsThanTheLimit_isRefusedInWords_andANarrowerOneIsAnswered() {
+        Fixture f = new Fixture();
+        f.kb.add(Frame.classFrame("User").slot(Slot.builder("key", DataType.INTEGER).build()).build());
+        f.kb.add(Frame.classFrame("Mouth").slot(Slot.builder("key", DataType.INTEGER).build()).build());
+        f.kb.add(Frame.classFrame("Match").slot(Fixture.inst("mUser", "User"))
+                .slot(Fixture.inst("mMouth", "Mouth", ".key == mUser.key")).build());
+        for (int i = 0; i < 20; i++) {
+            f.assertFact("u" + i, "User", "key", (long) i);
+            f.assertFact("m" + i, "Mouth", "key", (long) (100 + i)); // no user's key: 400 combinations, no answer
+        }
+        InferenceEngine e = f.engine(EngineOptions.defaults().withMaxQuestionSteps(100));
+
+        assertThatThrownBy(() -> e.ask("Match", Map.of())).isInstanceOf(QuestionTooBroadException.class)
+                .hasMessage("The question about 'Match' is too broad: it tried 100 combinations of instances without "
+                        + "finishing (the engine's maxQuestionSteps); hold some of the slots fixed to narrow it.");
+        assertThat(e.ask("Match", Map.of("mUser", Value.ref("u3")))).as("20 combinations").isEmpty();
+        f.assertFact("m3b", "Mouth", "key", 3L);
+        assertThat(e.ask("Match", Map.of("mUser", Value.ref("u3")))).singleElement()
+                .satisfies(a -> assertThat(a.slots()).containsEntry("mMouth", "m3b"));
+        assertThat(e.runToQuiescence()).as("the engine goes on as before").isEqualTo(1);
     }
 
     @Test

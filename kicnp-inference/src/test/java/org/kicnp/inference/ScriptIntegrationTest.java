@@ -187,6 +187,30 @@ class ScriptIntegrationTest {
     }
 
     @Test
+    void ask_fromAScript_tooBroadForTheEnginesLimit_failsThatScript_inTheLimitsWords() {
+        KnowledgeBase kb = small("log('talking to', s.mUser.name)", null);
+        kb.add(Frame.classFrame("Trigger").build());
+        kb.add(Frame.classFrame("Probe").slot(Slot.builder("mT", DataType.INSTANCE).argument("Trigger").required(true)
+                .build()).slot(Slot.ofValue("onInstantiate", DataType.STRING, Value.of(
+                        "sendmsg('m1', 'answers: ' + ask('Talk', {}).length)"))).build());
+        for (int i = 0; i < 3; i++) {
+            kb.add(Frame.instance("m" + (i + 2), "Mouth").build());
+            fact(kb, "u" + i, "User");
+        }
+        try (InferenceEngine e = InferenceEngine.builder(kb).scripts(new GraalScriptHost(runtime)).actionSink(sent::add)
+                .options(EngineOptions.defaults().withMaxQuestionSteps(5)).build()) {
+            e.addTraceListener(trace::add);
+            fact(kb, "t1", "Trigger");
+            e.runToQuiescence();
+
+            assertThat(sent).noneMatch(a -> a.args().toString().contains("answers"));
+            assertThat(trace).filteredOn(t -> t instanceof TraceEvent.ScriptFailed).singleElement()
+                    .satisfies(t -> assertThat(((TraceEvent.ScriptFailed) t).message())
+                            .contains("The question about 'Talk' is too broad: it tried 5 combinations"));
+        }
+    }
+
+    @Test
     void scriptApi_createLearnCommandAndLog_takeEffectAfterTheScriptSucceeds() {
         KnowledgeBase kb = small("""
                 log('registering', s.mUser.name);

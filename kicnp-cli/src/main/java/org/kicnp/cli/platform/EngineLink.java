@@ -20,6 +20,7 @@ import org.kicnp.gateway.Retraction;
 import org.kicnp.inference.Derivation;
 import org.kicnp.inference.Explanation;
 import org.kicnp.inference.InferenceEngine;
+import org.kicnp.inference.QuestionTooBroadException;
 import org.kicnp.inference.Proof;
 import org.kicnp.inference.WhyNot;
 import org.kicnp.protocol.Message;
@@ -92,7 +93,11 @@ final class EngineLink implements Retraction, Reasoning {
             // On the engine's thread: a binding that is no frame reference fails this answer, not the connection.
             Map<String, Value> refs = new LinkedHashMap<>();
             bindings.forEach((slot, instance) -> refs.put(slot, Value.ref(instance)));
-            return e.prove(ofClass, refs).stream().map(EngineLink::node).toList();
+            try {
+                return e.prove(ofClass, refs).stream().map(EngineLink::node).toList();
+            } catch (QuestionTooBroadException broad) { // a refusal in words, as the other questions' are
+                throw new IllegalArgumentException(broad.getMessage(), broad);
+            }
         });
     }
 
