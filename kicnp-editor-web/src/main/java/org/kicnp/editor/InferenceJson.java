@@ -52,7 +52,7 @@ final class InferenceJson {
                     "detail", t.detail(), "text", "action " + t.actionId() + " " + t.status().name().toLowerCase()
                             + (t.detail() == null || t.detail().isEmpty() ? "" : ": " + t.detail()));
             case TraceEvent.LimitReached t -> put(m, "limit", t.limit(), "topFrames", t.topFrames(),
-                    "text", "firing limit " + t.limit() + " reached; most firings: " + t.topFrames());
+                    "text", t.message());
         }
         return m;
     }

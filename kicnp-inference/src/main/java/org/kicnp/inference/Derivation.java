@@ -30,28 +30,44 @@ public final class Derivation {
     /** The binding's slots and, by position, the instances bound to them (never changed once made). */
     private final List<String> slots;
     /**
-     * The conditions: with {@link #patterns}, what a firing kept of the values it tested, those of the patterns whose
-     * condition reads a path ({@link CheckedConditions#kept}: null, the one value or an array; a
-     * {@link CheckedConditions} when asked); with no patterns (null), the list itself.
+     * A firing's rule patterns ({@code List<SlotPattern>}), or the creating instance of a scripted creation (a
+     * {@code String}), or null: one field for the two, which no derivation has both of, so that the depth fits in the
+     * 48 bytes a derivation took without it.
      */
-    private final List<SlotPattern> patterns;
+    private final Object shape;
+    /**
+     * The conditions: with a firing's patterns ({@link #shape}), what the firing kept of the values it tested, those
+     * of the patterns whose condition reads a path ({@link CheckedConditions#kept}: null, the one value or an array; a
+     * {@link CheckedConditions} when asked); otherwise the list itself.
+     */
     private final Object checked;
     private final long firing;
     private final String trigger;
-    private final Optional<String> createdBy;
+    /** How many derived instances deep it rests: 1 + the deepest of what it rests on (an asserted instance: 0). */
+    private final int depth;
 
+    /** A derivation resting on asserted instances only (depth 1). */
     public Derivation(String instance, String frame, Map<String, String> binding, List<CheckedCondition> conditions,
                       long firing, String trigger, Optional<String> createdBy) {
+        this(instance, frame, binding, conditions, firing, trigger, createdBy, 1);
+    }
+
+    /** @param depth 1 + the deepest {@link #depth} of the instances it rests on (0 for an asserted one) */
+    public Derivation(String instance, String frame, Map<String, String> binding, List<CheckedCondition> conditions,
+                      long firing, String trigger, Optional<String> createdBy, int depth) {
         Binding b = Binding.copyOf(binding);
         this.instance = requireNonNull(instance, "instance");
         this.key = new BindingKey(requireNonNull(frame, "frame"), b.factArray());
         this.slots = b.slotList();
-        this.patterns = null;
+        this.shape = requireNonNull(createdBy, "createdBy").orElse(null);
         // A firing's own list is immutable already, and copying it would make every record it defers at once.
         this.checked = conditions instanceof CheckedConditions ? conditions : List.copyOf(conditions);
         this.firing = firing;
         this.trigger = requireNonNull(trigger, "trigger");
-        this.createdBy = requireNonNull(createdBy, "createdBy");
+        if (depth < 1) {
+            throw new IllegalArgumentException("A derived instance rests at least 1 deep, not " + depth + ".");
+        }
+        this.depth = depth;
     }
 
     /**
@@ -60,15 +76,29 @@ public final class Derivation {
      * tested on the values {@code tested} keeps ({@link CheckedConditions#kept}); no copies.
      */
     Derivation(String instance, BindingKey key, List<String> slots, List<SlotPattern> patterns, Object tested,
-               long firing, String trigger) {
+               long firing, String trigger, int depth) {
         this.instance = instance;
         this.key = key;
         this.slots = slots;
-        this.patterns = patterns;
+        this.shape = patterns;
         this.checked = tested;
         this.firing = firing;
         this.trigger = trigger;
-        this.createdBy = Optional.empty();
+        this.depth = depth;
+    }
+
+    /**
+     * The depth of an instance made from {@code refs}: one more than the deepest of them, an instance the engine did
+     * not derive counting 0.
+     */
+    static int depthOver(FactView.Fact[] refs) {
+        int deepest = 0;
+        for (FactView.Fact f : refs) {
+            if (f.derivation != null && f.derivation.depth > deepest) {
+                deepest = f.derivation.depth;
+            }
+        }
+        return deepest + 1;
     }
 
     public String instance() {
@@ -87,8 +117,10 @@ public final class Derivation {
     /** Each bound slot's condition and the value it was tested on (immutable). */
     @SuppressWarnings("unchecked")
     public List<CheckedCondition> conditions() {
-        return patterns == null ? (List<CheckedCondition>) checked
-                : new CheckedConditions(patterns, null, CheckedConditions.expand(patterns, key.facts(), checked));
+        return shape instanceof List<?> patterns
+                ? new CheckedConditions((List<SlotPattern>) patterns, null,
+                        CheckedConditions.expand((List<SlotPattern>) patterns, key.facts(), checked))
+                : (List<CheckedCondition>) checked;
     }
 
     public long firing() {
@@ -100,7 +132,15 @@ public final class Derivation {
     }
 
     public Optional<String> createdBy() {
-        return createdBy;
+        return shape instanceof String s ? Optional.of(s) : Optional.empty();
+    }
+
+    /**
+     * How many derived instances deep it rests: 1 when it rests on asserted instances only, else one more than the
+     * deepest derived instance it rests on. A knowledge base that feeds itself makes ever deeper instances.
+     */
+    public int depth() {
+        return depth;
     }
 
     /** The number of bound slots. */
@@ -118,7 +158,7 @@ public final class Derivation {
         String[] facts = key.facts();
         List<String> out = new ArrayList<>(facts.length + 1);
         out.addAll(List.of(facts));
-        createdBy.ifPresent(out::add);
+        createdBy().ifPresent(out::add);
         return out;
     }
 
@@ -126,16 +166,16 @@ public final class Derivation {
         return o instanceof Derivation d && d.firing == firing && d.instance.equals(instance)
                 && d.frame().equals(frame())
                 && d.binding().equals(binding()) && d.conditions().equals(conditions()) && d.trigger.equals(trigger)
-                && d.createdBy.equals(createdBy);
+                && d.createdBy().equals(createdBy());
     }
 
     @Override public int hashCode() {
-        return Objects.hash(instance, frame(), binding(), conditions(), firing, trigger, createdBy);
+        return Objects.hash(instance, frame(), binding(), conditions(), firing, trigger, createdBy());
     }
 
     @Override public String toString() {
         return "Derivation[instance=" + instance + ", frame=" + frame() + ", binding=" + binding() + ", conditions="
-                + conditions() + ", firing=" + firing + ", trigger=" + trigger + ", createdBy=" + createdBy + "]";
+                + conditions() + ", firing=" + firing + ", trigger=" + trigger + ", createdBy=" + createdBy() + "]";
     }
 
     /** A slot condition as it was tested when the frame fired. */

@@ -94,13 +94,14 @@ final class Firing {
         List<Derivation.CheckedCondition> checked = plain ? null : CheckedConditions.of(r, full, refs, facts,
                 conditions);
         long firing = ++firings;
+        int depth = Derivation.depthOver(refs);
         supports.markFired(a.key(), refs); // refracted even when the instance cannot be made
         String name;
         while (true) {
             name = made.next(r.frame());
             Derivation d = plain
-                    ? new Derivation(name, a.key(), r.requiredSlots(), r.required(), tested, firing, trigger)
-                    : new Derivation(name, r.frame(), full, checked, firing, trigger, Optional.empty());
+                    ? new Derivation(name, a.key(), r.requiredSlots(), r.required(), tested, firing, trigger, depth)
+                    : new Derivation(name, r.frame(), full, checked, firing, trigger, Optional.empty(), depth);
             FactView.Fact record = supports.record(d, r, refs, made.number());
             try {
                 if (d.width() == refs.length) {

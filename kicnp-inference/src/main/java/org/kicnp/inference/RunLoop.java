@@ -95,8 +95,15 @@ final class RunLoop {
                 if (inARow > options.maxFirings()) {
                     forward.clearAgenda();
                     List<String> top = mostFiring(count, Math.min(inARow, RECENT));
-                    tracer.accept(new TraceEvent.LimitReached(options.maxFirings(), top));
-                    throw new InferenceLimitException(options.maxFirings(), top);
+                    throw stopped(options.maxFirings(), new InferenceLimitException(options.maxFirings(), top));
+                }
+                // A runaway fed by changes from outside often enough never fires maxFirings in a row; the chain of
+                // instances it derives, each from the one before, grows all the same.
+                if (Derivation.depthOver(next.refs()) > options.maxDerivationDepth()) {
+                    forward.clearAgenda();
+                    List<String> top = mostFiring(count, Math.min(count, RECENT));
+                    throw stopped(options.maxDerivationDepth(), InferenceLimitException.deeperThan(
+                            options.maxDerivationDepth(), next.rule().frame(), top));
                 }
                 burst.beforeFiring();
                 forward.fire(next);
@@ -119,6 +126,12 @@ final class RunLoop {
             }
             lock.unlock();
         }
+    }
+
+    /** Traces a limit's stop of the run and returns the exception the run ends with. */
+    private InferenceLimitException stopped(int limit, InferenceLimitException e) {
+        tracer.accept(new TraceEvent.LimitReached(limit, e.topFrames(), e.getMessage()));
+        return e;
     }
 
     /**

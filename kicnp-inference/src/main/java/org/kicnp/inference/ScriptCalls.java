@@ -128,7 +128,8 @@ final class ScriptCalls {
         c.slots().forEach((slot, v) -> b.slot(Slot.builder(slot, kb.slot(c.className(), slot)
                 .map(e -> e.slot().type()).orElse(v.type())).value(v).build()));
         supporter.ifPresent(s -> supports.record(new Derivation(c.name(), c.className(), Map.of(),
-                List.of(), target.firings(), s, Optional.of(s)), Optional.empty()));
+                List.of(), target.firings(), s, Optional.of(s),
+                supports.derivation(s).map(Derivation::depth).orElse(0) + 1), Optional.empty()));
         try {
             kb.add(b.build());
         } catch (KnowledgeException e) {

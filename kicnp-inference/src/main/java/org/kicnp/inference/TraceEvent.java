@@ -47,6 +47,9 @@ public sealed interface TraceEvent {
     /** An action changed state (held, sent, started, ended, failed, timed out). */
     record ActionChanged(String actionId, Action.Status status, String detail) implements TraceEvent { }
 
-    /** The cycle limit stopped a run. */
-    record LimitReached(int limit, List<String> topFrames) implements TraceEvent { }
+    /**
+     * A limit stopped a run: the firings in a row ({@link EngineOptions#maxFirings}) or the depth of derived instances
+     * ({@link EngineOptions#maxDerivationDepth}); {@code message} says which, as the exception the run ends with.
+     */
+    record LimitReached(int limit, List<String> topFrames, String message) implements TraceEvent { }
 }

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
@@ -312,6 +313,54 @@ class ForwardChainingTest {
         }
         // 30 firings, the note from outside, then 50 more in a row: the 81st is the one refused
         assertThat(f.instancesOf("Echo")).hasSize(80);
+    }
+
+    @Test
+    void derivationDepthLimit_stopsARunawayThatChangesFromOutsideKeepFromFiringMaxFiringsInARow() throws Exception {
+        Fixture f = new Fixture();
+        f.cls("Thing", null).cls("Note", null);
+        f.kb.add(Frame.classFrame("Echo").parent("Thing").slot(Fixture.inst("mIn", "Thing"))
+                .slot(Slot.ofValue("onInstantiate", DataType.STRING, Value.of("note-every-20"))).build());
+        ExecutorService outside = Executors.newSingleThreadExecutor();
+        AtomicInteger echoes = new AtomicInteger();
+        f.scripts.define("note-every-20", g -> {
+            int n = echoes.incrementAndGet();
+            if (n % 20 == 0 && n <= 2_000) { // a sensor's reading, from another thread, every 20 firings
+                fromAnotherThread(outside, () -> f.assertFact("n" + n, "Note"));
+            }
+            return null;
+        });
+        InferenceEngine e = f.engine(EngineOptions.defaults().withMaxFirings(50).withMaxDerivationDepth(300));
+        f.assertFact("t0", "Thing");
+        try {
+            assertThatThrownBy(e::runToQuiescence).isInstanceOf(InferenceLimitException.class)
+                    .hasMessage("Inference stopped: 'Echo' would derive an instance resting on 300 derived instances, "
+                            + "each made from the one before, so the knowledge base feeds itself; the frames firing "
+                            + "most were 'Echo'.");
+        } finally {
+            outside.shutdownNow();
+        }
+        assertThat(f.instancesOf("Echo")).as("never 50 in a row: the depth stopped it, at the 301st").hasSize(300);
+        assertThat(f.traced(TraceEvent.LimitReached.class)).singleElement()
+                .satisfies(l -> assertThat(l.limit()).isEqualTo(300));
+        String deepest = f.instancesOf("Echo").stream().max(java.util.Comparator.comparingInt(
+                i -> e.derivation(i).orElseThrow().depth())).orElseThrow();
+        assertThat(e.derivation(deepest).orElseThrow().depth()).isEqualTo(300);
+    }
+
+    @Test
+    void derivationDepth_isOneMoreThanTheDeepestBoundInstance_andCountsAScriptsCreationsToo() {
+        Fixture f = ForwardChainingTest.chain3();
+        f.cls("Made", null);
+        f.kb.add(Frame.classFrame("Maker").slot(Fixture.inst("mIn", "Step2"))
+                .slot(Slot.ofValue("onInstantiate", DataType.STRING, Value.of("make"))).build());
+        f.scripts.define("make", g -> Fixture.call(g, "create", "Made", Map.of()));
+        InferenceEngine e = f.engine();
+        f.assertFact("s1", "Stimulus");
+        e.runToQuiescence();
+
+        assertThat(Map.of("Step1", 1, "Step2", 2, "Step3", 3, "Maker", 3, "Made", 4)).allSatisfy((cls, depth) ->
+                assertThat(e.derivation(f.instancesOf(cls).getFirst()).orElseThrow().depth()).as(cls).isEqualTo(depth));
     }
 
     @Test

@@ -38,7 +38,8 @@ final class TraceLog implements TraceListener, KnowledgeListener {
             case TraceEvent.Retracted r -> log.record("retracted", Map.of("instance", r.instance(), "reason", r.reason()));
             case TraceEvent.Blocked b -> log.record("blocked", Map.of("frame", b.frame(), "binding", b.binding(),
                     "reason", b.reason()));
-            case TraceEvent.LimitReached l -> log.record("limit", Map.of("limit", l.limit(), "frames", l.topFrames()));
+            case TraceEvent.LimitReached l -> log.record("limit", Map.of("limit", l.limit(), "frames", l.topFrames(),
+                    "message", l.message()));
             default -> { }
         }
     }
