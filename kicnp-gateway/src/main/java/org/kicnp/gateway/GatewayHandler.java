@@ -146,7 +146,7 @@ final class GatewayHandler extends ChannelInboundHandlerAdapter implements Frame
         switch (message) {
             case Message.Hello h -> refuse(ErrorReply.to(h.id(), ErrorCode.BAD_MESSAGE,
                     "This connection is already authenticated as " + session + "."));
-            case Message.Register r -> reply(server.register(session, r));
+            case Message.Register r -> server.register(session, r).ifPresent(this::reply);
             case Message.Heartbeat h -> { }
             case Message.Relay r -> server.relay(session, r).ifPresent(this::reply);
             case Message.Command c -> reply(server.commands().fromAgent(session, c));

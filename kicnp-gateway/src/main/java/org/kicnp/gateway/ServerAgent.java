@@ -92,8 +92,13 @@ final class ServerAgent {
         out.send(s, new Message.AuthResult(hello.id(), true, serverName, Optional.empty()));
     }
 
-    /** Stores the capability frames (all or none), then registers the agent and its presence. */
-    Message register(Session s, Message.Register r) {
+    /**
+     * Stores the capability frames (all or none), answers, then registers the agent and its presence. The answer is
+     * queued before the agent can be found: whatever is sent to it once it is found — a command the engine issues
+     * the moment its presence is asserted, a relay from an agent that saw it arrive — comes after the answer its
+     * agent waits for. Returns the refusal, if it is refused.
+     */
+    Optional<Message> register(Session s, Message.Register r) {
         List<Change> changes = new ArrayList<>();
         List<String> names = new ArrayList<>();
         try {
@@ -106,8 +111,8 @@ final class ServerAgent {
                 names.add(f.name());
             }
             if (!forbidden.isEmpty()) {
-                return ErrorReply.to(r.id(), ErrorCode.FORBIDDEN, "The capabilities of " + s + " were refused: "
-                        + String.join(" ", forbidden));
+                return Optional.of(ErrorReply.to(r.id(), ErrorCode.FORBIDDEN, "The capabilities of " + s
+                        + " were refused: " + String.join(" ", forbidden)));
             }
             if (!changes.isEmpty()) {
                 kb.apply(changes);
@@ -115,11 +120,12 @@ final class ServerAgent {
         } catch (BatchRejectedException e) {
             StringBuilder sb = new StringBuilder("The capabilities of " + s + " were refused:");
             e.problems().forEach(p -> sb.append(' ').append(p));
-            return ErrorReply.to(r.id(), ErrorCode.REJECTED, sb.toString());
+            return Optional.of(ErrorReply.to(r.id(), ErrorCode.REJECTED, sb.toString()));
         } catch (KnowledgeException | IllegalArgumentException e) {
-            return ErrorReply.to(r.id(), ErrorCode.REJECTED, e.getMessage());
+            return Optional.of(ErrorReply.to(r.id(), ErrorCode.REJECTED, e.getMessage()));
         }
         s.registered(names);
+        out.send(s, new Message.Ack(r.id()));
         registry.register(s).ifPresent(old -> {
             LOG.info("Agent {} registered again from a new connection; closing the old one.", s);
             out.closeWith(old, ErrorReply.of(ErrorCode.SUPERSEDED, "Agent " + s + " registered again from a new connection."));
@@ -130,7 +136,7 @@ final class ServerAgent {
             LOG.warn("Could not record the presence of {}: {}", s, e.getMessage());
         }
         LOG.info("Agent {} registered with {} capability frame(s).", s, names.size());
-        return new Message.Ack(r.id());
+        return Optional.empty();
     }
 
     /**

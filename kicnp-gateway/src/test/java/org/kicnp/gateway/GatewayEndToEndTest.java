@@ -245,6 +245,29 @@ class GatewayEndToEndTest {
         }
     }
 
+    /**
+     * The platform may command a robot the moment it is registered: its presence instance, asserted while the register
+     * is handled, can make a behavior frame fire at once (the paper's "Mouth" frame, activated when Robovie connects).
+     * That command must reach the robot after the answer to its register, which an agent waits for before it reads
+     * anything else: before, it could come first, and an SDK waiting for that answer passed it by.
+     */
+    @Test
+    void register_aCommandSentTheMomentTheRobotIsPresent_comesAfterTheRegistersAnswer() throws IOException {
+        kb.addListener(changes -> changes.events().forEach(e -> { // on the thread that asserted the presence
+            if (e instanceof org.kicnp.core.FrameEvent.Added a && a.name().equals("agent_scout")) {
+                server.actionSink().send(new Command("c1", "scout", "wave", Map.of()));
+            }
+        }));
+        try (RawClient raw = new RawClient(server.port())) {
+            raw.send(new Message.Hello("1", "scout", AgentKind.ROBOT, "scout-token"));
+            raw.send(new Message.Register("2", List.of()));
+
+            assertThat(raw.read()).isInstanceOf(Message.AuthResult.class);
+            assertThat(raw.read()).isEqualTo(new Message.Ack("2"));
+            assertThat(raw.read()).isEqualTo(new Command("c1", "scout", "wave", Map.of()));
+        }
+    }
+
     @Test
     void messageBeforeHello_getsErrorAndClose() throws IOException {
         try (RawClient raw = new RawClient(server.port())) {
