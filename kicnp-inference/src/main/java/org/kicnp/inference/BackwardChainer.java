@@ -247,14 +247,10 @@ final class BackwardChainer {
         List<String> keys = new ArrayList<>();
         for (SlotPattern p : r.required()) {
             if (!p.shared()) {
-                keys.add("c\u0000" + r.frame() + '\u0000' + p.slot() + '\u0000' + binding.get(p.slot()));
+                keys.add(Supports.claimKey(r.frame(), p.slot(), binding.get(p.slot())));
             }
         }
-        if (!r.uniqueSlots().isEmpty()) {
-            StringBuilder k = new StringBuilder("u\u0000").append(r.frame());
-            r.uniqueSlots().forEach(s -> k.append('\u0000').append(binding.getOrDefault(s, "")));
-            keys.add(k.toString());
-        }
+        Supports.uniqueKey(r, binding).ifPresent(keys::add);
         for (String k : keys) {
             String owner = owners.putIfAbsent(k, id);
             if (owner != null && !owner.equals(id)) {

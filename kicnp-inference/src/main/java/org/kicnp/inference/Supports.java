@@ -302,11 +302,11 @@ final class Supports {
         }
     }
 
-    private static String claimKey(String frame, String slot, String fact) {
+    static String claimKey(String frame, String slot, String fact) {
         return "c\u0000" + frame + '\u0000' + slot + '\u0000' + fact;
     }
 
-    private static Optional<String> uniqueKey(Rule r, Map<String, String> binding) {
+    static Optional<String> uniqueKey(Rule r, Map<String, String> binding) {
         List<String> us = r.uniqueSlots();
         if (us.isEmpty()) {
             return Optional.empty();
