@@ -42,7 +42,8 @@ import picocli.CommandLine.Parameters;
 @Command(name = "infer", mixinStandardHelpOptions = true,
         customSynopsis = {"kicnp infer [-hV] KB... [--assert=FILE_OR_XML...]... [--ask=CLASS]...",
             "                   [--why-not=FRAME]... [--expect=CLASS[=N]]... [--expect-none=CLASS]...",
-            "                   [--expect-action=[ROBOT:]ACTION]... [--trace] [--max-firings=N]"},
+            "                   [--expect-action=[ROBOT:]ACTION]... [--trace] [--max-firings=N]",
+            "                   [--max-depth=N]"},
         description = "Run the inference engine on a knowledge base with asserted instances and print what it did. "
                 + "With --expect options it is a test of the knowledge base's rules, for scripts and CI: each "
                 + "expectation is checked after the run and printed as pass or FAIL, a failed one on a behavior "
@@ -93,6 +94,11 @@ public final class InferCommand implements Callable<Integer> {
     @Option(names = "--max-firings", paramLabel = "N", description = "Firings allowed per run (default: ${DEFAULT-VALUE}).")
     int maxFirings = EngineOptions.defaults().maxFirings();
 
+    @Option(names = "--max-depth", paramLabel = "N", description = "How deep derived instances may rest on one "
+            + "another, each made from the one before (default: ${DEFAULT-VALUE}); a deeper one stops the run as a "
+            + "knowledge base that feeds itself.")
+    int maxDepth = EngineOptions.defaults().maxDerivationDepth();
+
     @Override public Integer call() {
         if (knowledge.isEmpty()) {
             throw new CommandLine.ParameterException(spec.commandLine(), "Missing the knowledge base (KB)"
@@ -108,6 +114,10 @@ public final class InferCommand implements Callable<Integer> {
         if (maxFirings < 1) {
             throw new CommandLine.ParameterException(spec.commandLine(),
                     "--max-firings must be at least 1, not " + maxFirings + ".");
+        }
+        if (maxDepth < 1) {
+            throw new CommandLine.ParameterException(spec.commandLine(),
+                    "--max-depth must be at least 1, not " + maxDepth + ".");
         }
         List<Expectation> expectations = expectations();
         PrintWriter out = spec.commandLine().getOut();
@@ -134,7 +144,8 @@ public final class InferCommand implements Callable<Integer> {
             KnowledgeLoader.load(kb, files);
             List<Action> sent = new ArrayList<>();
             Map<String, String> created = new LinkedHashMap<>();
-            InferenceEngine engine = InferenceEngine.builder(kb).options(EngineOptions.defaults().withMaxFirings(maxFirings))
+            InferenceEngine engine = InferenceEngine.builder(kb).options(EngineOptions.defaults()
+                            .withMaxFirings(maxFirings).withMaxDerivationDepth(maxDepth))
                     .scripts(new GraalScriptHost(runtime)).actionSink(sent::add).build();
             ObjectMapper json = new ObjectMapper();
             engine.addTraceListener(e -> {

@@ -200,6 +200,29 @@ class InferCommandTest {
     }
 
     @Test
+    void infer_withMaxDepth_stopsAKnowledgeBaseThatFeedsItselfThere_namingTheFrame(@TempDir Path dir) throws Exception {
+        Path kb = Files.writeString(dir.resolve("echo.xml"), """
+                <KNOWLEDGEBASE>
+                  <FRAME><NAME>Thing</NAME><ISINSTANCE>FALSE</ISINSTANCE></FRAME>
+                  <FRAME><NAME>Echo</NAME><ISA>Thing</ISA><ISINSTANCE>FALSE</ISINSTANCE>
+                    <SLOTLIST><SLOT><NAME>mIn</NAME><TYPE>TYPE_INSTANCE</TYPE><ARGUMENT>Thing</ARGUMENT>
+                      <REQUIRED>TRUE</REQUIRED></SLOT></SLOTLIST></FRAME>
+                </KNOWLEDGEBASE>
+                """);
+        String t0 = "<FRAME><NAME>t0</NAME><ISA>Thing</ISA><ISINSTANCE>TRUE</ISINSTANCE></FRAME>";
+
+        Result r = run("infer", kb.toString(), "--max-depth", "20", "--assert", t0);
+        Result usage = run("infer", kb.toString(), "--max-depth", "0");
+
+        assertThat(r.code()).isEqualTo(1);
+        assertThat(r.err()).contains("infer: Inference stopped: 'Echo' would derive an instance resting on 20 derived "
+                + "instances, each made from the one before, so the knowledge base feeds itself; the frames firing "
+                + "most were 'Echo'.");
+        assertThat(usage.code()).isEqualTo(2);
+        assertThat(usage.err()).contains("--max-depth must be at least 1, not 0.");
+    }
+
+    @Test
     void infer_whenAssertingAClass_failsWithAMessage() {
         Result r = run("infer", TABLE5, "--assert",
                 "<FRAME><NAME>Ghost</NAME><ISA>User</ISA><ISINSTANCE>FALSE</ISINSTANCE></FRAME>");
