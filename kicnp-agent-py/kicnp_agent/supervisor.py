@@ -44,6 +44,7 @@ class Supervisor:
         self.last_failure = None
         """Why the last connection attempt (or connection) failed, for a timeout's message."""
         self._closing_error = None
+        self._early = []  # messages read before the register's answer, for the read loop
 
     @property
     def _options(self):
@@ -94,6 +95,7 @@ class Supervisor:
         LOG.error("%s The agent stops.", error, exc_info=cause)
 
     def _handshake(self, connection):
+        self._early = []  # what an earlier connection left
         connection.send({"type": "hello", "id": "hello", "agent": self._name, "kind": self._agent.kind.value,
                          "token": self._options.token})
         auth = self._await_direct(connection, "hello")
@@ -121,7 +123,8 @@ class Supervisor:
                 return message
             if message["type"] == "error" and message.get("id", request_id) in (request_id, ""):
                 return message
-            # heartbeats may come before registration
+            if message["type"] != "heartbeat":  # heartbeats may come before registration; anything else waits
+                self._early.append(message)     # for the read loop (a server of this protocol sends none then)
 
     def _start_heartbeats(self, connection):
         interval = self._options.heartbeat_interval
@@ -140,27 +143,33 @@ class Supervisor:
         threading.Thread(target=beat, name="agent-heartbeat-" + self._name, daemon=True).start()
 
     def _read_loop(self, connection):
+        # What came before the answer to the register: an older gateway could queue a command ahead of it.
+        early, self._early = self._early, []
+        for m in early:
+            self._handle(m)
         while not self._closed.is_set():
-            m = connection.read()
-            kind = m["type"]
-            if kind == "command":
-                self._runner.command(Command(m["id"], m["robot"], m["action"], dict(m["args"])))
-            elif kind == "cancel":
-                self._runner.cancel(m["command"], m["reason"])
-            elif kind == "feedback":
-                self._agent._feedback(Feedback(m["id"], m["robot"], m["stage"], m["detail"], m.get("progress")))
-            elif kind == "relay":
-                relay = Relay(m["id"], m["from"], m["subject"], m["body"], m.get("toAgent"), m.get("toKind"))
-                self._events.put(functools.partial(self._agent.on_relay, relay))
-            elif kind == "changed":
-                values = m.get("values")
-                change = Changed(m["ofClass"], m["change"], m["name"], m.get("frame"),
-                                 None if values is None else value_from_json(values))
-                self._events.put(functools.partial(self._agent._changed, change))
-            elif kind == "error":
-                self._error(m)
-            elif kind != "heartbeat":
-                self._complete(m)
+            self._handle(connection.read())
+
+    def _handle(self, m):
+        kind = m["type"]
+        if kind == "command":
+            self._runner.command(Command(m["id"], m["robot"], m["action"], dict(m["args"])))
+        elif kind == "cancel":
+            self._runner.cancel(m["command"], m["reason"])
+        elif kind == "feedback":
+            self._agent._feedback(Feedback(m["id"], m["robot"], m["stage"], m["detail"], m.get("progress")))
+        elif kind == "relay":
+            relay = Relay(m["id"], m["from"], m["subject"], m["body"], m.get("toAgent"), m.get("toKind"))
+            self._events.put(functools.partial(self._agent.on_relay, relay))
+        elif kind == "changed":
+            values = m.get("values")
+            change = Changed(m["ofClass"], m["change"], m["name"], m.get("frame"),
+                             None if values is None else value_from_json(values))
+            self._events.put(functools.partial(self._agent._changed, change))
+        elif kind == "error":
+            self._error(m)
+        elif kind != "heartbeat":
+            self._complete(m)
 
     def _error(self, m):
         if m["code"] == "superseded":

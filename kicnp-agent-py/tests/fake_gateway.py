@@ -10,7 +10,8 @@ class FakeGateway:
     """Accepts agents one connection after another, authenticates and registers each, keeps every message it
     receives, and hands the others to ``answer(gateway, message)`` (by default: no answer)."""
 
-    def __init__(self, answer=None):
+    def __init__(self, answer=None, before_register_answer=()):
+        self._before_register_answer = list(before_register_answer)  # sent ahead of the ack, as no gateway should
         self.listener = socket.create_server(("127.0.0.1", 0))
         self.port = self.listener.getsockname()[1]
         self.received = []
@@ -41,6 +42,8 @@ class FakeGateway:
                 if message["type"] == "hello":
                     self.send({"type": "auth_result", "id": message["id"], "accepted": True, "server": "fake"})
                 elif message["type"] == "register":
+                    for early in self._before_register_answer:
+                        self.send(early)
                     self.send({"type": "ack", "id": message["id"]})
                 else:
                     self._answer(self, message)

@@ -79,6 +79,28 @@ class NotConnectedTest(unittest.TestCase):
                          "day (86400 s), not 0.0005 s.", str(error.exception))
 
 
+class EarlyCommandTest(unittest.TestCase):
+
+    def test_aCommandSentBeforeTheAnswerToTheRegister_isCarriedOut_notPassedBy(self):
+        # A gateway of this protocol answers the register first; an older one could queue a command a behavior frame
+        # issued the moment the robot's presence appeared ahead of that answer.
+        server = FakeGateway(before_register_answer=[
+            {"type": "command", "id": "c1", "robot": "scout", "action": "wave", "args": {}}])
+        self.addCleanup(server.close)
+        robot = Agent("scout", "t", kind="robot", port=server.port)
+        self.addCleanup(robot.close)
+
+        @robot.action("wave")
+        def wave(command, action):
+            return "waved"
+
+        robot.start_and_wait(5)
+        eventually("the command is carried out", lambda: any(
+            m["type"] == "feedback" and m["stage"] == "ended" for m in server.received))
+        self.assertEqual([("c1", "started", ""), ("c1", "ended", "waved")],
+                         [(m["id"], m["stage"], m["detail"]) for m in server.received if m["type"] == "feedback"])
+
+
 class StandInGatewayTest(unittest.TestCase):
 
     def setUp(self):

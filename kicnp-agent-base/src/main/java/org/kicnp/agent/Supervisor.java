@@ -2,6 +2,8 @@ package org.kicnp.agent;
 
 import java.io.IOException;
 import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import java.util.Set;
@@ -50,6 +52,8 @@ final class Supervisor {
     /** The error, answering no request, with which the server announced it closes the current connection. */
     private volatile Message.ErrorReply closing;
     private volatile Thread thread;
+    /** Messages read while waiting for the answer to the hello or the register: handled once registered. */
+    private final List<Message> early = new ArrayList<>();
 
     Supervisor(AgentBase agent, AgentOptions options, PendingRequests pending, CommandRunner commands,
                EventQueue events, Set<String> subscriptions) {
@@ -184,6 +188,7 @@ final class Supervisor {
     }
 
     private void handshake(Connection c) throws IOException {
+        early.clear(); // what an earlier connection left
         c.send(new Message.Hello("hello", name(), options.kind(), options.token()));
         Message auth = awaitDirect(c, "hello");
         if (auth instanceof Message.AuthResult r && !r.accepted()) {
@@ -245,7 +250,8 @@ final class Supervisor {
                     }
                     return e;
                 }
-                default -> { } // heartbeats before registration
+                case Message.Heartbeat h -> { }
+                default -> early.add(m); // for the read loop, once registered
             }
         }
     }
@@ -286,46 +292,55 @@ final class Supervisor {
     }
 
     private void readLoop(Connection c) throws IOException {
+        // What the server sent before its answer to the register, a server of this protocol sends nothing else then:
+        // an older one could queue a command or relay ahead of it (see docs/protocol.md, "Connection life cycle").
+        for (Message m : early) {
+            handle(m);
+        }
+        early.clear();
         while (!closed) {
-            Message m = c.read();
-            switch (m) {
-                case Message.Command cmd -> commands.command(cmd);
-                case Message.Feedback f -> pending.feedback(f);
-                case Message.Relay r -> events.deliver(() -> agent.onRelay(r));
-                case Message.Changed ch -> events.deliver(() -> agent.onChanged(ch));
-                case Message.Heartbeat h -> { }
-                case Message.ErrorReply e when e.code() == ErrorCode.SUPERSEDED ->
-                        throw new AuthenticationException("Agent '" + name() + "' stops: " + e.message());
-                case Message.ErrorReply e when e.id().isEmpty() -> {
-                    LOG.warn("Agent '{}': server says {}: {}", name(), e.code(), e.message());
-                    if (e.code().closesConnection()) {
-                        closing = e;
-                    }
+            handle(c.read());
+        }
+    }
+
+    private void handle(Message m) {
+        switch (m) {
+            case Message.Command cmd -> commands.command(cmd);
+            case Message.Feedback f -> pending.feedback(f);
+            case Message.Relay r -> events.deliver(() -> agent.onRelay(r));
+            case Message.Changed ch -> events.deliver(() -> agent.onChanged(ch));
+            case Message.Heartbeat h -> { }
+            case Message.ErrorReply e when e.code() == ErrorCode.SUPERSEDED ->
+                    throw new AuthenticationException("Agent '" + name() + "' stops: " + e.message());
+            case Message.ErrorReply e when e.id().isEmpty() -> {
+                LOG.warn("Agent '{}': server says {}: {}", name(), e.code(), e.message());
+                if (e.code().closesConnection()) {
+                    closing = e;
                 }
-                case Message.ErrorReply e -> pending.complete(e.id().get(), e);
-                case Message.Ack a -> pending.complete(a.id(), a);
-                case Message.Frames f -> pending.complete(f.id(), f);
-                case Message.Answer a -> pending.complete(a.id(), a);
-                case Message.Proofs p -> pending.complete(p.id(), p);
-                case Message.Explained x -> pending.complete(x.id(), x);
-                case Message.NotFired x -> pending.complete(x.id(), x);
-                case Message.AuthResult a -> pending.complete(a.id(), a);
-                case Message.Hello h -> LOG.warn("Agent '{}' ignores an unexpected {}.", name(), h);
-                case Message.Register x -> LOG.warn("Agent '{}' ignores an unexpected register.", name());
-                case Message.SensorSignal x -> LOG.warn("Agent '{}' ignores an unexpected sensor signal.", name());
-                case Message.Query x -> LOG.warn("Agent '{}' ignores an unexpected query.", name());
-                case Message.Ask x -> LOG.warn("Agent '{}' ignores an unexpected ask.", name());
-                case Message.Assert x -> LOG.warn("Agent '{}' ignores an unexpected assert.", name());
-                case Message.Destroy x -> LOG.warn("Agent '{}' ignores an unexpected destroy.", name());
-                case Message.Subscribe x -> LOG.warn("Agent '{}' ignores an unexpected subscribe.", name());
-                case Message.Unsubscribe x -> LOG.warn("Agent '{}' ignores an unexpected unsubscribe.", name());
-                case Message.Push x -> LOG.warn("Agent '{}' ignores an unexpected push.", name());
-                case Message.Pull x -> LOG.warn("Agent '{}' ignores an unexpected pull.", name());
-                case Message.Cancel x -> commands.cancel(x);
-                case Message.Prove x -> LOG.warn("Agent '{}' ignores an unexpected prove.", name());
-                case Message.Why x -> LOG.warn("Agent '{}' ignores an unexpected why.", name());
-                case Message.WhyNot x -> LOG.warn("Agent '{}' ignores an unexpected why_not.", name());
             }
+            case Message.ErrorReply e -> pending.complete(e.id().get(), e);
+            case Message.Ack a -> pending.complete(a.id(), a);
+            case Message.Frames f -> pending.complete(f.id(), f);
+            case Message.Answer a -> pending.complete(a.id(), a);
+            case Message.Proofs p -> pending.complete(p.id(), p);
+            case Message.Explained x -> pending.complete(x.id(), x);
+            case Message.NotFired x -> pending.complete(x.id(), x);
+            case Message.AuthResult a -> pending.complete(a.id(), a);
+            case Message.Hello h -> LOG.warn("Agent '{}' ignores an unexpected {}.", name(), h);
+            case Message.Register x -> LOG.warn("Agent '{}' ignores an unexpected register.", name());
+            case Message.SensorSignal x -> LOG.warn("Agent '{}' ignores an unexpected sensor signal.", name());
+            case Message.Query x -> LOG.warn("Agent '{}' ignores an unexpected query.", name());
+            case Message.Ask x -> LOG.warn("Agent '{}' ignores an unexpected ask.", name());
+            case Message.Assert x -> LOG.warn("Agent '{}' ignores an unexpected assert.", name());
+            case Message.Destroy x -> LOG.warn("Agent '{}' ignores an unexpected destroy.", name());
+            case Message.Subscribe x -> LOG.warn("Agent '{}' ignores an unexpected subscribe.", name());
+            case Message.Unsubscribe x -> LOG.warn("Agent '{}' ignores an unexpected unsubscribe.", name());
+            case Message.Push x -> LOG.warn("Agent '{}' ignores an unexpected push.", name());
+            case Message.Pull x -> LOG.warn("Agent '{}' ignores an unexpected pull.", name());
+            case Message.Cancel x -> commands.cancel(x);
+            case Message.Prove x -> LOG.warn("Agent '{}' ignores an unexpected prove.", name());
+            case Message.Why x -> LOG.warn("Agent '{}' ignores an unexpected why.", name());
+            case Message.WhyNot x -> LOG.warn("Agent '{}' ignores an unexpected why_not.", name());
         }
     }
 

@@ -189,6 +189,39 @@ class AgentBaseTest {
         }
     }
 
+    /**
+     * A server of this protocol answers a register before it sends the agent anything else; one that did not (an
+     * older gateway could queue a command a behavior frame issued the moment the robot's presence appeared ahead of
+     * the answer) no longer has that command passed by while the agent waits for the answer: it runs once registered.
+     */
+    @Test
+    void commandSentBeforeTheAnswerToTheRegister_isCarriedOut_notPassedBy() throws Exception {
+        BlockingQueue<Message> heard = new LinkedBlockingQueue<>();
+        try (FakeGateway server = new FakeGateway(peer -> {
+            peer.authenticate();
+            Message.Register reg = (Message.Register) peer.readSkippingHeartbeats();
+            peer.send(new Message.Command("c1", "bot", "wave", java.util.Map.of()));
+            peer.send(new Message.Ack(reg.id()));
+            while (true) {
+                heard.add(peer.readSkippingHeartbeats());
+            }
+        });
+             AgentBase bot = new AgentBase(AgentOptions.of("127.0.0.1", server.port(), "bot", AgentKind.ROBOT, "t")) {
+                 @Override protected void onCommand(Message.Command command, ActionHandle handle) {
+                     handle.started();
+                     handle.ended("waved");
+                 }
+             }) {
+            bot.startAndAwait(Duration.ofSeconds(10));
+
+            Message first = heard.poll(10, TimeUnit.SECONDS);
+            Message second = heard.poll(10, TimeUnit.SECONDS);
+            assertThat(List.of(first, second)).extracting(m -> ((Message.Feedback) m).stage().name())
+                    .containsExactly("STARTED", "ENDED");
+            assertThat(((Message.Feedback) second).detail()).isEqualTo("waved");
+        }
+    }
+
     /** A subscription the server refuses to renew after a reconnect is reported to the agent, and has ended. */
     @Test
     void resubscription_refusedAfterAReconnect_isReportedThroughOnSubscriptionRefused() throws Exception {
