@@ -292,8 +292,8 @@ final class Supervisor {
     }
 
     private void readLoop(Connection c) throws IOException {
-        // What the server sent before its answer to the register, a server of this protocol sends nothing else then:
-        // an older one could queue a command or relay ahead of it (see docs/protocol.md, "Connection life cycle").
+        // First what the server sent before its answer to the register: nothing from a server of this protocol, but
+        // an older one could queue a command or a relay ahead of it (docs/protocol.md, "Connection life cycle").
         for (Message m : early) {
             handle(m);
         }
