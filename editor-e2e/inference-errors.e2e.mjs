@@ -22,6 +22,15 @@ try {
   await page.locator('#inference-errors').waitFor({ state: 'visible' });
   check((await page.textContent('#inference-errors')).includes('Nope'), 'the error does not name the class');
 
+  step = 'a reload of the view (as opening it, a refresh or a live event starts) leaves the question\'s error';
+  await Promise.all([
+    page.waitForResponse((r) => new URL(r.url()).pathname === '/api/inference'),
+    page.click('#inference-refresh'),
+  ]);
+  await page.evaluate(() => new Promise((done) => setTimeout(done, 200))); // the page has applied the answer
+  check(await page.isVisible('#inference-errors'), 'the reload of the view hid the error about Nope');
+  check((await page.textContent('#inference-errors')).includes('Nope'), 'the error no longer names the class');
+
   step = 'the next question answered clears that error';
   await page.fill('#ask-class', 'Robot');
   await page.press('#ask-class', 'Enter');

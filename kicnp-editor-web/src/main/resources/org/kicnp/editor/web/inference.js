@@ -7,6 +7,33 @@ import { openFrame } from './frame.js';
 
 let inferenceTimer = null;
 
+// The errors shown come from the view's status (its reload: on opening, on refresh, on live events) or from a
+// question (ask, prove, why-not, why, run). A question's error stays until the next question is answered, whatever
+// reloads the status meanwhile — the reload that opening the view starts could come back after a question asked at
+// once and hide its error — and a question answered after a later one was asked does not overwrite that one's outcome.
+let errorsOf = null;
+let asked = 0;
+let shownFor = 0;
+
+function statusOutcome(error) {
+  if (error) {
+    errorsOf = 'status';
+    showErrors('inference-errors', error);
+  } else if (errorsOf === 'status') {
+    errorsOf = null;
+    showErrors('inference-errors', null);
+  }
+}
+
+/** Shows the outcome of question number `ticket` (its error, or none); false when a later question's is shown already. */
+function questionOutcome(ticket, error) {
+  if (ticket < shownFor) return false;
+  shownFor = ticket;
+  errorsOf = error ? 'question' : null;
+  showErrors('inference-errors', error || null);
+  return true;
+}
+
 export function scheduleInferenceReload() {
   clearTimeout(inferenceTimer);
   inferenceTimer = setTimeout(() => loadInference().catch(() => {}), 300);
@@ -41,30 +68,31 @@ export async function loadInference() {
       el('td', { text: String(a.depth) }),
       el('td', { text: String(a.recency) })))
       : [el('tr', {}, el('td', { colspan: '5', class: 'muted', text: 'The agenda is empty.' }))]));
-    showErrors('inference-errors', null);
+    statusOutcome(null);
   } catch (e) {
-    showErrors('inference-errors', e);
+    statusOutcome(e);
   }
 }
 
 export async function runInference() {
+  const ticket = ++asked;
   try {
     const r = await api('POST', '/api/inference/run', {});
+    questionOutcome(ticket, null);
     await loadInference();
     $('inference-meta').textContent += ' · last run: ' + r.firings + ' firing(s)';
   } catch (e) {
-    showErrors('inference-errors', e);
+    questionOutcome(ticket, e);
   }
 }
 
 async function why(instance) {
+  const ticket = ++asked;
   try {
     const e = await api('GET', '/api/inference/why/' + enc(instance));
-    $('why-tree').replaceChildren(el('ul', {}, explanationItem(e)));
-    showErrors('inference-errors', null);
+    if (questionOutcome(ticket, null)) $('why-tree').replaceChildren(el('ul', {}, explanationItem(e)));
   } catch (err) {
-    $('why-tree').replaceChildren();
-    showErrors('inference-errors', err);
+    if (questionOutcome(ticket, err)) $('why-tree').replaceChildren();
   }
 }
 
@@ -82,28 +110,30 @@ function explanationItem(e) {
 
 export async function askInference(event) {
   event.preventDefault();
+  const ticket = ++asked;
   try {
     const answers = await api('GET', '/api/inference/ask?class=' + enc($('ask-class').value.trim()));
+    if (!questionOutcome(ticket, null)) return;
     $('ask-answers').replaceChildren(...(answers.length ? answers.map((a) => el('li', {
       text: (a.instance || '(new ' + a.className + ')') + (a.derivable ? ' — derivable' : ' — exists')
         + (Object.keys(a.slots).length ? ': ' + Object.entries(a.slots).map(([k, v]) => k + '=' + v).join(', ') : '')
     })) : [el('li', { class: 'muted', text: 'No instance exists or could be derived.' })]));
-    showErrors('inference-errors', null);
   } catch (e) {
-    refused(e);
+    refused(ticket, e);
   }
 }
 
 export async function proveInference() {
   const cls = $('ask-class').value.trim();
   if (!cls) return;
+  const ticket = ++asked;
   try {
     const proofs = await api('GET', '/api/inference/prove?class=' + enc(cls));
+    if (!questionOutcome(ticket, null)) return;
     $('ask-answers').replaceChildren(...(proofs.length ? proofs.map(proofItem)
       : [el('li', { class: 'muted', text: 'Nothing to prove: no instance exists or could be derived.' })]));
-    showErrors('inference-errors', null);
   } catch (e) {
-    refused(e);
+    refused(ticket, e);
   }
 }
 
@@ -111,8 +141,10 @@ export async function proveInference() {
 export async function whyNotInference() {
   const frame = $('ask-class').value.trim();
   if (!frame) return;
+  const ticket = ++asked;
   try {
     const w = await api('GET', '/api/inference/why-not?frame=' + enc(frame));
+    if (!questionOutcome(ticket, null)) return;
     const slots = w.slots.map((s) => el('li', {},
       el('span', { class: 'what', text: s.slot }),
       el('span', { class: 'how', text: ' (' + s.argument + ', ' + s.condition + '): '
@@ -123,16 +155,14 @@ export async function whyNotInference() {
       el('span', { class: 'what', text: Object.entries(b.binding).map(([k, v]) => k + '=' + v).join(', ') }),
       el('span', { class: 'how', text: ' — ' + b.reason })));
     $('ask-answers').replaceChildren(el('li', { class: 'why-not-summary', text: w.summary }), ...slots, ...bindings);
-    showErrors('inference-errors', null);
   } catch (e) {
-    refused(e);
+    refused(ticket, e);
   }
 }
 
 // A refused question: its error replaces the answers to the last one, which would read as answers to this one.
-function refused(error) {
-  $('ask-answers').replaceChildren();
-  showErrors('inference-errors', error);
+function refused(ticket, error) {
+  if (questionOutcome(ticket, error)) $('ask-answers').replaceChildren();
 }
 
 function proofItem(p) {
