@@ -11,6 +11,7 @@ import java.util.Optional;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.function.BiFunction;
+import java.util.function.Function;
 import java.util.function.Supplier;
 import org.kicnp.core.Condition;
 import org.kicnp.core.Frame;
@@ -33,6 +34,8 @@ final class BackwardChainer {
     private final EngineOptions options;
     private final Supports supports;
     private final Supplier<List<Rule>> rules;
+    /** The compiled rule of a behavior frame ({@link ForwardChainer#rule}). */
+    private final Function<String, Optional<Rule>> rule;
     /** Why a script condition of a binding of real instances is false or fails, if one is ({@link ScriptCalls}). */
     private final BiFunction<Rule, Map<String, String>, Optional<String>> scriptFails;
     /** The bindings whose script conditions the current question has run (at most {@code maxAnswers}). */
@@ -42,11 +45,13 @@ final class BackwardChainer {
     private int steps;
 
     BackwardChainer(KnowledgeBase kb, EngineOptions options, Supports supports, Supplier<List<Rule>> rules,
+                    Function<String, Optional<Rule>> rule,
                     BiFunction<Rule, Map<String, String>, Optional<String>> scriptFails) {
         this.kb = kb;
         this.options = options;
         this.supports = supports;
         this.rules = rules;
+        this.rule = rule;
         this.scriptFails = scriptFails;
     }
 
@@ -229,9 +234,8 @@ final class BackwardChainer {
             }
             Map<String, String> its = new LinkedHashMap<>();
             hypo.get(n).forEach((slot, v) -> its.put(slot, ((Value.Ref) v).frame()));
-            String frame = hypo.get(n + "/class").get("class").text();
-            Optional<Rule> rule = rules.get().stream().filter(x -> x.frame().equals(frame)).findFirst();
-            if (rule.isPresent() && !claim(rule.get(), its, n, owners)) {
+            Optional<Rule> made = rule.apply(hypo.get(n + "/class").get("class").text());
+            if (made.isPresent() && !claim(made.get(), its, n, owners)) {
                 return true;
             }
             todo.addAll(its.values());

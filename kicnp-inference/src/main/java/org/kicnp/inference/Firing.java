@@ -81,8 +81,11 @@ final class Firing {
         return true;
     }
 
-    /** Fires one activation that {@link #mayFire may fire}: creates the instance and runs its onInstantiate script. */
-    void fire(Activation a) {
+    /**
+     * Fires one activation that {@link #mayFire may fire}: creates the instance, {@code depth} deep
+     * ({@link Derivation#depthOver}, which the run has checked against its limit), and runs its onInstantiate script.
+     */
+    void fire(Activation a, int depth) {
         Rule r = a.rule();
         FactView.Fact[] refs = a.refs();
         // A rule with no optional slot (most) binds its required slots only: the derivation takes the activation's
@@ -94,7 +97,6 @@ final class Firing {
         List<Derivation.CheckedCondition> checked = plain ? null : CheckedConditions.of(r, full, refs, facts,
                 conditions);
         long firing = ++firings;
-        int depth = Derivation.depthOver(refs);
         supports.markFired(a.key(), refs); // refracted even when the instance cannot be made
         String name;
         while (true) {

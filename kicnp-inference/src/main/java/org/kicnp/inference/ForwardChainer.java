@@ -463,8 +463,9 @@ final class ForwardChainer {
     }
 
     /** Fires one activation that {@link #mayFire may fire} ({@link Firing#fire}). */
-    void fire(Activation a) {
-        firing.fire(a);
+    /** Fires {@code a}, whose instance rests {@code depth} deep ({@link Derivation#depthOver}). */
+    void fire(Activation a, int depth) {
+        firing.fire(a, depth);
     }
 
     // ---- truth maintenance ----

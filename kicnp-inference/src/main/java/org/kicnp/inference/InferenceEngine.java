@@ -88,7 +88,8 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
             }
         });
         this.forward = new ForwardChainer(kb, facts, conditions, supports, scripts, this::trace, () -> !tracers.isEmpty());
-        this.backward = new BackwardChainer(kb, options, supports, forward::rules, scripts::conditionFails);
+        this.backward = new BackwardChainer(kb, options, supports, forward::rules, forward::rule,
+                scripts::conditionFails);
         this.loop = new RunLoop(lock, options, forward, actions, burst, this::trace, runner);
         this.listener = loop::changed;
     }

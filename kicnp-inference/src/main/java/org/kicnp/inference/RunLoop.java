@@ -99,14 +99,15 @@ final class RunLoop {
                 }
                 // A runaway fed by changes from outside often enough never fires maxFirings in a row; the chain of
                 // instances it derives, each from the one before, grows all the same.
-                if (Derivation.depthOver(next.refs()) > options.maxDerivationDepth()) {
+                int depth = Derivation.depthOver(next.refs());
+                if (depth > options.maxDerivationDepth()) {
                     forward.clearAgenda();
                     List<String> top = mostFiring(count, Math.min(count, RECENT));
                     throw stopped(options.maxDerivationDepth(), InferenceLimitException.deeperThan(
                             options.maxDerivationDepth(), next.rule().frame(), top));
                 }
                 burst.beforeFiring();
-                forward.fire(next);
+                forward.fire(next, depth);
                 burst.afterFiring();
             }
         } finally {
