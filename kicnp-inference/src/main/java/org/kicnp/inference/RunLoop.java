@@ -7,6 +7,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.Executor;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Consumer;
@@ -171,16 +172,31 @@ final class RunLoop {
         inbox.add(lock.isHeldByCurrentThread() && running ? work : new FromOutside(work));
         runner.ifPresent(ex -> {
             if (scheduled.compareAndSet(false, true)) {
-                ex.execute(() -> {
-                    scheduled.set(false);
-                    try {
-                        run();
-                    } catch (RuntimeException e) {
-                        LOG.error("Inference run failed: {}", e.getMessage(), e);
-                    }
-                });
+                schedule(ex);
             }
         });
+    }
+
+    /**
+     * Hands a run to the engine's executor. One that refuses it (shut down, or a bounded pool that is full) leaves the
+     * work queued and the run unscheduled, so the next arrival or {@link InferenceEngine#tick()} schedules it again; the
+     * caller, often a robot's feedback or a commit of the knowledge base on another thread, is not failed for it.
+     */
+    private void schedule(Executor ex) {
+        try {
+            ex.execute(() -> {
+                scheduled.set(false);
+                try {
+                    run();
+                } catch (RuntimeException e) {
+                    LOG.error("Inference run failed: {}", e.getMessage(), e);
+                }
+            });
+        } catch (RejectedExecutionException e) {
+            scheduled.set(false);
+            LOG.warn("The engine's executor refused a run ({}); what is queued waits for the next one.",
+                    e.getMessage());
+        }
     }
 
     /**

@@ -68,6 +68,30 @@ class ThreadingTest {
     }
 
     @Test
+    void runOn_anExecutorThatRefusesARun_failsNoCallerAndRunsWhenItAcceptsAgain() throws Exception {
+        Fixture f = ForwardChainingTest.chain3();
+        java.util.concurrent.atomic.AtomicBoolean refusing = new java.util.concurrent.atomic.AtomicBoolean(true);
+        java.util.concurrent.ExecutorService pool = java.util.concurrent.Executors.newSingleThreadExecutor();
+        java.util.concurrent.Executor owner = task -> { // a bounded pool that is full, then has room
+            if (refusing.get()) {
+                throw new java.util.concurrent.RejectedExecutionException("the pool is full");
+            }
+            pool.execute(task);
+        };
+        try {
+            InferenceEngine e = InferenceEngine.builder(f.kb).runOn(owner).build();
+            f.assertFact("s1", "Stimulus"); // the commit's caller is not failed by the engine's executor
+            assertThat(f.instancesOf("Step1")).isEmpty();
+            refusing.set(false);
+            e.tick(); // the next arrival schedules the run the executor refused
+            await(() -> f.kb.countInstancesOf("Step3") == 1);
+            assertThat(f.instancesOf("Step3")).hasSize(1);
+        } finally {
+            pool.shutdownNow();
+        }
+    }
+
+    @Test
     void tick_onSelfRunningEngine_timesOutOverdueActions() throws Exception {
         Fixture f = new Fixture();
         f.cls("Go", null);
