@@ -36,6 +36,8 @@ final class RunLoop {
     private final Optional<Executor> runner;
     private final ConcurrentLinkedQueue<Runnable> inbox = new ConcurrentLinkedQueue<>();
     private final AtomicBoolean scheduled = new AtomicBoolean();
+    /** Whether the executor refused the last run it was handed; the warning is logged once per such spell. */
+    private volatile boolean refusing;
     /** Whether {@link #run()} is running on the thread that holds {@link #lock}; read under it only. */
     private boolean running;
     /**
@@ -192,10 +194,16 @@ final class RunLoop {
                     LOG.error("Inference run failed: {}", e.getMessage(), e);
                 }
             });
+            refusing = false;
         } catch (RejectedExecutionException e) {
             scheduled.set(false);
-            LOG.warn("The engine's executor refused a run ({}); what is queued waits for the next one.",
-                    e.getMessage());
+            if (!refusing) { // once until it takes a run again: an executor shut down refuses every arrival after
+                refusing = true;
+                LOG.warn("The engine's executor refused a run ({}); what is queued waits for the next one.",
+                        e.getMessage());
+            } else {
+                LOG.debug("The engine's executor refused a run again ({}).", e.getMessage());
+            }
         }
     }
 
