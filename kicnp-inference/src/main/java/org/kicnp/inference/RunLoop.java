@@ -194,7 +194,9 @@ final class RunLoop {
                     LOG.error("Inference run failed: {}", e.getMessage(), e);
                 }
             });
-            refusing = false;
+            if (refusing) { // read first: no write to the shared field for every run handed over
+                refusing = false;
+            }
         } catch (RejectedExecutionException e) {
             scheduled.set(false);
             if (!refusing) { // once until it takes a run again: an executor shut down refuses every arrival after

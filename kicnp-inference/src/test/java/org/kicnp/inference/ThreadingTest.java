@@ -80,7 +80,7 @@ class ThreadingTest {
         };
         try {
             InferenceEngine e = InferenceEngine.builder(f.kb).runOn(owner).build();
-            f.assertFact("s1", "Stimulus"); // the commit's caller is not failed by the engine's executor
+            f.assertFact("s1", "Stimulus"); // queued; the executor refuses the run it schedules
             assertThat(f.instancesOf("Step1")).isEmpty();
             refusing.set(false);
             e.tick(); // the next arrival schedules the run the executor refused
