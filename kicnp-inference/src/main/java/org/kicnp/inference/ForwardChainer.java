@@ -211,6 +211,7 @@ final class ForwardChainer {
         }
         fact.seen(f);
         fact.stamp = stamp;
+        scripts.forget(f.name()); // a name used again: nothing kept of the instance that had it
         if (tracing.getAsBoolean()) {
             trace(new TraceEvent.FactAsserted(f.name(), cls, stamp));
         }
@@ -230,6 +231,7 @@ final class ForwardChainer {
     private void factRemoved(Frame f) {
         String name = f.name();
         trace(new TraceEvent.FactRemoved(name));
+        scripts.forget(name);
         network.retract(name);
         agenda.withdrawFact(name);
         supports.factGone(name);
@@ -256,6 +258,7 @@ final class ForwardChainer {
     private void factReplaced(Frame before, Frame after) {
         String name = after.name();
         facts.put(after);
+        scripts.forget(name);
         Set<String> changed = changedSlots(before, after);
         scripts.runDemons(before, after, changed);
         String cls = after.parent().orElseThrow();
@@ -281,6 +284,7 @@ final class ForwardChainer {
     }
 
     private void refresh(String name) {
+        scripts.forget(name); // it, or an instance it reads through, changed
         FactView.Fact f = facts.get(name);
         if (f != null) {
             for (Activation a : f.activations()) {
@@ -342,6 +346,7 @@ final class ForwardChainer {
             return;
         }
         trace(new TraceEvent.FactChanged(name));
+        scripts.forget(name); // it, its class or an instance it reads through changed
         network.retract(name);
         agenda.withdrawFact(name);
         for (String dep : supports.dependentsOf(name)) {
@@ -404,6 +409,7 @@ final class ForwardChainer {
     }
 
     private void uninstall(String frame) {
+        scripts.forgetFrame(frame); // its script conditions may be others now, or gone
         if (rules.remove(frame) != null) {
             network.removeRule(frame);
             agenda.withdrawRule(frame);

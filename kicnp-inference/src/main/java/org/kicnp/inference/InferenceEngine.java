@@ -332,7 +332,8 @@ public final class InferenceEngine implements ActionFeedback, AutoCloseable {
             for (Activation a : forward.agenda()) {
                 waiting.add(a.key());
             }
-            return new WhyNotCheck(kb, supports, scripts::conditionFails, options.maxAnswers()).check(r, partialBindings, waiting);
+            return new WhyNotCheck(kb, supports, scripts::conditionFailsNow, options.maxAnswers())
+                    .check(r, partialBindings, waiting);
         } finally {
             lock.unlock();
         }

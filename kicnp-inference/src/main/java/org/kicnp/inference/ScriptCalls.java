@@ -2,6 +2,7 @@ package org.kicnp.inference;
 
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.HashMap;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -29,6 +30,15 @@ final class ScriptCalls {
      * binding, so it is logged once and traced every time.
      */
     private final Set<String> conditionFailuresLogged = new HashSet<>();
+    /**
+     * The outcomes of script conditions that rest on one instance only, by that instance, then by frame and slot
+     * (see {@link #conditionFails}): empty, the condition held; else why the binding is blocked.
+     */
+    private final Map<String, Map<ConditionSlot, Optional<String>>> outcomes = new HashMap<>();
+
+    /** A script condition: the slot of a behavior frame it is written on. */
+    private record ConditionSlot(String frame, String slot) {
+    }
 
     /** What applying effects needs from the forward chainer. */
     interface Target {
@@ -177,29 +187,91 @@ final class ScriptCalls {
         }
     }
 
-    /** Why a script condition of the binding fails, if one does: false, or it threw. */
+    /**
+     * Why a script condition of the binding fails, if one does: false, or it threw. A condition whose run read only its
+     * own slot gave an outcome that rests on that slot's instance alone ({@link ConditionView}); it is kept for that
+     * instance and frame ({@link #outcomes}) and given to every later binding with that instance in that slot, so
+     * that a new instance joining many others does not run one condition per pair (Table 5's rows wait on an
+     * {@code ActionFeedback} with {@code s.mDone.frame == 'X'}: each new user met every feedback there was). What the
+     * outcome rests on is the instance as the knowledge base shows it; the engine forgets it when the instance, or
+     * one it reads through, changes or goes ({@link #forget}) and when the frame is installed again
+     * ({@link #forgetFrame}). A run that threw is not kept (a time limit may cut a run short on a busy machine).
+     */
     Optional<String> conditionFails(Rule r, Map<String, String> binding) {
+        return conditionFails(r, binding, true);
+    }
+
+    /**
+     * As {@link #conditionFails}, every script condition run afresh and nothing kept: what the scripts say now, for
+     * {@code whyNot}, which is asked when the engine's view and the world may differ.
+     */
+    Optional<String> conditionFailsNow(Rule r, Map<String, String> binding) {
+        return conditionFails(r, binding, false);
+    }
+
+    private Optional<String> conditionFails(Rule r, Map<String, String> binding, boolean keep) {
         for (SlotPattern p : r.patterns()) {
             if (p.condition() instanceof org.kicnp.core.Condition.Script s && binding.containsKey(p.slot())) {
-                Map<String, Object> view = new LinkedHashMap<>();
-                binding.forEach((slot, fact) -> view.put(slot, new FrameView(kb, fact, 0)));
-                try {
-                    Map<String, Object> g = new LinkedHashMap<>();
-                    g.put("s", Collections.unmodifiableMap(view));
-                    if (!host.test(r.frame(), p.slot(), s.source(), g)) {
-                        return Optional.of("the script condition of slot '" + p.slot() + "' is false");
-                    }
-                } catch (RuntimeException e) {
-                    trace(new TraceEvent.ScriptFailed(r.frame(), p.slot(), "", message(e)));
-                    if (conditionFailuresLogged.add(r.frame() + "." + p.slot())) {
-                        LOG.warn("The script condition of slot '{}' of frame '{}' failed, so it counts as false (later "
-                                + "failures of it are in the trace only): {}", p.slot(), r.frame(), message(e));
-                    }
-                    return Optional.of("the script condition of slot '" + p.slot() + "' failed: " + message(e));
+                String fact = binding.get(p.slot());
+                Map<ConditionSlot, Optional<String>> kept = keep ? outcomes.get(fact) : null;
+                ConditionSlot at = keep ? new ConditionSlot(r.frame(), p.slot()) : null;
+                Optional<String> outcome = kept == null ? null : kept.get(at);
+                if (outcome == null) {
+                    outcome = run(r, p.slot(), s.source(), binding, fact, at);
+                }
+                if (outcome.isPresent()) {
+                    return outcome;
                 }
             }
         }
         return Optional.empty();
+    }
+
+    /**
+     * Runs one script condition for a binding; keeps the outcome under {@code at} (null: not kept) when the run read
+     * only its own slot.
+     */
+    private Optional<String> run(Rule r, String slot, String source, Map<String, String> binding, String fact,
+            ConditionSlot at) {
+        ConditionView view = new ConditionView(kb, binding, slot);
+        Optional<String> outcome;
+        try {
+            Map<String, Object> g = new LinkedHashMap<>();
+            g.put("s", view);
+            outcome = host.test(r.frame(), slot, source, g) ? Optional.empty()
+                    : Optional.of("the script condition of slot '" + slot + "' is false");
+        } catch (RuntimeException e) {
+            trace(new TraceEvent.ScriptFailed(r.frame(), slot, "", message(e)));
+            if (conditionFailuresLogged.add(r.frame() + "." + slot)) {
+                LOG.warn("The script condition of slot '{}' of frame '{}' failed, so it counts as false (later "
+                        + "failures of it are in the trace only): {}", slot, r.frame(), message(e));
+            }
+            return Optional.of("the script condition of slot '" + slot + "' failed: " + message(e));
+        }
+        if (at != null && !view.readOther() && kb.contains(fact)) {
+            outcomes.computeIfAbsent(fact, f -> new HashMap<>(4)).put(at, outcome);
+        }
+        return outcome;
+    }
+
+    /**
+     * Forgets the kept script condition outcomes that rest on {@code instance}: it was added, changed or removed, or
+     * an instance it refers to changed (the engine matches it again then).
+     */
+    void forget(String instance) {
+        if (!outcomes.isEmpty()) { // most knowledge bases have no script condition: no look-up per event
+            outcomes.remove(instance);
+        }
+    }
+
+    /** Forgets the kept outcomes of a frame's script conditions: it is installed again (its scripts may differ). */
+    void forgetFrame(String frame) {
+        if (!outcomes.isEmpty()) {
+            outcomes.values().removeIf(m -> {
+                m.keySet().removeIf(k -> k.frame().equals(frame));
+                return m.isEmpty();
+            });
+        }
     }
 
     /** Runs the onAdded / onRemoved demons of the slots an instance change touched. */

@@ -19,7 +19,7 @@ final class WhyNotCheck {
     private final KnowledgeBase kb;
     private final Supports supports;
     private final Conditions conditions;
-    /** Why a script condition of a binding is false or fails, if one is ({@link ScriptCalls#conditionFails}). */
+    /** Why a script condition of a binding is false or fails now, if one is ({@link ScriptCalls#conditionFailsNow}). */
     private final BiFunction<Rule, Map<String, String>, Optional<String>> scriptFails;
     private final int limit;
 
