@@ -35,6 +35,11 @@ final class ScriptCalls {
      * (see {@link #conditionFails}): empty, the condition held; else why the binding is blocked.
      */
     private final Map<String, Map<ConditionSlot, Optional<String>>> outcomes = new HashMap<>();
+    /**
+     * Each script condition's text decided without GraalJS where it can be ({@link SimpleCondition}), or empty: parsed
+     * once per text. A text that is not simple runs as a script, as every one did before.
+     */
+    private final Map<String, Optional<SimpleCondition>> simple = new HashMap<>();
 
     /** A script condition: the slot of a behavior frame it is written on. */
     private record ConditionSlot(String frame, String slot) {
@@ -195,7 +200,9 @@ final class ScriptCalls {
      * {@code ActionFeedback} with {@code s.mDone.frame == 'X'}: each new user met every feedback there was). What the
      * outcome rests on is the instance as the knowledge base shows it; the engine forgets it when the instance, or
      * one it reads through, changes or goes ({@link #forget}) and when the frame is installed again
-     * ({@link #forgetFrame}). A run that threw is not kept (a time limit may cut a run short on a busy machine).
+     * ({@link #forgetFrame}). A run that threw is not kept (a time limit may cut a run short on a busy machine). A
+     * condition of the simple forms is decided without GraalJS where that gives the script's answer
+     * ({@link SimpleCondition}); its outcome is kept the same way.
      */
     Optional<String> conditionFails(Rule r, Map<String, String> binding) {
         return conditionFails(r, binding, true);
@@ -236,10 +243,17 @@ final class ScriptCalls {
         ConditionView view = new ConditionView(kb, binding, slot);
         Optional<String> outcome;
         try {
-            Map<String, Object> g = new LinkedHashMap<>();
-            g.put("s", view);
-            outcome = host.test(r.frame(), slot, source, g) ? Optional.empty()
-                    : Optional.of("the script condition of slot '" + slot + "' is false");
+            Optional<Boolean> decided = simple.computeIfAbsent(source, SimpleCondition::parse)
+                    .flatMap(c -> c.test(view));
+            boolean holds;
+            if (decided.isPresent()) {
+                holds = decided.get();
+            } else {
+                Map<String, Object> g = new LinkedHashMap<>();
+                g.put("s", view);
+                holds = host.test(r.frame(), slot, source, g);
+            }
+            outcome = holds ? Optional.empty() : Optional.of("the script condition of slot '" + slot + "' is false");
         } catch (RuntimeException e) {
             trace(new TraceEvent.ScriptFailed(r.frame(), slot, "", message(e)));
             if (conditionFailuresLogged.add(r.frame() + "." + slot)) {

@@ -21,7 +21,8 @@ import org.kicnp.script.ScriptRuntime;
 
 /**
  * A script condition whose run reads only its own slot is run once per instance there, not once per binding, and
- * run again when what its outcome rests on changes (real GraalJS; a counting wrapper around the engine's host).
+ * run again when what its outcome rests on changes (real GraalJS; a counting wrapper around the engine's host). The
+ * conditions call {@code Number()}, which keeps them out of {@link SimpleCondition}: each decision is a script run.
  */
 class ScriptConditionOutcomeTest {
     private static ScriptRuntime runtime;
@@ -97,7 +98,7 @@ class ScriptConditionOutcomeTest {
 
     @Test
     void aConditionReadingOnlyItsOwnSlot_runsOncePerInstance_notOncePerBinding() {
-        KnowledgeBase kb = kb("js: s.mUser.age > 3");
+        KnowledgeBase kb = kb("js: Number(s.mUser.age) > 3");
         try (InferenceEngine e = InferenceEngine.builder(kb).scripts(host).build()) {
             user(kb, "baby", 2, "Ken");
             user(kb, "kid", 7, "Ann");
@@ -117,9 +118,28 @@ class ScriptConditionOutcomeTest {
     }
 
     @Test
+    void aSimpleCondition_isDecidedWithoutRunningTheScript_andKeptAsAScriptsOutcomeIs() {
+        KnowledgeBase kb = kb("js: s.mUser.age > 3 && s.mUser.name != 'Bo'");
+        try (InferenceEngine e = InferenceEngine.builder(kb).scripts(host).build()) {
+            user(kb, "baby", 2, "Ken");
+            user(kb, "kid", 7, "Ann");
+            user(kb, "teen", 15, "Bo");
+            mouth(kb, "m1", "Ann");
+            mouth(kb, "m2", "Bo");
+            e.runToQuiescence();
+
+            assertThat(talks(kb)).containsExactly("kid+m1", "kid+m2");
+            assertThat(host.conditionRuns).as("no GraalJS run").isZero();
+            user(kb, "kid", 2, "Ann");
+            e.runToQuiescence();
+            assertThat(talks(kb)).as("decided again after the change, and retracted").isEmpty();
+        }
+    }
+
+    @Test
     void aConditionReadingAnotherSlot_runsForEachBindingThatReadsIt_andDecidesEachPairItself() {
         // baby's run stops at its age, having read mUser only: kept. The others read mMouth too: run per pair.
-        KnowledgeBase kb = kb("js: s.mUser.age > 3 && s.mMouth.owner == s.mUser.name");
+        KnowledgeBase kb = kb("js: Number(s.mUser.age) > 3 && s.mMouth.owner == s.mUser.name");
         try (InferenceEngine e = InferenceEngine.builder(kb).scripts(host).build()) {
             user(kb, "baby", 2, "Ken");
             user(kb, "kid", 7, "Ann");
@@ -136,7 +156,7 @@ class ScriptConditionOutcomeTest {
 
     @Test
     void whenTheInstanceChanges_itsConditionRunsAgain_andWhatRestedOnTheOldOutcomeFollows() {
-        KnowledgeBase kb = kb("js: s.mUser.age > 3");
+        KnowledgeBase kb = kb("js: Number(s.mUser.age) > 3");
         try (InferenceEngine e = InferenceEngine.builder(kb).scripts(host).build()) {
             user(kb, "baby", 2, "Ken");
             mouth(kb, "m1", "Ann");
@@ -163,7 +183,7 @@ class ScriptConditionOutcomeTest {
 
     @Test
     void whenAnInstanceReadThroughTheSlotChanges_theConditionRunsAgain() {
-        KnowledgeBase kb = kb("js: s.mUser.friend.age > 3");
+        KnowledgeBase kb = kb("js: Number(s.mUser.friend.age) > 3");
         try (InferenceEngine e = InferenceEngine.builder(kb).scripts(host).build()) {
             user(kb, "pal", 2, "Pal");
             kb.add(Frame.instance("u", "User").provenance(Provenance.RUNTIME)
@@ -181,14 +201,14 @@ class ScriptConditionOutcomeTest {
 
     @Test
     void whenTheFrameIsEdited_itsConditionRunsAgain() {
-        KnowledgeBase kb = kb("js: s.mUser.age > 3");
+        KnowledgeBase kb = kb("js: Number(s.mUser.age) > 3");
         try (InferenceEngine e = InferenceEngine.builder(kb).scripts(host).build()) {
             user(kb, "kid", 7, "Ann");
             mouth(kb, "m1", "Ann");
             e.runToQuiescence();
             assertThat(talks(kb)).containsExactly("kid+m1");
 
-            kb.replace(talk("js: s.mUser.age > 8"));
+            kb.replace(talk("js: Number(s.mUser.age) > 8"));
             mouth(kb, "m2", "Bo");
             e.runToQuiescence();
 
