@@ -233,7 +233,8 @@ final class SimpleCondition {
             return n;
         }
 
-        private Node unary() {
+        /** {@code '!' negated} or {@code '(' condition ')'}; null when neither comes next. */
+        private Node prefixed() {
             if (take("!")) {
                 return new Not(negated());
             }
@@ -241,6 +242,14 @@ final class SimpleCondition {
                 Node n = condition();
                 expect(")");
                 return n;
+            }
+            return null;
+        }
+
+        private Node unary() {
+            Node prefixed = prefixed();
+            if (prefixed != null) {
+                return prefixed;
             }
             Operand left = operand();
             String op = operator();
@@ -254,15 +263,8 @@ final class SimpleCondition {
         }
 
         private Node negated() {
-            if (take("!")) {
-                return new Not(negated());
-            }
-            if (take("(")) {
-                Node n = condition();
-                expect(")");
-                return n;
-            }
-            return operand();
+            Node prefixed = prefixed();
+            return prefixed != null ? prefixed : operand();
         }
 
         private String operator() {

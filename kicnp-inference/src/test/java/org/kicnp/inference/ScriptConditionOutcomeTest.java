@@ -81,6 +81,13 @@ class ScriptConditionOutcomeTest {
                 .slot(Slot.ofValue("name", DataType.STRING, Value.of(called))).build());
     }
 
+    /** baby (2, Ken), kid (7, Ann), teen (15, Bo). */
+    private static void threeUsers(KnowledgeBase kb) {
+        user(kb, "baby", 2, "Ken");
+        user(kb, "kid", 7, "Ann");
+        user(kb, "teen", 15, "Bo");
+    }
+
     private static void mouth(KnowledgeBase kb, String name, String owner) {
         kb.add(Frame.instance(name, "Mouth").provenance(Provenance.RUNTIME)
                 .slot(Slot.ofValue("owner", DataType.STRING, Value.of(owner))).build());
@@ -100,9 +107,7 @@ class ScriptConditionOutcomeTest {
     void aConditionReadingOnlyItsOwnSlot_runsOncePerInstance_notOncePerBinding() {
         KnowledgeBase kb = kb("js: Number(s.mUser.age) > 3");
         try (InferenceEngine e = InferenceEngine.builder(kb).scripts(host).build()) {
-            user(kb, "baby", 2, "Ken");
-            user(kb, "kid", 7, "Ann");
-            user(kb, "teen", 15, "Bo");
+            threeUsers(kb);
             mouth(kb, "m1", "Ann");
             e.runToQuiescence();
             assertThat(host.conditionRuns).isEqualTo(3);
@@ -121,9 +126,7 @@ class ScriptConditionOutcomeTest {
     void aSimpleCondition_isDecidedWithoutRunningTheScript_andKeptAsAScriptsOutcomeIs() {
         KnowledgeBase kb = kb("js: s.mUser.age > 3 && s.mUser.name != 'Bo'");
         try (InferenceEngine e = InferenceEngine.builder(kb).scripts(host).build()) {
-            user(kb, "baby", 2, "Ken");
-            user(kb, "kid", 7, "Ann");
-            user(kb, "teen", 15, "Bo");
+            threeUsers(kb);
             mouth(kb, "m1", "Ann");
             mouth(kb, "m2", "Bo");
             e.runToQuiescence();
@@ -141,9 +144,7 @@ class ScriptConditionOutcomeTest {
         // baby's run stops at its age, having read mUser only: kept. The others read mMouth too: run per pair.
         KnowledgeBase kb = kb("js: Number(s.mUser.age) > 3 && s.mMouth.owner == s.mUser.name");
         try (InferenceEngine e = InferenceEngine.builder(kb).scripts(host).build()) {
-            user(kb, "baby", 2, "Ken");
-            user(kb, "kid", 7, "Ann");
-            user(kb, "teen", 15, "Bo");
+            threeUsers(kb);
             mouth(kb, "m1", "Ann");
             mouth(kb, "m2", "Bo");
             mouth(kb, "m3", "Ann");
