@@ -120,6 +120,7 @@ class PlatformTest {
                 assertThat(platform.engine().actionStatus(c.id())).hasValueSatisfying(
                         s -> assertThat(s.name()).isEqualTo("ENDED"));
             }
+            assertThat(platform.events().awaitWritten(Duration.ofSeconds(10))).isTrue();
             List<String> log = Files.readAllLines(platform.events().file());
             assertThat(log).anyMatch(l -> l.contains("\"event\":\"fired\"") && l.contains("AskUserName"));
             assertThat(log).anyMatch(l -> l.contains("\"event\":\"command\"") && l.contains("robovie"));
