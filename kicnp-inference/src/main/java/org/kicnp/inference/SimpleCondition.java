@@ -20,6 +20,12 @@ import org.kicnp.script.ScriptObject;
  * a member that an object's prototype could answer ({@code toString}) — makes it give up ({@link #test} is empty) and
  * the script runs as before. {@code SimpleConditionTest} runs every form against GraalJS.
  *
+ * <p>A chain {@code T1 && T2 && ... && Tn} whose first terms are of the grammar and a later one is not (Table 5's
+ * {@code s.mDone.frame == "AIBOAction1" && s.mDone.status != "ended" && !/retracted/.test(String(s.mDone.result))}) is
+ * decided false when one of those first terms is false, as JavaScript stops there; otherwise the script runs. The
+ * text is split only where a split is certain ({@link #topLevelAnd}): nothing at its top binds less tightly than
+ * {@code &&}, and quotes and regular expressions are skipped.
+ *
  * <pre>
  * condition := and ('||' and)*            and := unary ('&&' unary)*
  * unary     := '!' negated | '(' condition ')' | operand op operand | 'true' | 'false'
@@ -49,7 +55,14 @@ final class SimpleCondition {
     /** Any object (a view of an instance, a list). */
     private static final Object OBJECT = new Object();
 
-    private sealed interface Node permits Logical, Not, Compare, Operand {
+    private sealed interface Node permits Logical, Not, Compare, Operand, Prefix {
+    }
+
+    /**
+     * The simple first terms of an {@code &&} chain whose next term is not simple: false when one of them is, else
+     * undecided (the rest is the script's).
+     */
+    private record Prefix(List<Node> terms) implements Node {
     }
 
     private record Logical(boolean and, Node left, Node right) implements Node {
@@ -73,6 +86,29 @@ final class SimpleCondition {
 
     /** The condition, when its text is one of the simple forms above; empty otherwise. */
     static Optional<SimpleCondition> parse(String source) {
+        Optional<Node> whole = parseWhole(source);
+        if (whole.isPresent()) {
+            return Optional.of(new SimpleCondition(whole.get()));
+        }
+        // A chain of '&&' whose first terms are simple and a later one is not (a regular expression, a call): those
+        // first terms decide it when one is false, as JavaScript stops there; else the script runs.
+        List<String> terms = topLevelAnd(source);
+        if (terms.size() < 2) {
+            return Optional.empty();
+        }
+        List<Node> decidable = new ArrayList<>();
+        for (String term : terms) {
+            Optional<Node> n = parseWhole(term);
+            if (n.isEmpty()) {
+                break;
+            }
+            decidable.add(n.get());
+        }
+        return decidable.isEmpty() ? Optional.empty() : Optional.of(new SimpleCondition(new Prefix(decidable)));
+    }
+
+    /** The whole text as one condition of the grammar (a trailing ';' allowed), or empty. */
+    private static Optional<Node> parseWhole(String source) {
         try {
             Parser p = new Parser(source);
             Node n = p.condition();
@@ -81,10 +117,134 @@ final class SimpleCondition {
                 p.at++;
                 p.skipSpace();
             }
-            return p.at == source.length() ? Optional.of(new SimpleCondition(n)) : Optional.empty();
+            return p.at == source.length() ? Optional.of(n) : Optional.empty();
         } catch (Undecided e) {
             return Optional.empty();
         }
+    }
+
+    /**
+     * The terms of {@code source} read as {@code T1 && T2 && ... && Tn} (one trailing ';' dropped), or an empty list
+     * when it cannot be read so with certainty: any top-level operator that binds less tightly than {@code &&}
+     * ({@code ||}, {@code ??}, {@code ?:}, an assignment, {@code ,}, {@code ;}, {@code =>}) would make the split wrong,
+     * and braces, template literals, comments or an unclosed string, bracket or regular expression make the scan
+     * uncertain. Texts in quotes and regular expressions are skipped (a '/' starts one after an operator or an opening
+     * bracket, as a JavaScript tokenizer decides; elsewhere it divides).
+     */
+    static List<String> topLevelAnd(String source) {
+        String text = source.strip();
+        if (text.endsWith(";")) {
+            text = text.substring(0, text.length() - 1);
+        }
+        List<String> terms = new ArrayList<>();
+        int depth = 0;
+        int start = 0;
+        char previous = '('; // the last significant character: at the start a '/' opens a regular expression
+        for (int i = 0; i < text.length(); i++) {
+            char c = text.charAt(i);
+            if (c == '{' || c == '}' || c == '`' || c == ';') {
+                return List.of();
+            }
+            if (c == '"' || c == '\'') {
+                int end = closing(text, i, c);
+                if (end < 0) {
+                    return List.of();
+                }
+                i = end;
+                previous = c;
+                continue;
+            }
+            if (c == '/') {
+                if (i + 1 < text.length() && (text.charAt(i + 1) == '/' || text.charAt(i + 1) == '*')) {
+                    return List.of(); // a comment
+                }
+                if ("(,=:[!&|?+-*%<>~^".indexOf(previous) >= 0) {
+                    int end = regexEnd(text, i);
+                    if (end < 0) {
+                        return List.of();
+                    }
+                    i = end;
+                    previous = 'x'; // a regular expression is a value
+                    continue;
+                }
+            }
+            if (c == '(' || c == '[') {
+                depth++;
+            } else if (c == ')' || c == ']') {
+                if (--depth < 0) {
+                    return List.of();
+                }
+            } else if (depth == 0) {
+                if (c == '&' && i + 1 < text.length() && text.charAt(i + 1) == '&') {
+                    terms.add(text.substring(start, i));
+                    i++;
+                    start = i + 1;
+                    previous = '&';
+                    continue;
+                }
+                if (c == '|' && i + 1 < text.length() && text.charAt(i + 1) == '|' || c == '?' || c == ','
+                        || c == ':' || c == '=' && assignment(text, i)) {
+                    return List.of();
+                }
+            }
+            if (!Character.isWhitespace(c)) {
+                previous = c;
+            }
+        }
+        if (depth != 0) {
+            return List.of();
+        }
+        terms.add(text.substring(start));
+        return terms;
+    }
+
+    /** The index of the quote closing the text literal opened at {@code open}, or -1. */
+    private static int closing(String text, int open, char quote) {
+        for (int i = open + 1; i < text.length(); i++) {
+            char c = text.charAt(i);
+            if (c == '\\') {
+                i++;
+            } else if (c == quote) {
+                return i;
+            } else if (c == '\n' || c == '\r') {
+                return -1;
+            }
+        }
+        return -1;
+    }
+
+    /** The index of the last character of the regular expression opened at {@code open} (its flags), or -1. */
+    private static int regexEnd(String text, int open) {
+        boolean inClass = false;
+        for (int i = open + 1; i < text.length(); i++) {
+            char c = text.charAt(i);
+            if (c == '\\') {
+                i++;
+            } else if (c == '[') {
+                inClass = true;
+            } else if (c == ']') {
+                inClass = false;
+            } else if (c == '\n' || c == '\r') {
+                return -1;
+            } else if (c == '/' && !inClass) {
+                int end = i;
+                while (end + 1 < text.length() && Character.isLetter(text.charAt(end + 1))) {
+                    end++;
+                }
+                return end;
+            }
+        }
+        return -1;
+    }
+
+    /** Whether the '=' at {@code i} assigns (not part of ==, ===, !=, !==, <=, >= or =>, which are not). */
+    private static boolean assignment(String text, int i) {
+        char before = i > 0 ? text.charAt(i - 1) : ' ';
+        char after = i + 1 < text.length() ? text.charAt(i + 1) : ' ';
+        if (after == '=' || after == '>') {
+            return after == '>'; // '==' is a comparison; '=>' an arrow function, which && does not bind
+        }
+        return before != '=' && before != '!' && before != '<' && before != '>';
     }
 
     /**
@@ -106,6 +266,14 @@ final class SimpleCondition {
             case Not x -> !truthy(x.operand(), s);
             case Compare c -> compare(value(c.left(), s), c.op(), value(c.right(), s));
             case Operand o -> (Boolean) o.literal(); // 'true' or 'false' alone: the parser allows no other
+            case Prefix p -> {
+                for (Node t : p.terms()) {
+                    if (!truth(t, s)) {
+                        yield false;
+                    }
+                }
+                throw Undecided.INSTANCE;
+            }
         };
     }
 

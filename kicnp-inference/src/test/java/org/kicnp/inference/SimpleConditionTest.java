@@ -68,6 +68,20 @@ class SimpleConditionTest {
             "s.mDone.__proto__ == null", "s.mDone.missing.deeper == 1", "s.mDone.frame < 3", "s.mDone.n < \"4\"",
             "s.mDone.other.frame == \"AskDrink\"", "!s.mDone.other.flag");
 
+    /**
+     * Chains of {@code &&} whose first terms are simple and a later one is not: decided (false) where a simple term is
+     * false, else left to the script (Table 5's first two; a text or regular expression holding "&&" is not a split).
+     */
+    private static final List<String> CHAINS = List.of(
+            "s.mDone.robot == \"Scout\" && s.mDone.status != \"ended\" && "
+                    + "!/retracted|predecessor|cancelled: the order changed/.test(String(s.mDone.result))",
+            "s.mDone.frame == \"AIBOAction1\" && s.mDone.status != \"ended\" && !/retracted/.test(String(s.mDone.result))",
+            "s.mDone.frame == \"Greeting\" && String(s.mDone.status).length > 2",
+            "s.mDone.frame == \"a && b\" && Number(s.mDone.n) > 1", "s.mDone.n > 1 && /a&&b/.test(s.mDone.frame)",
+            "!s.mDone.flag && s.mDone.frame.indexOf('e') >= 0", "s.mDone.frame == 'Greeting' && (s.mDone.n = 1);",
+            "s.mDone.status == 'ended' && s.mDone.n / 2 > 1 && s.mDone.r / 2 > 1",
+            "s.mDone.frame == 'x' && (() => true)()"); // an arrow inside brackets binds nothing at the top
+
     /** Texts that are not one of the simple forms: they run as scripts. */
     private static final List<String> NOT_SIMPLE = List.of(
             "s.mDone.flag", "s.mDone.frame", "s.mDone.frame.startsWith(\"G\")", "/x/.test(s.mDone.frame)",
@@ -75,13 +89,22 @@ class SimpleConditionTest {
             "s.mDone['frame'] == 'x'", "undefined == s.mDone.missing", "String(s.mDone.result) == 'x'",
             "s.mDone.frame == \"G\" & s.mDone.n > 1", "s.mDone.n > 1 ? true : false", "s == null", "s.mDone.n > -1",
             "(s.mDone.frame) == \"Greeting\"", "s.mDone.frame == \"G\"; s.mDone.n > 1", "// c\ntrue", "a.b == 1",
-            "s.mDone.n > 012", "s.mDone.n > 1.", "s.mDone.n > .5");
+            "s.mDone.n > 012", "s.mDone.n > 1.", "s.mDone.n > .5",
+            // && chains that cannot be split with certainty: a lower operator at the top, braces, a template, a comment
+            "s.mDone.frame == \"Greeting\" && Number(s.mDone.n) > 1 || true",
+            "s.mDone.frame == \"Greeting\" && Number(s.mDone.n) > 1 ? false : true",
+            "s.mDone.frame == \"Greeting\" && Number(s.mDone.n) > 1, true",
+            "s.mDone.frame == 'x' && {a: 1}.a", "s.mDone.frame == 'x' && `${s.mDone.n}` == '3'",
+            "s.mDone.frame == 'x' && f(1) // note", "s.mDone.frame == 'x' && g(\"unclosed)",
+            "s.mDone.frame == 'x' && x = 1", "s.mDone.frame == 'x' && y ?? z");
 
     private static KnowledgeBase kb() {
         KnowledgeBase kb = KnowledgeBase.create();
         kb.add(Frame.classFrame("Feedback")
                 .slot(Slot.builder("frame", DataType.STRING).build())
                 .slot(Slot.builder("status", DataType.STRING).build())
+                .slot(Slot.builder("robot", DataType.STRING).build())
+                .slot(Slot.builder("result", DataType.STRING).build())
                 .slot(Slot.builder("empty", DataType.STRING).build())
                 .slot(Slot.builder("n", DataType.INTEGER).build())
                 .slot(Slot.builder("r", DataType.FLOAT).build())
@@ -99,6 +122,7 @@ class SimpleConditionTest {
                 .slot(Slot.ofValue("items", DataType.LIST, new Value.Lst(List.of(Value.of("a"), Value.of("b")))))
                 .slot(Slot.ofValue("other", DataType.INSTANCE, Value.ref("t2"))).build());
         kb.add(Frame.instance("t3", "Feedback").slot(str("frame", "Áé Greeting")).slot(str("status", "endeD"))
+                .slot(str("robot", "Scout")).slot(str("result", "retracted: the order changed"))
                 .slot(Slot.ofValue("n", DataType.INTEGER, Value.of(-7)))
                 .slot(Slot.ofValue("r", DataType.FLOAT, Value.of(2.5))).build());
         kb.add(Frame.instance("t4", "Feedback").build()); // every slot empty
@@ -133,6 +157,7 @@ class SimpleConditionTest {
         List<String> all = new ArrayList<>(DECIDED);
         all.addAll(WHEN_SET);
         all.addAll(MAYBE);
+        all.addAll(CHAINS);
         List<Outcome> decided = new ArrayList<>();
         for (String condition : all) {
             assertThat(SimpleCondition.parse(condition)).as("'%s' is one of the simple forms", condition).isPresent();
@@ -164,6 +189,23 @@ class SimpleConditionTest {
         assertThat(unbound.script()).as("JavaScript throws: s.mUser is undefined").isInstanceOf(String.class);
         // Short-circuit as JavaScript: a false left side decides before the right side's conversion is met.
         assertThat(both(kb, "s.mDone.frame == \"Nope\" && s.mDone.n == \"3\"", "t1").nativeAnswer()).contains(false);
+    }
+
+    @Test
+    void aChainsSimpleFirstTerms_decideItWhenOneIsFalse_andLeaveTheRestToTheScript() {
+        KnowledgeBase kb = kb();
+        String scout = CHAINS.getFirst();
+        assertThat(both(kb, scout, "t1").nativeAnswer()).as("t1 is no robot's: decided false").contains(false);
+        Outcome t3 = both(kb, scout, "t3");
+        assertThat(t3.nativeAnswer()).as("Scout's, not ended: the regular expression decides").isEmpty();
+        assertThat(t3.script()).isEqualTo(false);
+        Outcome split = both(kb, "s.mDone.frame == \"a && b\" && Number(s.mDone.n) > 1", "t1");
+        assertThat(split.nativeAnswer()).contains(false);
+        assertThat(split.script()).isEqualTo(false);
+        // JavaScript reads (false && x) || true as true: a chain with '||' at the top is the script's, never split.
+        Outcome lower = both(kb, "s.mDone.frame == \"Nope\" && Number(s.mDone.n) > 1 || true", "t1");
+        assertThat(lower.nativeAnswer()).isEmpty();
+        assertThat(lower.script()).isEqualTo(true);
     }
 
     @Test
