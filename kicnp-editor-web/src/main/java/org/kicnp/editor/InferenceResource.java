@@ -34,7 +34,12 @@ final class InferenceResource implements Features.Inference {
     }
 
     @Override public synchronized void attach(EventHub events) {
-        tracer = e -> events.publish("trace", InferenceJson.trace(e));
+        // On the engine's thread, for every trace event: no page connected, no JSON made.
+        tracer = e -> {
+            if (events.clientCount() > 0) {
+                events.publish("trace", InferenceJson.trace(e));
+            }
+        };
         engine.addTraceListener(tracer);
     }
 
