@@ -23,7 +23,7 @@ import org.kicnp.script.ScriptObject;
  * <p>A chain {@code T1 && T2 && ... && Tn} whose first terms are of the grammar and a later one is not (Table 5's
  * {@code s.mDone.frame == "AIBOAction1" && s.mDone.status != "ended" && !/retracted/.test(String(s.mDone.result))}) is
  * decided false when one of those first terms is false, as JavaScript stops there; otherwise the script runs. The
- * text is split only where a split is certain ({@link #topLevelAnd}): nothing at its top binds less tightly than
+ * text is split only where a split is certain ({@link AndChain}): nothing at its top binds less tightly than
  * {@code &&}, and quotes and regular expressions are skipped.
  *
  * <pre>
@@ -92,7 +92,7 @@ final class SimpleCondition {
         }
         // A chain of '&&' whose first terms are simple and a later one is not (a regular expression, a call): those
         // first terms decide it when one is false, as JavaScript stops there; else the script runs.
-        List<String> terms = topLevelAnd(source);
+        List<String> terms = AndChain.terms(source);
         if (terms.size() < 2) {
             return Optional.empty();
         }
@@ -121,130 +121,6 @@ final class SimpleCondition {
         } catch (Undecided e) {
             return Optional.empty();
         }
-    }
-
-    /**
-     * The terms of {@code source} read as {@code T1 && T2 && ... && Tn} (one trailing ';' dropped), or an empty list
-     * when it cannot be read so with certainty: any top-level operator that binds less tightly than {@code &&}
-     * ({@code ||}, {@code ??}, {@code ?:}, an assignment, {@code ,}, {@code ;}, {@code =>}) would make the split wrong,
-     * and braces, template literals, comments or an unclosed string, bracket or regular expression make the scan
-     * uncertain. Texts in quotes and regular expressions are skipped (a '/' starts one after an operator or an opening
-     * bracket, as a JavaScript tokenizer decides; elsewhere it divides).
-     */
-    static List<String> topLevelAnd(String source) {
-        String text = source.strip();
-        if (text.endsWith(";")) {
-            text = text.substring(0, text.length() - 1);
-        }
-        List<String> terms = new ArrayList<>();
-        int depth = 0;
-        int start = 0;
-        char previous = '('; // the last significant character: at the start a '/' opens a regular expression
-        for (int i = 0; i < text.length(); i++) {
-            char c = text.charAt(i);
-            if (c == '{' || c == '}' || c == '`' || c == ';') {
-                return List.of();
-            }
-            if (c == '"' || c == '\'') {
-                int end = closing(text, i, c);
-                if (end < 0) {
-                    return List.of();
-                }
-                i = end;
-                previous = c;
-                continue;
-            }
-            if (c == '/') {
-                if (i + 1 < text.length() && (text.charAt(i + 1) == '/' || text.charAt(i + 1) == '*')) {
-                    return List.of(); // a comment
-                }
-                if ("(,=:[!&|?+-*%<>~^".indexOf(previous) >= 0) {
-                    int end = regexEnd(text, i);
-                    if (end < 0) {
-                        return List.of();
-                    }
-                    i = end;
-                    previous = 'x'; // a regular expression is a value
-                    continue;
-                }
-            }
-            if (c == '(' || c == '[') {
-                depth++;
-            } else if (c == ')' || c == ']') {
-                if (--depth < 0) {
-                    return List.of();
-                }
-            } else if (depth == 0) {
-                if (c == '&' && i + 1 < text.length() && text.charAt(i + 1) == '&') {
-                    terms.add(text.substring(start, i));
-                    i++;
-                    start = i + 1;
-                    previous = '&';
-                    continue;
-                }
-                if (c == '|' && i + 1 < text.length() && text.charAt(i + 1) == '|' || c == '?' || c == ','
-                        || c == ':' || c == '=' && assignment(text, i)) {
-                    return List.of();
-                }
-            }
-            if (!Character.isWhitespace(c)) {
-                previous = c;
-            }
-        }
-        if (depth != 0) {
-            return List.of();
-        }
-        terms.add(text.substring(start));
-        return terms;
-    }
-
-    /** The index of the quote closing the text literal opened at {@code open}, or -1. */
-    private static int closing(String text, int open, char quote) {
-        for (int i = open + 1; i < text.length(); i++) {
-            char c = text.charAt(i);
-            if (c == '\\') {
-                i++;
-            } else if (c == quote) {
-                return i;
-            } else if (c == '\n' || c == '\r') {
-                return -1;
-            }
-        }
-        return -1;
-    }
-
-    /** The index of the last character of the regular expression opened at {@code open} (its flags), or -1. */
-    private static int regexEnd(String text, int open) {
-        boolean inClass = false;
-        for (int i = open + 1; i < text.length(); i++) {
-            char c = text.charAt(i);
-            if (c == '\\') {
-                i++;
-            } else if (c == '[') {
-                inClass = true;
-            } else if (c == ']') {
-                inClass = false;
-            } else if (c == '\n' || c == '\r') {
-                return -1;
-            } else if (c == '/' && !inClass) {
-                int end = i;
-                while (end + 1 < text.length() && Character.isLetter(text.charAt(end + 1))) {
-                    end++;
-                }
-                return end;
-            }
-        }
-        return -1;
-    }
-
-    /** Whether the '=' at {@code i} assigns (not part of ==, ===, !=, !==, <=, >= or =>, which are not). */
-    private static boolean assignment(String text, int i) {
-        char before = i > 0 ? text.charAt(i - 1) : ' ';
-        char after = i + 1 < text.length() ? text.charAt(i + 1) : ' ';
-        if (after == '=' || after == '>') {
-            return after == '>'; // '==' is a comparison; '=>' an arrow function, which && does not bind
-        }
-        return before != '=' && before != '!' && before != '<' && before != '>';
     }
 
     /**
