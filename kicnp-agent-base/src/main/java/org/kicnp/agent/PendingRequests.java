@@ -1,5 +1,6 @@
 package org.kicnp.agent;
 
+import java.io.IOException;
 import java.time.Duration;
 import java.util.Map;
 import java.util.Optional;
@@ -50,7 +51,7 @@ final class PendingRequests {
         CompletableFuture<Message> answer = new CompletableFuture<>();
         pending.put(r.id(), answer);
         try {
-            send.accept(r);
+            sendOrHearWhy(r, send, answer);
             Message m = answer.get(timeout.toMillis(), TimeUnit.MILLISECONDS);
             if (m instanceof Message.ErrorReply e) {
                 throw new RequestRefusedException(e.code(), e.message());
@@ -66,6 +67,29 @@ final class PendingRequests {
             throw e.getCause() instanceof AgentException a ? a : new AgentException(e.getCause().getMessage(), e);
         } finally {
             pending.remove(r.id());
+        }
+    }
+
+    /**
+     * Sends {@code r}. When the connection fails under the write, what the server said is a better answer than the
+     * closed socket: a request longer than the server's frame limit is refused as soon as its length is read, and the
+     * server closes after saying so, often before the rest is written; the read loop then hears the refusal, closes
+     * the socket the write is using, and fails every pending request with the server's reason. So a failed write
+     * waits (within the request timeout) for that, and throws its own failure only when nothing comes.
+     */
+    private void sendOrHearWhy(Message.Request r, Consumer<Message> send, CompletableFuture<Message> answer)
+            throws InterruptedException, ExecutionException {
+        try {
+            send.accept(r);
+        } catch (NotConnectedException e) {
+            if (!(e.getCause() instanceof IOException)) {
+                throw e; // not connected at all: nobody will answer
+            }
+            try {
+                answer.get(timeout.toMillis(), TimeUnit.MILLISECONDS); // the caller reads the outcome from it
+            } catch (TimeoutException nothingCame) {
+                throw e;
+            }
         }
     }
 

@@ -139,7 +139,7 @@ final class Supervisor {
             c.send(m);
         } catch (IOException e) {
             c.close();
-            throw new NotConnectedException("Agent '" + name() + "' could not send: " + e.getMessage());
+            throw new NotConnectedException("Agent '" + name() + "' could not send: " + e.getMessage(), e);
         }
     }
 

@@ -13,6 +13,7 @@ import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -140,6 +141,36 @@ class AgentBaseTest {
             assertThat(a.stopped()).get().extracting(Throwable::getMessage)
                     .isEqualTo("Agent 'alice' stops: Agent 'alice' was replaced by a newer connection.");
             assertThat(server.connections()).isEqualTo(1);
+        }
+    }
+
+    /**
+     * A request longer than the server's frame limit is refused as soon as its length is read, and the server closes
+     * after saying so, while the agent may still be writing it. The caller hears the server's reason, not that the
+     * socket closed under the write: here the server reads nothing more, so the write is still stuck when the agent
+     * reads the refusal and the end of the stream and closes its socket.
+     */
+    @Test
+    void requestRefusedForItsLength_whileStillBeingWritten_failsWithTheServersReason() throws Exception {
+        int tooLong = 32 << 20; // more than loopback's socket buffers hold: the write waits for a reader
+        CountDownLatch over = new CountDownLatch(1);
+        try (FakeGateway server = new FakeGateway(peer -> {
+            peer.register();
+            int length = peer.readLengthOfAFrameOfAtLeast(tooLong);
+            peer.send(Message.ErrorReply.of(ErrorCode.FRAME_TOO_LARGE,
+                    "A frame of " + length + " bytes is longer than this server accepts (1048576 bytes at most)."));
+            peer.shutdownOutput();
+            over.await(30, TimeUnit.SECONDS); // open, unread: the agent's write cannot finish
+        });
+             UserAgent a = new UserAgent(alice(server).withMaxFrameBytes(64 << 20))) {
+            a.startAndAwait(Duration.ofSeconds(10));
+
+            assertThatThrownBy(() -> a.relayTo("bob", "note", "x".repeat(tooLong)))
+                    .isInstanceOfSatisfying(RequestRefusedException.class,
+                            e -> assertThat(e.code()).isEqualTo(ErrorCode.FRAME_TOO_LARGE))
+                    .hasMessageContaining("longer than this server accepts (1048576 bytes at most)");
+        } finally {
+            over.countDown();
         }
     }
 

@@ -28,10 +28,12 @@ final class FakeGateway implements AutoCloseable {
 
     /** One accepted connection, read and written in frames. */
     static final class Peer {
+        private final Socket socket;
         private final DataInputStream in;
         private final DataOutputStream out;
 
         private Peer(Socket socket) throws IOException {
+            this.socket = socket;
             this.in = new DataInputStream(socket.getInputStream());
             this.out = new DataOutputStream(socket.getOutputStream());
         }
@@ -64,6 +66,25 @@ final class FakeGateway implements AutoCloseable {
             authenticate();
             Message.Register reg = (Message.Register) readSkippingHeartbeats();
             send(new Message.Ack(reg.id()));
+        }
+
+        /**
+         * Reads the length prefix of the next frame of at least {@code bytes} bytes (smaller ones, heartbeats, are
+         * dropped) and leaves that frame unread, as a server refusing it for its length does.
+         */
+        int readLengthOfAFrameOfAtLeast(int bytes) throws IOException {
+            while (true) {
+                int length = in.readInt();
+                if (length >= bytes) {
+                    return length;
+                }
+                in.skipNBytes(length);
+            }
+        }
+
+        /** Ends what this side sends: the agent reads to the end of the stream; the connection stays open to it. */
+        void shutdownOutput() throws IOException {
+            socket.shutdownOutput();
         }
 
         /** Reads (and drops) everything until the agent closes the connection. */
