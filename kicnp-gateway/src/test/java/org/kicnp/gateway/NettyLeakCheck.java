@@ -1,0 +1,80 @@
+package org.kicnp.gateway;
+
+import static org.junit.jupiter.api.Assertions.fail;
+
+import io.netty.buffer.ByteBuf;
+import io.netty.buffer.ByteBufAllocator;
+import io.netty.util.ResourceLeakDetector;
+import io.netty.util.ResourceLeakDetectorFactory;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Queue;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.atomic.AtomicBoolean;
+import org.junit.jupiter.api.extension.AfterAllCallback;
+import org.junit.jupiter.api.extension.BeforeAllCallback;
+import org.junit.jupiter.api.extension.ExtensionContext;
+
+/**
+ * Fails a test class after which a Netty buffer was found leaked: collected by the garbage collector without being
+ * released, so its memory (pooled, often direct) never went back to the allocator. Registered for every test class
+ * of this module (META-INF/services, with autodetection on in junit-platform.properties), it makes Netty track every
+ * buffer with where it was touched ({@link ResourceLeakDetector.Level#PARANOID}; the platform keeps Netty's default,
+ * which samples one buffer in 128) and listens to what Netty's detectors report. Netty finds a leak only when a buffer
+ * it tracks has been collected and a later buffer is tracked, so after each class it asks for collections and
+ * allocates until what was collected has been looked at. A leak seen then may come from an earlier class whose
+ * buffers the collector had not yet reached; the records name where the buffer was made and last touched.
+ */
+public final class NettyLeakCheck implements BeforeAllCallback, AfterAllCallback {
+
+    private static final Queue<String> LEAKS = new ConcurrentLinkedQueue<>();
+    private static final AtomicBoolean BUFFERS_TRACKED = new AtomicBoolean();
+
+    static {
+        ResourceLeakDetector.setLevel(ResourceLeakDetector.Level.PARANOID);
+        ResourceLeakDetectorFactory.setResourceLeakDetectorFactory(new ResourceLeakDetectorFactory() {
+            @Override
+            public <T> ResourceLeakDetector<T> newResourceLeakDetector(Class<T> resource, int samplingInterval,
+                    long maxActive) {
+                ResourceLeakDetector<T> d = new ResourceLeakDetector<>(resource, samplingInterval);
+                d.setLeakListener((type, records) -> LEAKS.add(type + " leaked:" + records));
+                if (resource == ByteBuf.class) {
+                    BUFFERS_TRACKED.set(true);
+                }
+                return d;
+            }
+        });
+    }
+
+    @Override
+    public void beforeAll(ExtensionContext context) {
+        ByteBufAllocator.DEFAULT.buffer(1).release(); // the allocator's detector is made on the first buffer
+        if (!BUFFERS_TRACKED.get()) {
+            fail("Netty's buffer leak detector was made before NettyLeakCheck could listen to it; the check "
+                    + "would see nothing.");
+        }
+    }
+
+    @Override
+    public void afterAll(ExtensionContext context) throws InterruptedException {
+        List<String> leaks = collectLeaks();
+        if (!leaks.isEmpty()) {
+            fail(leaks.size() + " Netty buffer(s) found leaked after " + context.getDisplayName() + " (or a class "
+                    + "before it):\n" + String.join("\n", leaks));
+        }
+    }
+
+    /** Collects garbage, lets Netty look at what it collected, and returns (and forgets) the leaks reported. */
+    static List<String> collectLeaks() throws InterruptedException {
+        for (int i = 0; i < 5; i++) {
+            System.gc();
+            Thread.sleep(20); // the collected buffers' references are queued by the reference handler thread
+            ByteBufAllocator.DEFAULT.buffer(1).release(); // each tracked buffer makes Netty poll that queue
+        }
+        List<String> leaks = new ArrayList<>();
+        for (String leak; (leak = LEAKS.poll()) != null; ) {
+            leaks.add(leak);
+        }
+        return leaks;
+    }
+}
