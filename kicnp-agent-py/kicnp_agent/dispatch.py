@@ -4,6 +4,8 @@ import logging
 import queue
 import threading
 
+from .errors import NotConnectedError
+
 LOG = logging.getLogger("kicnp_agent")
 
 
@@ -22,7 +24,15 @@ class PendingRequests:
         with self._lock:
             self._waiting[request_id] = waiter
         try:
-            send()
+            try:
+                send()
+            except NotConnectedError as e:
+                # The connection failed under the write. A request longer than the server's frame limit is refused as
+                # soon as its length is read, and the server closes after saying so, often before the rest is written:
+                # the reader then hears the refusal and fails every waiting request with the server's reason, which
+                # says more than the closed socket. Not connected at all (no OSError): nobody will answer.
+                if not isinstance(e.__cause__, OSError) or not waiter.done.wait(timeout):
+                    raise
             if not waiter.done.wait(timeout):
                 return None
             if waiter.error is not None:

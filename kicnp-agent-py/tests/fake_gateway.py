@@ -10,8 +10,10 @@ class FakeGateway:
     """Accepts agents one connection after another, authenticates and registers each, keeps every message it
     receives, and hands the others to ``answer(gateway, message)`` (by default: no answer)."""
 
-    def __init__(self, answer=None, before_register_answer=()):
+    def __init__(self, answer=None, before_register_answer=(), refuse_longer_than=None):
         self._before_register_answer = list(before_register_answer)  # sent ahead of the ack, as no gateway should
+        self._refuse_longer_than = refuse_longer_than
+        self._released = threading.Event()
         self.listener = socket.create_server(("127.0.0.1", 0))
         self.port = self.listener.getsockname()[1]
         self.received = []
@@ -37,7 +39,11 @@ class FakeGateway:
         try:
             while True:
                 header = conn.recv(4, socket.MSG_WAITALL)
-                message = json.loads(conn.recv(struct.unpack(">I", header)[0], socket.MSG_WAITALL))
+                length = struct.unpack(">I", header)[0]
+                if self._refuse_longer_than is not None and length > self._refuse_longer_than:
+                    self._refuse(conn, length)
+                    return
+                message = json.loads(conn.recv(length, socket.MSG_WAITALL))
                 self.received.append(message)
                 if message["type"] == "hello":
                     self.send({"type": "auth_result", "id": message["id"], "accepted": True, "server": "fake"})
@@ -49,6 +55,15 @@ class FakeGateway:
                     self._answer(self, message)
         except (OSError, struct.error, ValueError):
             return
+
+    def _refuse(self, conn, length):
+        """As the gateway refuses a frame for its length: says so at once and ends what it sends, but here reads
+        nothing more and keeps the connection open until the test is over, so the agent's write of it cannot finish."""
+        self.send({"type": "error", "code": "frame_too_large",
+                   "message": "A frame of %d bytes is longer than this server accepts (%d bytes at most)."
+                   % (length, self._refuse_longer_than)})
+        conn.shutdown(socket.SHUT_WR)
+        self._released.wait(30)
 
     def send(self, message, version=1):
         self.send_bytes(json.dumps(dict(message, v=version)).encode())
@@ -68,6 +83,7 @@ class FakeGateway:
             self._conn.shutdown(socket.SHUT_RDWR)
 
     def close(self):
+        self._released.set()
         try:
             self.listener.shutdown(socket.SHUT_RDWR)  # wakes the thread waiting in accept
         except OSError:

@@ -154,6 +154,21 @@ class StandInGatewayTest(unittest.TestCase):
         self.assertEqual(("frame_too_large", "The frame is 2 MiB, above 1 MiB."), (error.exception.code,
                                                                                  str(error.exception)))
 
+    def test_aRequestRefusedForItsLength_whileStillBeingWritten_failsWithTheServersReason(self):
+        # The server refuses as soon as it reads the length, and closes after saying so, while the agent may still be
+        # writing: here it reads nothing more, so the write is stuck when the agent reads the refusal and the end of
+        # the stream and closes its socket. The caller hears the server's reason, not that the write failed.
+        server = FakeGateway(refuse_longer_than=1 << 20)
+        self.addCleanup(server.close)
+        agent = Agent("scout", "t", kind="user", port=server.port, max_frame_bytes=64 << 20, backoff_initial=0.01,
+                      backoff_max=0.05)
+        self.addCleanup(agent.close)
+        agent.start_and_wait(5)
+        with self.assertLogs("kicnp_agent", "WARNING"), self.assertRaises(RequestRefusedError) as error:
+            agent.relay_to("bob", "note", "x" * (32 << 20), timeout=10)  # more than loopback's buffers hold
+        self.assertEqual("frame_too_large", error.exception.code)
+        self.assertIn("longer than this server accepts (1048576 bytes at most)", str(error.exception))
+
     def test_whatIsNotTheProtocol_dropsTheConnection_andTheAgentReconnects(self):
         with self.assertLogs("kicnp_agent", "INFO") as logged:
             self.server.send({"type": "ack", "id": "x"}, version=2)
