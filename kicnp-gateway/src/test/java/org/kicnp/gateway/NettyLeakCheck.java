@@ -18,7 +18,7 @@ import org.junit.jupiter.api.extension.ExtensionContext;
 /**
  * Fails a test class after which a Netty buffer was found leaked: collected by the garbage collector without being
  * released, so its memory (pooled, often direct) never went back to the allocator. Registered for every test class
- * of this module (META-INF/services, with autodetection on in junit-platform.properties), it makes Netty track every
+ * of this module (META-INF/services, autodetection on in its surefire configuration), it makes Netty track every
  * buffer with where it was touched ({@link ResourceLeakDetector.Level#PARANOID}; the platform keeps Netty's default,
  * which samples one buffer in 128) and listens to what Netty's detectors report. Netty finds a leak only when a buffer
  * it tracks has been collected and a later buffer is tracked, so after each class it asks for collections and
