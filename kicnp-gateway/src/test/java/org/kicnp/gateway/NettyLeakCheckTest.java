@@ -14,7 +14,7 @@ class NettyLeakCheckTest {
     void aBufferCollectedWithoutRelease_isReportedWithWhereItWasTouched() throws Exception {
         leakOne();
 
-        assertThat(NettyLeakCheck.collectLeaks())
+        assertThat(NettyLeakCheck.collectLeaks(1, 250))
                 .singleElement().asString()
                 .contains("ByteBuf leaked")
                 .contains("leakOne"); // the records say where the buffer was made and written
