@@ -2,58 +2,58 @@ package org.kicnp.gateway;
 
 import static org.junit.jupiter.api.Assertions.fail;
 
-import io.netty.buffer.ByteBuf;
+import io.netty.buffer.AbstractByteBuf;
 import io.netty.buffer.ByteBufAllocator;
 import io.netty.util.ResourceLeakDetector;
 import io.netty.util.ResourceLeakDetectorFactory;
+import java.lang.reflect.Field;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Queue;
 import java.util.concurrent.ConcurrentLinkedQueue;
-import java.util.concurrent.atomic.AtomicBoolean;
 import org.junit.jupiter.api.extension.AfterAllCallback;
-import org.junit.jupiter.api.extension.BeforeAllCallback;
 import org.junit.jupiter.api.extension.ExtensionContext;
 
 /**
  * Fails a test class after which a Netty buffer was found leaked: collected by the garbage collector without being
- * released, so its memory (pooled, often direct) never went back to the allocator. Registered for every test class
- * of this module (META-INF/services, autodetection on in its surefire configuration), it makes Netty track every
- * buffer with where it was touched ({@link ResourceLeakDetector.Level#PARANOID}; the platform keeps Netty's default,
- * which samples one buffer in 128) and listens to what Netty's detectors report. Netty finds a leak only when a buffer
- * it tracks has been collected and a later buffer is tracked, so after each class it asks for collections and
- * allocates until what was collected has been looked at. A leak seen then may come from an earlier class whose
- * buffers the collector had not yet reached; the records name where the buffer was made and last touched. Netty
- * reports a leak once per distinct record (the same leak again from the same places is not reported again).
+ * released, so its memory (pooled, often direct) never went back to the allocator. Registered for every test class of
+ * this module (META-INF/services, autodetection on in its surefire configuration), it makes Netty track every buffer
+ * with where it was touched ({@link ResourceLeakDetector.Level#PARANOID}; the platform keeps Netty's default, which
+ * samples one buffer in 128) and listens to what Netty's buffer leak detectors report. Netty finds a leak only when a
+ * buffer it tracks has been collected and a later buffer is tracked, so after each class it asks for collections and
+ * allocates until what was collected has been looked at. A leak seen then may come from an earlier class whose buffers
+ * the collector had not yet reached; the records name where the buffer was made and last touched. Netty reports a leak
+ * once per distinct record (the same leak again from the same places is not reported again).
  */
-public final class NettyLeakCheck implements BeforeAllCallback, AfterAllCallback {
+public final class NettyLeakCheck implements AfterAllCallback {
 
     private static final Queue<String> LEAKS = new ConcurrentLinkedQueue<>();
-    private static final AtomicBoolean BUFFERS_TRACKED = new AtomicBoolean();
 
     static {
-        ResourceLeakDetector.setLevel(ResourceLeakDetector.Level.PARANOID);
+        ResourceLeakDetector.setLevel(ResourceLeakDetector.Level.PARANOID); // read by every track(), from now on
+        // Netty has more than one buffer leak detector (AbstractByteBuf's, for the allocators' leak-aware buffers,
+        // and those made later, as for derived buffers): listen to those made from now on, through the factory, and to
+        // AbstractByteBuf's, which a class of the JVM may have made first (so seen in a fresh clone's run).
         ResourceLeakDetectorFactory.setResourceLeakDetectorFactory(new ResourceLeakDetectorFactory() {
             @Override
             public <T> ResourceLeakDetector<T> newResourceLeakDetector(Class<T> resource, int samplingInterval,
                     long maxActive) {
-                ResourceLeakDetector<T> d = new ResourceLeakDetector<>(resource, samplingInterval);
-                d.setLeakListener((type, records) -> LEAKS.add(type + " leaked:" + records));
-                if (resource == ByteBuf.class) {
-                    BUFFERS_TRACKED.set(true);
-                }
-                return d;
+                return listenedTo(new ResourceLeakDetector<>(resource, samplingInterval));
             }
         });
+        try {
+            Field f = AbstractByteBuf.class.getDeclaredField("leakDetector");
+            f.setAccessible(true);
+            listenedTo((ResourceLeakDetector<?>) f.get(null));
+        } catch (ReflectiveOperationException | RuntimeException e) {
+            throw new IllegalStateException("NettyLeakCheck cannot listen to Netty's buffer leak detector "
+                    + "(AbstractByteBuf.leakDetector), so it would miss leaks: " + e, e);
+        }
     }
 
-    @Override
-    public void beforeAll(ExtensionContext context) {
-        ByteBufAllocator.DEFAULT.buffer(1).release(); // the allocator's detector is made on the first buffer
-        if (!BUFFERS_TRACKED.get()) {
-            fail("Netty's buffer leak detector was made before NettyLeakCheck could listen to it; the check "
-                    + "would see nothing.");
-        }
+    private static <T> ResourceLeakDetector<T> listenedTo(ResourceLeakDetector<T> d) {
+        d.setLeakListener((type, records) -> LEAKS.add(type + " leaked:" + records));
+        return d;
     }
 
     @Override
