@@ -31,9 +31,9 @@ public final class NettyLeakCheck implements AfterAllCallback {
 
     static {
         ResourceLeakDetector.setLevel(ResourceLeakDetector.Level.PARANOID); // read by every track(), from now on
-        // Netty has more than one buffer leak detector (AbstractByteBuf's, for the allocators' leak-aware buffers,
-        // and those made later, as for derived buffers): listen to those made from now on, through the factory, and to
-        // AbstractByteBuf's, which a class of the JVM may have made first (so seen in a fresh clone's run).
+        // Listen to the detectors made from now on (through the factory) and to AbstractByteBuf's, the allocators',
+        // which is made once per JVM and may already exist when this class is loaded (as when a test loads it before
+        // JUnit registers it: seen in a fresh clone's run while the registration was not on).
         ResourceLeakDetectorFactory.setResourceLeakDetectorFactory(new ResourceLeakDetectorFactory() {
             @Override
             public <T> ResourceLeakDetector<T> newResourceLeakDetector(Class<T> resource, int samplingInterval,
